@@ -1,0 +1,17 @@
+// Mesh: the minimal triangle-mesh type of the mesh layer.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace gab {
+
+struct Mesh {
+  std::vector<double> positions;   // 3 per vertex: x0 y0 z0 x1 y1 z1 ...
+  std::vector<int32_t> triangles;  // 3 per triangle, 0-based vertex indices
+
+  int32_t num_vertices() const { return static_cast<int32_t>(positions.size() / 3); }
+  int32_t num_triangles() const { return static_cast<int32_t>(triangles.size() / 3); }
+};
+
+}  // namespace gab

@@ -1,0 +1,1 @@
+#include "gab/mesh/mesh.h"
