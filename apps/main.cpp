@@ -1,12 +1,38 @@
-// gab: the command-line tool. Dispatches to one function per sub-command.
+// gab: the command-line tool. Dispatches to one function per sub-command
+// (DESIGN.md section 6 is the contract: exit 0 ok, 1 failure, 2 usage).
 #include <cstdio>
 #include <cstring>
 
+#include "cli.h"
+#include "commands.h"
+
+namespace {
+
+const char* kHelp =
+    "gab: geometry-aware bases for triangle meshes, and a sparse Cholesky engine\n"
+    "\n"
+    "usage: gab <command> [options]\n"
+    "\n"
+    "commands:\n"
+    "  factor IN [--ordering amd|natural] [--anchors K] [--repeat R] [--json]\n"
+    "      order, analyze, factor and solve the least-squares matrix of a mesh (.off)\n"
+    "      or a Matrix Market file (.mtx); report sizes and median phase times\n"
+    "\n"
+    "--json prints one JSON object on stdout; messages go to stderr.\n";
+
+}  // namespace
+
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: gab <command> [options]\n");
-    return 2;
+    std::fputs(kHelp, stderr);
+    return gab::cli::kExitUsage;
   }
-  std::fprintf(stderr, "gab: unknown command '%s'\n", argv[1]);
-  return 2;
+  const char* command = argv[1];
+  if (!std::strcmp(command, "help") || !std::strcmp(command, "--help") || !std::strcmp(command, "-h")) {
+    std::fputs(kHelp, stdout);
+    return gab::cli::kExitOk;
+  }
+  if (!std::strcmp(command, "factor")) return gab::cli::run_factor(argc - 2, argv + 2);
+  std::fprintf(stderr, "gab: unknown command '%s' (try 'gab help')\n", command);
+  return gab::cli::kExitUsage;
 }

@@ -4,7 +4,17 @@
 // them, AVX2 and AVX-512 versions; dense_kernels() picks the best one the CPU
 // supports at run time (one binary runs everywhere). The environment variable
 // GAB_SIMD=scalar|avx2|avx512 caps the choice (tests use it; so can users
-// chasing a bug). No kernel allocates memory.
+// chasing a bug).
+//
+// Memory: no kernel allocates inside its numeric loops. Large GEMM/SYRK calls
+// pack their operands into one per-thread buffer that grows on demand (to at
+// most ~5 MB, on the first large call of each thread) and is freed at thread
+// exit; if it cannot be had they run unpacked, correct but slower. All other
+// work is in registers or on the stack.
+//
+// Shapes: every dimension may be 0 (no-op); leading dimensions are >= the row
+// count and >= 1. Matrices are column-major; int32 sizes, products of a
+// dimension and a leading dimension are formed in ptrdiff_t.
 #pragma once
 
 #include <cstdint>
@@ -40,7 +50,13 @@ struct DenseKernels {
 // Kernels of the given level; a level the CPU lacks falls back to the best
 // supported one below it (check .level).
 const DenseKernels& dense_kernels(SimdLevel level);
-// Kernels of the best supported level, honouring GAB_SIMD.
+// Kernels of the best supported level, honouring GAB_SIMD. The variable is
+// read once, on the first call; later changes to it have no effect.
 const DenseKernels& dense_kernels();
+
+// The level dense_kernels() picks when GAB_SIMD holds `cap`: the lower of the
+// named level and cpu_simd_level(). nullptr, "" or an unrecognized name mean
+// no cap. Exposed so the variable's handling can be tested in-process.
+SimdLevel simd_level_for_cap(const char* cap);
 
 }  // namespace gab

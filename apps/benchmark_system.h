@@ -1,0 +1,27 @@
+// The matrix that `gab factor` and `gab study` work on: a Matrix Market
+// file as given, or a mesh's L^T L + w^2 E^T E by the benchmark anchor rule
+// (DESIGN.md section 6), with three right-hand sides.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "gab/sparse/csc.h"
+#include "gab/sparse/status.h"
+
+namespace gab {
+namespace cli {
+
+struct BenchmarkSystem {
+  CscMatrix lower;            // lower triangle incl. diagonal
+  std::vector<double> rhs;    // n x 3 column-major
+  std::vector<int32_t> anchors;  // mesh input only: initial anchors
+  bool from_mesh = false;
+};
+
+// k0: number of initial anchors for a mesh (ignored for .mtx).
+Status load_benchmark_system(const std::string& path, int32_t k0, BenchmarkSystem* out);
+
+}  // namespace cli
+}  // namespace gab

@@ -1,0 +1,160 @@
+#include "cli.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace gab {
+namespace cli {
+
+int fail(const std::string& message) {
+  std::fprintf(stderr, "gab: error: %s\n", message.c_str());
+  return kExitFailure;
+}
+
+int usage_error(const std::string& command, const std::string& message, const char* usage) {
+  std::fprintf(stderr, "gab %s: %s\nusage: %s\n", command.c_str(), message.c_str(), usage);
+  return kExitUsage;
+}
+
+bool Args::parse(int argc, char** argv, const std::vector<std::string>& valued,
+                 const std::vector<std::string>& flags) {
+  for (int i = 0; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a.size() > 1 && a[0] == '-') {
+      if (std::find(flags.begin(), flags.end(), a) != flags.end()) {
+        flags_.push_back(a);
+      } else if (std::find(valued.begin(), valued.end(), a) != valued.end()) {
+        if (i + 1 >= argc) {
+          error_ = "option " + a + " needs a value";
+          return false;
+        }
+        values_.emplace_back(a, argv[++i]);
+      } else {
+        error_ = "unknown option " + a;
+        return false;
+      }
+    } else {
+      positionals_.push_back(a);
+    }
+  }
+  return true;
+}
+
+bool Args::has(const std::string& name) const {
+  if (std::find(flags_.begin(), flags_.end(), name) != flags_.end()) return true;
+  for (const auto& kv : values_) {
+    if (kv.first == name) return true;
+  }
+  return false;
+}
+
+std::string Args::get(const std::string& name, const std::string& fallback) const {
+  std::string v = fallback;
+  for (const auto& kv : values_) {
+    if (kv.first == name) v = kv.second;  // the last occurrence wins
+  }
+  return v;
+}
+
+bool Args::get_int(const std::string& name, int64_t lo, int64_t hi, int64_t* value) {
+  if (!has(name)) return true;
+  const std::string text = get(name);
+  char* end = nullptr;
+  errno = 0;
+  const long long v = std::strtoll(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || errno != 0 || v < lo || v > hi) {
+    error_ = name + " must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+             "], got '" + text + "'";
+    return false;
+  }
+  *value = v;
+  return true;
+}
+
+bool Args::get_double(const std::string& name, double lo, double hi, double* value) {
+  if (!has(name)) return true;
+  const std::string text = get(name);
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(v) || v < lo || v > hi) {
+    char buf[160];
+    std::snprintf(buf, sizeof(buf), "%s must be a number in [%g, %g], got '%s'", name.c_str(), lo, hi,
+                  text.c_str());
+    error_ = buf;
+    return false;
+  }
+  *value = v;
+  return true;
+}
+
+namespace {
+
+std::string quote(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof(buf), "\\u%04x", c);
+      out += buf;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
+}  // namespace
+
+void JsonObject::add(const std::string& key, int64_t value) {
+  fields_.emplace_back(key, std::to_string(value));
+}
+
+void JsonObject::add(const std::string& key, double value) {
+  if (!std::isfinite(value)) {
+    add_null(key);
+    return;
+  }
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.9g", value);
+  fields_.emplace_back(key, buf);
+}
+
+void JsonObject::add(const std::string& key, const std::string& value) {
+  fields_.emplace_back(key, quote(value));
+}
+
+void JsonObject::add_null(const std::string& key) { fields_.emplace_back(key, "null"); }
+
+std::string JsonObject::str() const {
+  std::string out = "{";
+  for (size_t i = 0; i < fields_.size(); ++i) {
+    if (i) out += ", ";
+    out += quote(fields_[i].first) + ": " + fields_[i].second;
+  }
+  return out + "}";
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+std::string extension(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  const size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string ext = path.substr(dot + 1);
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+}  // namespace cli
+}  // namespace gab

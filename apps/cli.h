@@ -1,0 +1,73 @@
+// Shared pieces of the gab sub-commands: argument parsing, the error
+// contract (exit 1 + "gab: error: ..." for bad input, exit 2 for bad usage),
+// a one-object JSON writer, timing.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace gab {
+namespace cli {
+
+constexpr int kExitOk = 0;
+constexpr int kExitFailure = 1;
+constexpr int kExitUsage = 2;
+
+// Prints "gab: error: <message>" on stderr and returns kExitFailure.
+int fail(const std::string& message);
+// Prints "gab <command>: <message>" and the usage line on stderr; returns kExitUsage.
+int usage_error(const std::string& command, const std::string& message, const char* usage);
+
+// Options of one sub-command: "--name value" pairs, flags, positionals.
+class Args {
+ public:
+  // `valued` lists the options taking a value, `flags` those that do not.
+  // Returns false (and sets error()) on an unknown option or missing value.
+  bool parse(int argc, char** argv, const std::vector<std::string>& valued,
+             const std::vector<std::string>& flags);
+  const std::string& error() const { return error_; }
+
+  bool has(const std::string& name) const;
+  std::string get(const std::string& name, const std::string& fallback = "") const;
+  const std::vector<std::string>& positionals() const { return positionals_; }
+
+  // Integer / double option with range check; false + error() on bad text.
+  bool get_int(const std::string& name, int64_t lo, int64_t hi, int64_t* value);
+  bool get_double(const std::string& name, double lo, double hi, double* value);
+
+ private:
+  std::vector<std::pair<std::string, std::string>> values_;
+  std::vector<std::string> flags_;
+  std::vector<std::string> positionals_;
+  std::string error_;
+};
+
+// Builds one JSON object; keys keep insertion order.
+class JsonObject {
+ public:
+  void add(const std::string& key, int64_t value);
+  void add(const std::string& key, double value);
+  void add(const std::string& key, const std::string& value);
+  void add_null(const std::string& key);
+  std::string str() const;
+
+ private:
+  std::vector<std::pair<std::string, std::string>> fields_;
+};
+
+// Wall-clock seconds since some fixed point (steady clock).
+inline double now_seconds() {
+  using clock = std::chrono::steady_clock;
+  return std::chrono::duration<double>(clock::now().time_since_epoch()).count();
+}
+
+double median(std::vector<double> values);
+
+// Lower-cased extension of a path without the dot ("" if none).
+std::string extension(const std::string& path);
+
+}  // namespace cli
+}  // namespace gab

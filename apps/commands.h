@@ -1,0 +1,10 @@
+// The sub-commands of gab; each takes the arguments after its name.
+#pragma once
+
+namespace gab {
+namespace cli {
+
+int run_factor(int argc, char** argv);
+
+}  // namespace cli
+}  // namespace gab

@@ -1,0 +1,33 @@
+// The least-squares system of geometry-aware bases (DESIGN.md section 1):
+// M = L^T L + w^2 sum_a e_a e_a^T with L = D - A the uniform Laplacian of
+// the edge graph, assembled straight into the engine's lower-triangle CSC.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gab/mesh/edge_graph.h"
+#include "gab/mesh/mesh.h"
+#include "gab/sparse/csc.h"
+#include "gab/sparse/status.h"
+
+namespace gab {
+
+// Lower triangle of L^T L + w^2 sum_a e_a e_a^T. The pattern is the 2-ring
+// of every vertex plus the full diagonal (kept even where a value is zero,
+// e.g. isolated vertices, so the pattern never depends on the anchors).
+// Anchors must be distinct and in range. O(sum of squared degrees).
+Status assemble_normal_matrix(const EdgeGraph& graph, const std::vector<int32_t>& anchors,
+                              double weight, CscMatrix* lower);
+
+// The benchmark anchor rule of DESIGN.md section 6: k0 anchors at vertices
+// floor(j n / k0), j = 0..k0-1 (distinct), then the smallest vertex of each
+// connected component that has none. O(V + E).
+std::vector<int32_t> benchmark_anchors(const EdgeGraph& graph, int32_t k0);
+
+// Right-hand sides w^2 E^T c for x, y, z: n x 3 column-major, the anchors'
+// coordinates at their rows, zero elsewhere.
+std::vector<double> anchor_right_hand_sides(const Mesh& mesh, const std::vector<int32_t>& anchors,
+                                            double weight);
+
+}  // namespace gab

@@ -1,0 +1,103 @@
+// Assembly of L^T L + w^2 E^T E. Row k of L is r_k = deg(k) e_k - sum of
+// e_u over the neighbours u of k, so M = sum_k r_k r_k^T: column j of M
+// gathers r_k[j] * r_k over the k in the closed neighbourhood of j.
+#include "gab/mesh/normal_matrix.h"
+
+#include <algorithm>
+#include <string>
+
+#include "gab/mesh/edge_graph.h"
+
+namespace gab {
+
+Status assemble_normal_matrix(const EdgeGraph& graph, const std::vector<int32_t>& anchors,
+                              double weight, CscMatrix* lower) {
+  const int32_t n = graph.num_vertices();
+  std::vector<double> diag_extra(n, 0.0);
+  for (int32_t a : anchors) {
+    if (a < 0 || a >= n) {
+      return Status::Error(StatusCode::kInvalidArgument,
+                           "anchor " + std::to_string(a) + " is not a vertex (n = " + std::to_string(n) + ")");
+    }
+    if (diag_extra[a] != 0.0) {
+      return Status::Error(StatusCode::kInvalidArgument, "anchor " + std::to_string(a) + " given twice");
+    }
+    diag_extra[a] = weight * weight;
+  }
+  CscMatrix m;
+  m.nrows = m.ncols = n;
+  m.colptr.assign(n + 1, 0);
+  std::vector<double> acc(n, 0.0);
+  std::vector<int32_t> mark(n, -1), rows;
+  auto coefficient = [&graph](int32_t k, int32_t v) {  // r_k[v]
+    return v == k ? static_cast<double>(graph.degree(k)) : -1.0;
+  };
+  for (int32_t j = 0; j < n; ++j) {
+    rows.clear();
+    mark[j] = j;
+    rows.push_back(j);
+    // k runs over j and its neighbours (where r_k[j] != 0).
+    for (int32_t q = graph.offsets[j] - 1; q < graph.offsets[j + 1]; ++q) {
+      const int32_t k = q < graph.offsets[j] ? j : graph.neighbors[q];
+      const double rkj = coefficient(k, j);
+      for (int32_t p = graph.offsets[k] - 1; p < graph.offsets[k + 1]; ++p) {
+        const int32_t v = p < graph.offsets[k] ? k : graph.neighbors[p];
+        if (v < j) continue;
+        if (mark[v] != j) {
+          mark[v] = j;
+          rows.push_back(v);
+        }
+        acc[v] += coefficient(k, v) * rkj;
+      }
+    }
+    std::sort(rows.begin(), rows.end());
+    acc[j] += diag_extra[j];
+    for (int32_t v : rows) {
+      m.rowind.push_back(v);
+      m.values.push_back(acc[v]);
+      acc[v] = 0.0;
+    }
+    if (m.rowind.size() > static_cast<size_t>(INT32_MAX)) {
+      return Status::Error(StatusCode::kOverflow, "normal matrix has more than 2^31-1 entries");
+    }
+    m.colptr[j + 1] = static_cast<int32_t>(m.rowind.size());
+  }
+  *lower = std::move(m);
+  return Status::Ok();
+}
+
+std::vector<int32_t> benchmark_anchors(const EdgeGraph& graph, int32_t k0) {
+  const int32_t n = graph.num_vertices();
+  std::vector<int32_t> anchors;
+  std::vector<char> is_anchor(n, 0);
+  for (int64_t j = 0; j < k0 && n > 0; ++j) {
+    const int32_t v = static_cast<int32_t>(j * n / k0);
+    if (!is_anchor[v]) {
+      is_anchor[v] = 1;
+      anchors.push_back(v);
+    }
+  }
+  int32_t ncomp = 0;
+  const std::vector<int32_t> comp = connected_components(graph, &ncomp);
+  std::vector<char> covered(ncomp, 0);
+  for (int32_t a : anchors) covered[comp[a]] = 1;
+  for (int32_t v = 0; v < n; ++v) {  // first vertex met in a component is its smallest
+    if (!covered[comp[v]]) {
+      covered[comp[v]] = 1;
+      anchors.push_back(v);
+    }
+  }
+  return anchors;
+}
+
+std::vector<double> anchor_right_hand_sides(const Mesh& mesh, const std::vector<int32_t>& anchors,
+                                            double weight) {
+  const int32_t n = mesh.num_vertices();
+  std::vector<double> b(static_cast<size_t>(n) * 3, 0.0);
+  for (int32_t a : anchors) {
+    for (int c = 0; c < 3; ++c) b[a + static_cast<size_t>(c) * n] = weight * weight * mesh.positions[3 * static_cast<size_t>(a) + c];
+  }
+  return b;
+}
+
+}  // namespace gab

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# One command from a fresh Debian machine: install what is missing, build
+# gab (Release, tests included), fetch a real mesh from Debian's libcgal-demo,
+# and run the main job on it.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+PACKAGES="cmake ninja-build g++ libgtest-dev googletest libbenchmark-dev libtinyobjloader-dev libcgal-demo"
+missing=""
+for p in $PACKAGES; do
+  dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"
+done
+if [ -n "$missing" ]; then
+  echo "installing:$missing" >&2
+  $SUDO apt-get update
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y --no-install-recommends $missing
+fi
+
+# Real meshes shipped by libcgal-demo (DESIGN.md section 7); never committed.
+if [ ! -f data/meshes/camel.off ]; then
+  mkdir -p data
+  tar xzf /usr/share/doc/libcgal-dev/data.tar.gz -C data --strip-components=1 data/meshes
+fi
+
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DGAB_BUILD_TESTS=ON
+cmake --build build -j2
+
+# The main job (until the codec lands): factor and solve the camel's
+# least-squares system.
+./build/apps/gab factor data/meshes/camel.off

@@ -1,0 +1,39 @@
+// Numeric supernodal Cholesky (multifrontal) and the supernodal triangular
+// solves, on the analysis of symbolic.h. These are the allocation-free
+// kernels: the caller supplies every buffer (sizes below); cholesky.h wraps
+// them in a convenient object.
+#pragma once
+
+#include <cstdint>
+
+#include "gab/sparse/csc.h"
+#include "gab/sparse/dense_kernels.h"
+#include "gab/sparse/status.h"
+#include "gab/sparse/symbolic.h"
+
+namespace gab {
+
+// Workspace sizes, in elements, for factorize_supernodal.
+int64_t factor_workspace_doubles(const SymbolicFactor& f);  // the update stack
+int64_t factor_workspace_ints(const SymbolicFactor& f);     // maps and child lists
+
+// Numeric factorization P A P^T = L L^T. `lower` must have the pattern that
+// was analyzed (values may differ). `values` receives the supernode blocks
+// (f.value_ptr[f.num_supernodes] doubles); the strict upper triangle of each
+// diagonal block is left unspecified. A non-positive pivot gives
+// kNotPositiveDefinite naming the column in the original numbering.
+// Time: the factorization's flops, run in the dense kernels `k`.
+Status factorize_supernodal(const SymbolicFactor& f, const CscMatrix& lower,
+                            const DenseKernels& k, double* values, double* work,
+                            int32_t* iwork);
+
+// Solves L Y = B then L^T X = Y in place, in the permuted numbering: x is
+// n x nrhs column-major with leading dimension ldx. `work` holds
+// f.max_front_rows * nrhs doubles. Time O(nnz(L) * nrhs), one pass over L
+// per direction for all right-hand sides together.
+void solve_lower_supernodal(const SymbolicFactor& f, const double* values, double* x,
+                            int32_t nrhs, int32_t ldx, double* work);
+void solve_upper_supernodal(const SymbolicFactor& f, const double* values, double* x,
+                            int32_t nrhs, int32_t ldx, double* work);
+
+}  // namespace gab

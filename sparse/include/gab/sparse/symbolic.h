@@ -1,0 +1,76 @@
+// Symbolic analysis for the supernodal Cholesky factor: the pipeline
+//   order -> permute -> etree -> postorder -> column counts -> supernodes
+//   (fundamental, then relaxed amalgamation) -> supernodal row structures
+// run once per nonzero pattern; numeric factorizations reuse it.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gab/sparse/csc.h"
+#include "gab/sparse/etree.h"
+#include "gab/sparse/status.h"
+
+namespace gab {
+
+enum class Ordering {
+  kAmd,      // approximate minimum degree (amd.h)
+  kNatural,  // identity, then postorder of the elimination tree
+  kGiven,    // AnalyzeOptions::given_perm, then postorder
+};
+
+struct AnalyzeOptions {
+  Ordering ordering = Ordering::kAmd;
+  std::vector<int32_t> given_perm;  // used when ordering == kGiven
+  // Relaxed amalgamation (defaults as CHOLMOD's): merge a child supernode
+  // into its parent when the merged supernode has at most relax_cols[0]
+  // columns, or at most relax_cols[i] columns and a fraction of explicit
+  // zeros below relax_zeros[i-1], or any size and zeros below relax_zeros[2].
+  bool relax = true;
+  int32_t relax_cols[3] = {4, 16, 48};
+  double relax_zeros[3] = {0.8, 0.1, 0.05};
+};
+
+// The analysis of one pattern. Columns are numbered in pivot order
+// (permuted); supernode s holds columns [first_col[s], first_col[s+1]) and a
+// dense column-major block of rows(s) x ncols(s) values in the factor, its
+// rows being its own columns first, then the rows below in increasing order.
+struct SymbolicFactor {
+  int32_t n = 0;
+  std::vector<int32_t> perm;          // perm[k]: original index of pivot k
+  std::vector<int32_t> inverse_perm;  // inverse_perm[perm[k]] = k
+  EliminationTree etree;              // of the permuted matrix (identity postorder)
+  std::vector<int32_t> column_counts; // nnz of L(:, k) incl. diagonal, permuted numbering
+
+  int32_t num_supernodes = 0;
+  std::vector<int32_t> first_col;        // num_supernodes + 1
+  std::vector<int32_t> supernode_of;     // n: supernode holding column k
+  std::vector<int32_t> supernode_parent; // num_supernodes, -1 for roots
+  std::vector<int64_t> row_ptr;          // num_supernodes + 1, into row_ind
+  std::vector<int32_t> row_ind;          // rows of each supernode (permuted numbering)
+  std::vector<int64_t> value_ptr;        // num_supernodes + 1, into the factor's values
+
+  // Numeric assembly map: A's lower-triangle entry p (original numbering)
+  // lands at factor value offset a_dest[p] - value_ptr[s] within supernode
+  // s; entries are listed per supernode in a_order[a_ptr[s] .. a_ptr[s+1]).
+  std::vector<int64_t> a_ptr;
+  std::vector<int32_t> a_order;  // indices into A's values
+  std::vector<int64_t> a_dest;   // by position in a_order
+
+  int64_t nnz_A = 0;          // lower triangle incl. diagonal
+  int64_t nnz_L = 0;          // true nonzeros of L incl. diagonal (sum of column counts)
+  int64_t stored_L = 0;       // entries stored in supernode blocks (incl. explicit zeros)
+  double flops = 0.0;         // sum over columns of column_count^2 (true nonzeros)
+  int64_t stack_peak = 0;     // doubles of multifrontal update stack needed
+  int32_t max_front_rows = 0; // largest rows(s)
+
+  int32_t rows(int32_t s) const { return static_cast<int32_t>(row_ptr[s + 1] - row_ptr[s]); }
+  int32_t cols(int32_t s) const { return first_col[s + 1] - first_col[s]; }
+};
+
+// Analyzes the symmetric matrix whose lower triangle is `lower` (pattern
+// only; entries above the diagonal are an error). Time O(nnz(A) + ordering
+// + sum of supernode row counts * log), memory O(nnz(A) + n).
+Status analyze(const CscMatrix& lower, const AnalyzeOptions& options, SymbolicFactor* out);
+
+}  // namespace gab

@@ -1,0 +1,59 @@
+// The Cholesky object: buffers and permutations around the supernodal kernels.
+#include "gab/sparse/cholesky.h"
+
+#include <string>
+
+#include "gab/sparse/supernodal.h"
+
+namespace gab {
+
+Status Cholesky::analyze(const CscMatrix& lower, const AnalyzeOptions& options) {
+  analyzed_ = factorized_ = false;
+  GAB_RETURN_IF_ERROR(gab::analyze(lower, options, &symbolic_));
+  values_.assign(symbolic_.value_ptr[symbolic_.num_supernodes], 0.0);
+  work_.assign(factor_workspace_doubles(symbolic_), 0.0);
+  iwork_.assign(factor_workspace_ints(symbolic_), 0);
+  analyzed_ = true;
+  return Status::Ok();
+}
+
+Status Cholesky::factorize(const CscMatrix& lower) {
+  if (!analyzed_) return Status::Error(StatusCode::kInvalidArgument, "factorize before analyze");
+  factorized_ = false;
+  if (kernels_ == nullptr) kernels_ = &dense_kernels();
+  GAB_RETURN_IF_ERROR(factorize_supernodal(symbolic_, lower, *kernels_, values_.data(),
+                                           work_.data(), iwork_.data()));
+  factorized_ = true;
+  return Status::Ok();
+}
+
+Status Cholesky::solve(double* b, int32_t nrhs, int32_t ldb) {
+  if (!factorized_) return Status::Error(StatusCode::kInvalidArgument, "solve before factorize");
+  const int32_t n = symbolic_.n;
+  if (nrhs < 0 || ldb < n) {
+    return Status::Error(StatusCode::kInvalidArgument,
+                         "solve needs nrhs >= 0 and ldb >= n (" + std::to_string(n) + ")");
+  }
+  const size_t need = static_cast<size_t>(n) * nrhs;
+  if (solve_rhs_.size() < need) solve_rhs_.resize(need);
+  const size_t need_work = static_cast<size_t>(symbolic_.max_front_rows) * nrhs;
+  if (solve_work_.size() < need_work) solve_work_.resize(need_work);
+  const int32_t* perm = symbolic_.perm.data();
+  for (int32_t r = 0; r < nrhs; ++r) {
+    const double* src = b + static_cast<int64_t>(r) * ldb;
+    double* dst = solve_rhs_.data() + static_cast<int64_t>(r) * n;
+    for (int32_t k = 0; k < n; ++k) dst[k] = src[perm[k]];
+  }
+  solve_lower_supernodal(symbolic_, values_.data(), solve_rhs_.data(), nrhs, n,
+                         solve_work_.data());
+  solve_upper_supernodal(symbolic_, values_.data(), solve_rhs_.data(), nrhs, n,
+                         solve_work_.data());
+  for (int32_t r = 0; r < nrhs; ++r) {
+    const double* src = solve_rhs_.data() + static_cast<int64_t>(r) * n;
+    double* dst = b + static_cast<int64_t>(r) * ldb;
+    for (int32_t k = 0; k < n; ++k) dst[perm[k]] = src[k];
+  }
+  return Status::Ok();
+}
+
+}  // namespace gab

@@ -1,0 +1,207 @@
+// The symbolic analysis pipeline (see symbolic.h):
+//   order -> postorder -> permute -> etree -> column counts -> supernodes
+//   -> row structures -> assembly map and multifrontal stack size.
+#include "gab/sparse/symbolic.h"
+
+#include <algorithm>
+#include <string>
+
+#include "gab/sparse/amd.h"
+#include "gab/sparse/column_counts.h"
+#include "gab/sparse/supernodes.h"
+
+namespace gab {
+
+namespace {
+
+Status check_input(const CscMatrix& lower) {
+  if (lower.nrows != lower.ncols) {
+    return Status::Error(StatusCode::kInvalidArgument,
+                         "matrix is " + std::to_string(lower.nrows) + " x " +
+                             std::to_string(lower.ncols) + ", not square");
+  }
+  GAB_RETURN_IF_ERROR(check_csc(lower));
+  for (int32_t j = 0; j < lower.ncols; ++j) {
+    if (lower.colptr[j] < lower.colptr[j + 1] && lower.rowind[lower.colptr[j]] < j) {
+      return Status::Error(StatusCode::kInvalidArgument,
+                           "entry (" + std::to_string(lower.rowind[lower.colptr[j]]) + ", " +
+                               std::to_string(j) +
+                               ") is above the diagonal: pass the lower triangle");
+    }
+  }
+  return Status::Ok();
+}
+
+Status fill_reducing_order(const CscMatrix& lower, const AnalyzeOptions& options,
+                           std::vector<int32_t>* perm) {
+  const int32_t n = lower.ncols;
+  switch (options.ordering) {
+    case Ordering::kAmd:
+      return amd_order(lower, perm);
+    case Ordering::kNatural:
+      perm->resize(n);
+      for (int32_t i = 0; i < n; ++i) (*perm)[i] = i;
+      return Status::Ok();
+    case Ordering::kGiven:
+      if (!is_permutation(options.given_perm, n)) {
+        return Status::Error(StatusCode::kInvalidArgument,
+                             "given ordering is not a permutation of 0.." + std::to_string(n - 1));
+      }
+      *perm = options.given_perm;
+      return Status::Ok();
+  }
+  return Status::Error(StatusCode::kInvalidArgument, "unknown ordering");
+}
+
+// Rows of every supernode: its own columns, then the union of the rows
+// below it from A's columns and from its children's structures, sorted.
+void supernode_rows(const CscMatrix& c, SymbolicFactor* f) {
+  const int32_t ns = f->num_supernodes;
+  std::vector<int32_t> mark(f->n, -1);
+  std::vector<std::vector<int32_t>> children(ns);
+  for (int32_t s = 0; s < ns; ++s) {
+    if (f->supernode_parent[s] != -1) children[f->supernode_parent[s]].push_back(s);
+  }
+  f->row_ptr.assign(ns + 1, 0);
+  f->row_ind.clear();
+  std::vector<int32_t> below;
+  for (int32_t s = 0; s < ns; ++s) {
+    const int32_t first = f->first_col[s], last = f->first_col[s + 1] - 1;
+    below.clear();
+    for (int32_t j = first; j <= last; ++j) {
+      for (int32_t p = c.colptr[j]; p < c.colptr[j + 1]; ++p) {
+        const int32_t i = c.rowind[p];
+        if (i > last && mark[i] != s) {
+          mark[i] = s;
+          below.push_back(i);
+        }
+      }
+    }
+    for (int32_t child : children[s]) {
+      for (int64_t p = f->row_ptr[child]; p < f->row_ptr[child + 1]; ++p) {
+        const int32_t i = f->row_ind[p];
+        if (i > last && mark[i] != s) {
+          mark[i] = s;
+          below.push_back(i);
+        }
+      }
+    }
+    std::sort(below.begin(), below.end());
+    for (int32_t j = first; j <= last; ++j) f->row_ind.push_back(j);
+    f->row_ind.insert(f->row_ind.end(), below.begin(), below.end());
+    f->row_ptr[s + 1] = static_cast<int64_t>(f->row_ind.size());
+  }
+}
+
+// For every entry of A (original numbering) its supernode and offset in the
+// factor's values, grouped per supernode so the numeric phase scatters A
+// into one front at a time.
+void assembly_map(const CscMatrix& lower, SymbolicFactor* f) {
+  const int32_t ns = f->num_supernodes;
+  const int64_t nnz = lower.nnz();
+  std::vector<int32_t> super_of_entry(nnz);
+  std::vector<int32_t> col_of_entry(nnz);
+  // local[i]: position of row i in the current supernode's rows; filled per
+  // supernode from its row list, so walk A by permuted column.
+  std::vector<int32_t> local(f->n, -1);
+  f->a_ptr.assign(ns + 1, 0);
+  for (int32_t j = 0; j < lower.ncols; ++j) {
+    for (int32_t p = lower.colptr[j]; p < lower.colptr[j + 1]; ++p) {
+      const int32_t a = f->inverse_perm[lower.rowind[p]], b = f->inverse_perm[j];
+      super_of_entry[p] = f->supernode_of[std::min(a, b)];
+      col_of_entry[p] = j;
+      ++f->a_ptr[super_of_entry[p] + 1];
+    }
+  }
+  for (int32_t s = 0; s < ns; ++s) f->a_ptr[s + 1] += f->a_ptr[s];
+  f->a_order.assign(nnz, 0);
+  f->a_dest.assign(nnz, 0);
+  std::vector<int64_t> cursor(f->a_ptr.begin(), f->a_ptr.end() - 1);
+  for (int32_t j = 0; j < lower.ncols; ++j) {
+    for (int32_t p = lower.colptr[j]; p < lower.colptr[j + 1]; ++p) {
+      f->a_order[cursor[super_of_entry[p]]++] = p;
+    }
+  }
+  for (int32_t s = 0; s < ns; ++s) {
+    const int32_t m = f->rows(s);
+    for (int32_t t = 0; t < m; ++t) local[f->row_ind[f->row_ptr[s] + t]] = t;
+    for (int64_t q = f->a_ptr[s]; q < f->a_ptr[s + 1]; ++q) {
+      const int32_t p = f->a_order[q];
+      const int32_t a = f->inverse_perm[lower.rowind[p]], b = f->inverse_perm[col_of_entry[p]];
+      const int32_t row = std::max(a, b), col = std::min(a, b);
+      f->a_dest[q] = f->value_ptr[s] + static_cast<int64_t>(col - f->first_col[s]) * m + local[row];
+    }
+  }
+}
+
+}  // namespace
+
+Status analyze(const CscMatrix& lower, const AnalyzeOptions& options, SymbolicFactor* out) {
+  GAB_RETURN_IF_ERROR(check_input(lower));
+  SymbolicFactor f;
+  f.n = lower.ncols;
+  f.nnz_A = lower.nnz();
+  std::vector<int32_t> order;
+  GAB_RETURN_IF_ERROR(fill_reducing_order(lower, options, &order));
+
+  // Renumber by a postorder of the etree so that subtrees, and therefore
+  // supernodes, are contiguous ranges of columns.
+  CscMatrix c = permute_symmetric_lower(lower, order);
+  const EliminationTree first_tree = elimination_tree(c);
+  f.perm.resize(f.n);
+  for (int32_t k = 0; k < f.n; ++k) f.perm[k] = order[first_tree.postorder[k]];
+  f.inverse_perm = invert_permutation(f.perm);
+  c = permute_symmetric_lower(lower, f.perm);
+  f.etree = elimination_tree(c);
+  f.column_counts = column_counts(c, f.etree);
+  for (int32_t k = 0; k < f.n; ++k) {
+    f.nnz_L += f.column_counts[k];
+    f.flops += static_cast<double>(f.column_counts[k]) * f.column_counts[k];
+  }
+
+  f.first_col = fundamental_supernodes(f.etree.parent, f.column_counts);
+  if (options.relax) {
+    RelaxOptions relax;
+    for (int i = 0; i < 3; ++i) {
+      relax.cols[i] = options.relax_cols[i];
+      relax.zeros[i] = options.relax_zeros[i];
+    }
+    f.first_col = relax_supernodes(f.first_col, f.etree.parent, f.column_counts, relax);
+  }
+  f.num_supernodes = static_cast<int32_t>(f.first_col.size()) - 1;
+  const int32_t ns = f.num_supernodes;
+  f.supernode_of.resize(f.n);
+  for (int32_t s = 0; s < ns; ++s) {
+    for (int32_t j = f.first_col[s]; j < f.first_col[s + 1]; ++j) f.supernode_of[j] = s;
+  }
+  f.supernode_parent.assign(ns, -1);
+  for (int32_t s = 0; s < ns; ++s) {
+    const int32_t p = f.etree.parent[f.first_col[s + 1] - 1];
+    f.supernode_parent[s] = p == -1 ? -1 : f.supernode_of[p];
+  }
+  supernode_rows(c, &f);
+
+  f.value_ptr.assign(ns + 1, 0);
+  for (int32_t s = 0; s < ns; ++s) {
+    const int64_t m = f.rows(s), k = f.cols(s);
+    f.value_ptr[s + 1] = f.value_ptr[s] + m * k;
+    f.stored_L += k * m - k * (k - 1) / 2;
+    f.max_front_rows = std::max(f.max_front_rows, static_cast<int32_t>(m));
+  }
+  // Multifrontal stack: children's update matrices wait on the stack until
+  // their parent is assembled; the parent's own update is allocated while
+  // its children are still there.
+  int64_t stack = 0;
+  std::vector<int64_t> pending(ns, 0);  // update doubles of s's children on the stack
+  for (int32_t s = 0; s < ns; ++s) {
+    const int64_t p = f.rows(s) - f.cols(s);
+    f.stack_peak = std::max(f.stack_peak, stack + p * p);
+    stack += p * p - pending[s];
+    if (f.supernode_parent[s] != -1) pending[f.supernode_parent[s]] += p * p;
+  }
+  assembly_map(lower, &f);
+  *out = std::move(f);
+  return Status::Ok();
+}
+
+}  // namespace gab

@@ -1,0 +1,105 @@
+// The CLI contract of DESIGN.md section 6, by running the gab binary.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+namespace {
+
+struct CommandResult {
+  int exit_code;
+  std::string out;
+  std::string err;
+};
+
+CommandResult run_gab(const std::string& args) {
+  const std::string err_path = ::testing::TempDir() + "/gab_cli_stderr.txt";
+  const std::string cmd = std::string(GAB_BINARY) + " " + args + " 2>" + err_path;
+  CommandResult r{-1, "", ""};
+  FILE* p = popen(cmd.c_str(), "r");
+  if (p == nullptr) return r;
+  char buf[4096];
+  size_t got;
+  while ((got = fread(buf, 1, sizeof(buf), p)) > 0) r.out.append(buf, got);
+  const int status = pclose(p);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream e(err_path);
+  r.err.assign(std::istreambuf_iterator<char>(e), std::istreambuf_iterator<char>());
+  return r;
+}
+
+std::string write_temp(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + "/" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+// A closed octahedron: 6 vertices, 8 faces.
+const char* kOctahedron =
+    "OFF\n6 8 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n"
+    "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n";
+
+TEST(CliTest, FactorJsonHasTheContractKeys) {
+  const std::string path = write_temp("octa.off", kOctahedron);
+  const CommandResult r = run_gab("factor " + path + " --json --anchors 2 --repeat 2");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* key : {"\"n\": 6", "\"nnz_A\": 21", "\"nnz_L\":", "\"flops\":", "\"supernodes\":",
+                          "\"etree_height\":", "\"order_s\":", "\"symbolic_s\":", "\"factor_s\":",
+                          "\"solve_s\":", "\"gflops\":", "\"residual\":"}) {
+    EXPECT_NE(r.out.find(key), std::string::npos) << key << " missing in " << r.out;
+  }
+  // Exactly one line: one JSON object and nothing else on stdout.
+  EXPECT_EQ(r.out.front(), '{');
+  EXPECT_EQ(r.out.find('\n'), r.out.size() - 1);
+}
+
+TEST(CliTest, FactorMatrixMarketResidualIsTiny) {
+  const std::string path = write_temp(
+      "spd.mtx", "%%MatrixMarket matrix coordinate real symmetric\n3 3 5\n1 1 4\n2 1 1\n2 2 4\n3 2 1\n3 3 4\n");
+  const CommandResult r = run_gab("factor " + path + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const size_t at = r.out.find("\"residual\": ");
+  ASSERT_NE(at, std::string::npos);
+  EXPECT_LT(std::stod(r.out.substr(at + 12)), 1e-14);
+}
+
+TEST(CliTest, BadInputExitsOneWithOneLine) {
+  const CommandResult r = run_gab("factor /nonexistent/x.off");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "gab: error: /nonexistent/x.off: cannot open: No such file or directory\n");
+  EXPECT_EQ(r.out, "");
+  const std::string bad = write_temp("bad.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+  const CommandResult r2 = run_gab("factor " + bad + " --json");
+  EXPECT_EQ(r2.exit_code, 1);
+  EXPECT_EQ(r2.err, "gab: error: " + bad + ":6: face 0: vertex index 7 out of range [0, 3)\n");
+}
+
+TEST(CliTest, NotPositiveDefiniteIsAFailureNamingTheColumn) {
+  const std::string path = write_temp(
+      "indef.mtx", "%%MatrixMarket matrix coordinate real symmetric\n2 2 2\n1 1 1\n2 2 -1\n");
+  const CommandResult r = run_gab("factor " + path + " --ordering natural");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("not positive definite: pivot 1"), std::string::npos) << r.err;
+}
+
+TEST(CliTest, BadUsageExitsTwo) {
+  EXPECT_EQ(run_gab("").exit_code, 2);
+  EXPECT_EQ(run_gab("frobnicate").exit_code, 2);
+  EXPECT_EQ(run_gab("factor").exit_code, 2);
+  const CommandResult r = run_gab("factor a.off --ordering metis");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--ordering must be amd or natural, got 'metis'"), std::string::npos);
+  EXPECT_EQ(run_gab("factor a.off --repeat 0").exit_code, 2);
+  EXPECT_EQ(run_gab("factor a.off --bogus").exit_code, 2);
+  EXPECT_EQ(run_gab("help").exit_code, 0);
+}
+
+TEST(CliTest, UnsupportedExtensionIsBadInput) {
+  const CommandResult r = run_gab("factor model.stl");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "gab: error: model.stl: unsupported input type '.stl' (expected .off or .mtx)\n");
+}
+
+}  // namespace

@@ -1,0 +1,75 @@
+#include "gab/mesh/off_io.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+namespace gab {
+namespace {
+
+TEST(OffTest, ParsesTrianglesAndFanTriangulatesPolygons) {
+  Mesh m;
+  const std::string text =
+      "OFF\n# a comment\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 2 2\n3 0 1 2\n4 0 1 2 3\n";
+  ASSERT_TRUE(parse_off(text, "t.off", &m).ok());
+  EXPECT_EQ(m.num_vertices(), 5);
+  EXPECT_EQ(m.triangles, (std::vector<int32_t>{0, 1, 2, 0, 1, 2, 0, 2, 3}));
+  EXPECT_EQ(m.positions[12], 2.0);
+}
+
+TEST(OffTest, ColouredVariantsSkipExtras) {
+  Mesh m;
+  ASSERT_TRUE(parse_off("COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n3 0 1 2 9 9 9\n",
+                        "c.off", &m).ok());
+  EXPECT_EQ(m.num_triangles(), 1);
+  EXPECT_EQ(m.positions[3], 1.0);
+}
+
+struct BadCase {
+  const char* text;
+  const char* message;
+};
+
+TEST(OffTest, MalformedFilesNameTheLine) {
+  const BadCase cases[] = {
+      {"", "x.off:1: empty file, expected an OFF header"},
+      {"PLY\n", "x.off:1: not an OFF file (header 'PLY')"},
+      {"OFF\n3 1\n", "x.off:3: truncated header: expected vertex, face and edge counts"},
+      {"OFF\n-3 1 0\n", "x.off:2: bad count '-3' in header"},
+      {"OFF\n0 0 0\n", "x.off:2: mesh has no vertices"},
+      {"OFF\n3 1 0\n0 0 0\n1 0 0\n", "x.off:5: truncated: file ends in vertex 2 of 3"},
+      {"OFF\n3 1 0\n0 0 0\n1 zz 0\n0 1 0\n3 0 1 2\n", "x.off:4: vertex 1: bad coordinate 'zz'"},
+      {"OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n", "x.off:4: vertex 1: coordinate is not finite"},
+      {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", "x.off:6: face 0: vertex index 3 out of range [0, 3)"},
+      {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", "x.off:6: face 0: vertex index -1 out of range [0, 3)"},
+      {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n", "x.off:6: face 0 has 2 vertices (need 3 or more)"},
+      {"OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "x.off:7: truncated: file ends in face 1 of 2"},
+      {"OFF\n3000000000 1 0\n0 0 0\n",
+       "x.off:2: header claims 3000000000 vertices and 1 faces, more than the file's 25 bytes can hold"},
+  };
+  for (const BadCase& c : cases) {
+    Mesh m;
+    const Status s = parse_off(c.text, "x.off", &m);
+    EXPECT_EQ(s.code(), StatusCode::kParseError) << c.text;
+    EXPECT_EQ(s.message(), c.message);
+  }
+}
+
+TEST(OffTest, MissingFileIsAnIoError) {
+  Mesh m;
+  const Status s = read_off("/nonexistent/dir/a.off", &m);
+  EXPECT_EQ(s.code(), StatusCode::kIoError);
+  EXPECT_EQ(s.message(), "/nonexistent/dir/a.off: cannot open: No such file or directory");
+}
+
+TEST(OffTest, ReadsTheSharedBunny) {
+  const std::string path = std::string(GAB_SHARED_MESHES) + "/bunny-small.off";
+  if (!std::ifstream(path)) GTEST_SKIP() << path << " not present";
+  Mesh m;
+  ASSERT_TRUE(read_off(path, &m).ok());
+  EXPECT_EQ(m.num_vertices(), 3485);
+  EXPECT_EQ(m.num_triangles(), 6966);
+}
+
+}  // namespace
+}  // namespace gab

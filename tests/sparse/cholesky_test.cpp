@@ -1,0 +1,218 @@
+// The supernodal factorization and solves against the oracles, on many
+// random SPD matrices and every SIMD level this machine has.
+#include "gab/sparse/cholesky.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gab/sparse/oracles.h"
+#include "test_matrices.h"
+
+namespace gab {
+namespace {
+
+using testing_util::random_spd;
+
+std::vector<SimdLevel> supported_levels() {
+  std::vector<SimdLevel> levels;
+  for (SimdLevel l : {SimdLevel::kScalar, SimdLevel::kAvx2, SimdLevel::kAvx512}) {
+    if (dense_kernels(l).level == l) levels.push_back(l);
+  }
+  return levels;
+}
+
+// Max |L_supernodal - L_oracle| over the whole factor, relative to max |L|.
+double factor_difference(const Cholesky& chol, const CscMatrix& lower) {
+  const SymbolicFactor& f = chol.symbolic();
+  const CscMatrix c = permute_symmetric_lower(lower, f.perm);
+  CscMatrix oracle;
+  EXPECT_TRUE(simplicial_cholesky(c, &oracle).ok());
+  const int32_t n = f.n;
+  std::vector<double> col(n, 0.0);
+  double diff = 0.0, scale = 0.0;
+  for (int32_t j = 0; j < n; ++j) {
+    for (int32_t p = oracle.colptr[j]; p < oracle.colptr[j + 1]; ++p) col[oracle.rowind[p]] = oracle.values[p];
+    const int32_t s = f.supernode_of[j], m = f.rows(s);
+    const double* block = chol.values().data() + f.value_ptr[s] + static_cast<int64_t>(j - f.first_col[s]) * m;
+    for (int32_t t = j - f.first_col[s]; t < m; ++t) {
+      const int32_t i = f.row_ind[f.row_ptr[s] + t];
+      diff = std::max(diff, std::abs(block[t] - col[i]));
+      scale = std::max(scale, std::abs(col[i]));
+      col[i] = 0.0;
+    }
+    for (int32_t p = oracle.colptr[j]; p < oracle.colptr[j + 1]; ++p) {
+      EXPECT_EQ(col[oracle.rowind[p]], 0.0) << "oracle entry outside the supernodal structure";
+      col[oracle.rowind[p]] = 0.0;
+    }
+  }
+  return scale > 0 ? diff / scale : diff;
+}
+
+double relative_residual(const CscMatrix& a, const std::vector<double>& x, const std::vector<double>& b,
+                         int32_t nrhs) {
+  const int32_t n = a.ncols;
+  std::vector<double> ax(n);
+  double num = 0.0, den = 0.0;
+  for (int32_t r = 0; r < nrhs; ++r) {
+    symmetric_lower_matvec(a, x.data() + static_cast<size_t>(r) * n, ax.data());
+    for (int32_t i = 0; i < n; ++i) {
+      const double d = ax[i] - b[i + static_cast<size_t>(r) * n];
+      num += d * d;
+      den += b[i + static_cast<size_t>(r) * n] * b[i + static_cast<size_t>(r) * n];
+    }
+  }
+  return std::sqrt(num / den);
+}
+
+struct Case {
+  int32_t n;
+  double density;
+  int32_t dense_rows;
+  int32_t blocks;
+};
+
+TEST(CholeskyTest, FactorMatchesSimplicialOracleOnRandomMatrices) {
+  std::vector<Case> cases;
+  for (int32_t n : {1, 2, 3, 5, 8, 17, 40, 100, 300}) {
+    for (double d : {0.5, 2.0, 6.0}) cases.push_back({n, d, 0, 1});
+  }
+  cases.push_back({200, 3.0, 2, 1});
+  cases.push_back({250, 2.0, 0, 5});
+  cases.push_back({400, 4.0, 3, 3});
+  cases.push_back({2000, 2.5, 1, 2});
+  cases.push_back({150, 40.0, 0, 1});  // nearly dense: big supernodes
+  for (SimdLevel level : supported_levels()) {
+    uint32_t seed = 100;
+    for (const Case& c : cases) {
+      for (Ordering ord : {Ordering::kAmd, Ordering::kNatural}) {
+        const CscMatrix a = random_spd(c.n, c.density, ++seed, c.dense_rows, c.blocks);
+        Cholesky chol;
+        chol.set_kernels(dense_kernels(level));
+        AnalyzeOptions options;
+        options.ordering = ord;
+        ASSERT_TRUE(chol.analyze(a, options).ok());
+        ASSERT_TRUE(chol.factorize(a).ok());
+        EXPECT_LT(factor_difference(chol, a), 1e-12)
+            << simd_level_name(level) << " n=" << c.n << " density=" << c.density;
+      }
+    }
+  }
+}
+
+TEST(CholeskyTest, SolveSeveralRightHandSidesToResidual1e12) {
+  for (SimdLevel level : supported_levels()) {
+    for (int32_t nrhs : {1, 2, 3, 4, 7}) {
+      const CscMatrix a = random_spd(500, 3.0, 77 + nrhs, 1, 2);
+      const int32_t n = a.ncols;
+      std::vector<double> b(static_cast<size_t>(n) * nrhs);
+      for (size_t i = 0; i < b.size(); ++i) b[i] = std::cos(0.37 * i);
+      std::vector<double> x = b;
+      Cholesky chol;
+      chol.set_kernels(dense_kernels(level));
+      ASSERT_TRUE(chol.analyze(a).ok());
+      ASSERT_TRUE(chol.factorize(a).ok());
+      ASSERT_TRUE(chol.solve(x.data(), nrhs, n).ok());
+      EXPECT_LT(relative_residual(a, x, b, nrhs), 1e-12) << simd_level_name(level) << " nrhs=" << nrhs;
+    }
+  }
+}
+
+TEST(CholeskyTest, GridLaplacianResidual) {
+  const CscMatrix a = testing_util::grid_laplacian(60, 50);
+  const int32_t n = a.ncols;
+  std::vector<double> b(n * 3);
+  for (size_t i = 0; i < b.size(); ++i) b[i] = 1.0 + (i % 7);
+  std::vector<double> x = b;
+  Cholesky chol;
+  ASSERT_TRUE(chol.analyze(a).ok());
+  ASSERT_TRUE(chol.factorize(a).ok());
+  ASSERT_TRUE(chol.solve(x.data(), 3, n).ok());
+  EXPECT_LT(relative_residual(a, x, b, 3), 1e-12);
+  EXPECT_LT(chol.symbolic().nnz_L, 20 * a.nnz());  // AMD keeps grid fill modest
+}
+
+TEST(CholeskyTest, RefactorizationWithNewValuesReusesAnalysis) {
+  CscMatrix a = random_spd(300, 3.0, 5);
+  Cholesky chol;
+  ASSERT_TRUE(chol.analyze(a).ok());
+  ASSERT_TRUE(chol.factorize(a).ok());
+  for (size_t p = 0; p < a.values.size(); ++p) a.values[p] *= 1.0 + 0.5 * std::sin(p);
+  // Keep diagonal dominance: bump the diagonal.
+  for (int32_t j = 0; j < a.ncols; ++j) a.values[a.colptr[j]] += 10.0;
+  ASSERT_TRUE(chol.factorize(a).ok());
+  EXPECT_LT(factor_difference(chol, a), 1e-12);
+}
+
+TEST(CholeskyTest, NotPositiveDefiniteNamesTheColumn) {
+  // diag(1, 1, -1, 1): with natural ordering the bad pivot is column 2.
+  CscMatrix a;
+  ASSERT_TRUE(csc_from_triplets(4, 4, {{0, 0, 1.0}, {1, 1, 1.0}, {2, 2, -1.0}, {3, 3, 1.0}}, &a).ok());
+  Cholesky chol;
+  AnalyzeOptions options;
+  options.ordering = Ordering::kNatural;
+  ASSERT_TRUE(chol.analyze(a, options).ok());
+  const Status s = chol.factorize(a);
+  EXPECT_EQ(s.code(), StatusCode::kNotPositiveDefinite);
+  EXPECT_EQ(s.message(), "matrix is not positive definite: pivot 2 (original row/column 2) is not positive");
+  EXPECT_FALSE(chol.factorized());
+  std::vector<double> b(4, 1.0);
+  EXPECT_EQ(chol.solve(b.data(), 1, 4).message(), "solve before factorize");
+}
+
+TEST(CholeskyTest, IndefiniteInsideALargeSupernodeIsReported) {
+  // Dense 30x30 block that is SPD except a negative shift at the end.
+  std::vector<Triplet> t;
+  for (int32_t j = 0; j < 30; ++j) {
+    for (int32_t i = j; i < 30; ++i) t.push_back({i, j, i == j ? (j == 29 ? -100.0 : 31.0) : 1.0});
+  }
+  CscMatrix a;
+  ASSERT_TRUE(csc_from_triplets(30, 30, t, &a).ok());
+  Cholesky chol;
+  ASSERT_TRUE(chol.analyze(a).ok());
+  EXPECT_EQ(chol.factorize(a).code(), StatusCode::kNotPositiveDefinite);
+}
+
+TEST(CholeskyTest, FactorizeRejectsAnotherPattern) {
+  const CscMatrix a = random_spd(50, 2.0, 1);
+  const CscMatrix b = random_spd(50, 3.0, 2);
+  Cholesky chol;
+  ASSERT_TRUE(chol.analyze(a).ok());
+  EXPECT_EQ(chol.factorize(b).code(), StatusCode::kInvalidArgument);
+}
+
+TEST(CholeskyTest, EmptyMatrix) {
+  CscMatrix a;
+  ASSERT_TRUE(csc_from_triplets(0, 0, {}, &a).ok());
+  Cholesky chol;
+  ASSERT_TRUE(chol.analyze(a).ok());
+  ASSERT_TRUE(chol.factorize(a).ok());
+  EXPECT_TRUE(chol.solve(nullptr, 1, 0).ok());
+}
+
+TEST(OracleTest, DenseAndSimplicialAgree) {
+  for (uint32_t seed = 0; seed < 20; ++seed) {
+    const CscMatrix a = random_spd(1 + seed * 3, 2.0, seed, seed % 2);
+    const int32_t n = a.ncols;
+    std::vector<double> dense;
+    CscMatrix l;
+    ASSERT_TRUE(dense_cholesky(a, &dense).ok());
+    ASSERT_TRUE(simplicial_cholesky(a, &l).ok());
+    std::vector<double> from_sparse(static_cast<size_t>(n) * n, 0.0);
+    for (int32_t j = 0; j < n; ++j)
+      for (int32_t p = l.colptr[j]; p < l.colptr[j + 1]; ++p) from_sparse[l.rowind[p] + static_cast<size_t>(j) * n] = l.values[p];
+    for (size_t i = 0; i < dense.size(); ++i) EXPECT_NEAR(dense[i], from_sparse[i], 1e-12);
+    // L L^T reproduces A.
+    const std::vector<double> full = testing_util::to_dense_symmetric(a);
+    for (int32_t i = 0; i < n; ++i) {
+      for (int32_t j = 0; j <= i; ++j) {
+        double v = 0.0;
+        for (int32_t k = 0; k <= j; ++k) v += dense[i + static_cast<size_t>(k) * n] * dense[j + static_cast<size_t>(k) * n];
+        EXPECT_NEAR(v, full[i + static_cast<size_t>(j) * n], 1e-10);
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace gab
