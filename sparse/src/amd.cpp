@@ -5,7 +5,7 @@
 //   [Dav06] T. A. Davis, "Direct Methods for Sparse Linear Systems", SIAM 2006, sec. 7.1.
 //
 // The quotient graph ([ADD96] sec. 2). After some pivots have been eliminated the graph
-// holds *variables* (uneliminated; each is a supervariable standing for |i| = nv[i]
+// holds *variables* (uneliminated; each is a supervariable standing for |i| = nd_[i].nv
 // indistinguishable rows) and *elements* (eliminated pivots; element e stands for the
 // clique on its variable list L_e). Variable i keeps two lists,
 //
@@ -39,7 +39,7 @@
 // ordering with the same fill whose supernodes are consecutive columns.
 //
 // Storage. All lists live in one int32 array `iw` with elbow room: variable i's list is
-// iw[pe[i] .. pe[i]+len[i]), its first elen[i] entries are E_i, the rest A_i; element e's
+// iw[pe[i] .. pe[i]+nd_[i].len), its first elen[i] entries are E_i, the rest A_i; element e's
 // list is L_e. New elements are appended at `pfree`; when the array is full, the live lists
 // are slid to the front (garbage collection). All workspace is allocated once, before the
 // elimination starts.
@@ -66,25 +66,30 @@ constexpr int32_t kDense = -4;    // dense row, postponed to the end
 
 class AmdOrdering {
  public:
-  // Carves the per-node arrays out of `nodes` (kNodeArrays * n words).
-  static constexpr int kNodeArrays = 11;
-  AmdOrdering(int32_t n, int32_t* nodes, const AmdOptions& options)
-      : n_(n), aggressive_(options.aggressive) {
-    int32_t* b = nodes;
-    pe_ = b;     b += n;
-    len_ = b;    b += n;
-    elen_ = b;   b += n;
-    nv_ = b;     b += n;
-    degree_ = b; b += n;
-    w_ = b;      b += n;
-    next_ = b;   b += n;
-    prev_ = b;   b += n;
-    head_ = b;   b += n;
-    hhead_ = b;  b += n;
-    link_ = b;
+  // Everything the elimination reads or writes about one node, in one cache line's half:
+  // each visit to a node touches most of these fields together.
+  struct Node {
+    int32_t pe;      // start of the node's list in iw_, kNone when it has none
+    int32_t len;     // length of the list
+    int32_t elen;    // variable: |E_i|; otherwise kElement / kMerged / kMassElim / kDense
+    int32_t nv;      // variable: supervariable weight |i|, negated while i ∈ L_p;
+                     // element: variables its pivot eliminated; 0 for merged / mass-eliminated
+    int32_t degree;  // variable: approximate external degree; element: weighted |L_e|
+    int32_t w;       // element: tag + |L_e \ L_p| during a pivot, 0 once absorbed;
+                     // variables: marks for the supervariable comparison
+    int32_t next;    // degree list (doubly linked); hash bucket while in L_p
+    int32_t prev;    // degree list; the hash while in L_p
+  };
+
+  // `nodes` has n entries, `heads` 3 n words.
+  AmdOrdering(int32_t n, Node* nodes, int32_t* heads, const AmdOptions& options)
+      : n_(n), aggressive_(options.aggressive), nd_(nodes) {
+    head_ = heads;
+    hhead_ = heads + n;
+    link_ = heads + 2 * static_cast<size_t>(n);
   }
 
-  // Validates the lower triangle and counts each node's off-diagonal entries in len_;
+  // Validates the lower triangle and counts each node's off-diagonal entries in len;
   // returns their total over both triangles in *nzfull.
   Status count_entries(const CscMatrix& lower, int64_t* nzfull);
   // Fills iw (iwlen >= *nzfull words) with the adjacency lists, removes dense rows and
@@ -110,23 +115,15 @@ class AmdOrdering {
   const bool aggressive_;
   int32_t iwlen_ = 0;
 
-  // Per node (n entries each).
-  int32_t* pe_;      // start of the node's list in iw_, kNone when it has none
-  int32_t* len_;     // length of the list
-  int32_t* elen_;    // variable: |E_i|; otherwise kElement / kMerged / kMassElim / kDense
-  int32_t* nv_;      // supervariable weight; element: pivot count; 0 for members
-                     // (negative while the variable is in the current L_p)
-  int32_t* degree_;  // variable: approximate external degree; element: weighted |L_e|
-  int32_t* w_;       // element: tagged |L_e \ L_p|, 0 once absorbed; tag marks otherwise
-  int32_t* next_;    // degree lists (doubly linked); hash buckets while in L_p
-  int32_t* prev_;    // degree lists; holds the hash while in L_p
-  int32_t* head_;    // head_[d]: first variable of degree d
-  int32_t* hhead_;   // hash bucket heads (empty between pivots)
-  int32_t* link_;    // element: absorbing element; member: its principal / element
+  Node* const nd_;         // n nodes
+  int32_t* head_;          // head_[d]: first variable of approximate degree d
+  int32_t* hhead_;         // hash bucket heads (all empty between pivots)
+  int32_t* link_;          // element: the element that absorbed it (kNone: a root);
+                           // merged: its principal; mass-eliminated: its pivot
   int32_t* iw_ = nullptr;  // the lists, iwlen_ words
 
   int32_t pfree_ = 0;     // first free word at the end of iw_
-  int32_t tag_ = 2;       // w_ values >= tag_ were set during the current pivot
+  int32_t tag_ = 2;       // w values >= tag_ were set during the current pivot
   int32_t tag_limit_ = 0; // reset the tags before tag_ passes this
   int32_t lemax_ = 0;     // largest weighted element size so far
   int32_t mindeg_ = 0;
@@ -144,12 +141,12 @@ class AmdOrdering {
 };
 
 void AmdOrdering::remove_from_degree_list(int32_t i) {
-  const int32_t nx = next_[i], pv = prev_[i];
-  if (nx != kNone) prev_[nx] = pv;
+  const int32_t nx = nd_[i].next, pv = nd_[i].prev;
+  if (nx != kNone) nd_[nx].prev = pv;
   if (pv != kNone) {
-    next_[pv] = nx;
+    nd_[pv].next = nx;
   } else {
-    head_[degree_[i]] = nx;
+    head_[nd_[i].degree] = nx;
   }
 }
 
@@ -157,9 +154,9 @@ void AmdOrdering::insert_in_degree_list(int32_t i, int32_t deg) {
   // Head insertion: among equal degrees the most recently updated variable is taken
   // first, as in [ADD96] (it tends to continue the current front).
   const int32_t h = head_[deg];
-  next_[i] = h;
-  prev_[i] = kNone;
-  if (h != kNone) prev_[h] = i;
+  nd_[i].next = h;
+  nd_[i].prev = kNone;
+  if (h != kNone) nd_[h].prev = i;
   head_[deg] = i;
 }
 
@@ -167,8 +164,7 @@ Status AmdOrdering::count_entries(const CscMatrix& lower, int64_t* nzfull) {
   const int32_t n = n_;
   const int32_t* colptr = lower.colptr.data();
   const int32_t* rowind = lower.rowind.data();
-  int32_t* const len = len_;
-  std::fill(len, len + n, 0);
+  for (int32_t i = 0; i < n; ++i) nd_[i].len = 0;
   int64_t total = 0;
   for (int32_t j = 0; j < n; ++j) {
     const int32_t begin = colptr[j], end = colptr[j + 1];
@@ -189,13 +185,13 @@ Status AmdOrdering::count_entries(const CscMatrix& lower, int64_t* nzfull) {
                                  "and below n)");
       }
       last = i;
-      ++len[i];
+      ++nd_[i].len;
     }
     // The loop above counted the diagonal entry (first in the column, if present) in
-    // len[j]; take it back while adding the entries below it.
+    // nd_[j].len; take it back while adding the entries below it.
     const int32_t diagonal = begin < end && rowind[begin] == j ? 1 : 0;
     const int32_t below = end - begin - diagonal;
-    len[j] += below - diagonal;
+    nd_[j].len += below - diagonal;
     total += 2 * int64_t{below};
   }
   *nzfull = total;
@@ -213,14 +209,14 @@ void AmdOrdering::build_graph(const CscMatrix& lower, int32_t* iw, int32_t iwlen
   iwlen_ = iwlen;
   int32_t pos = 0;
   for (int32_t i = 0; i < n; ++i) {
-    pe_[i] = pos;
-    next_[i] = pos;  // insertion cursor
-    pos += len_[i];
+    nd_[i].pe = pos;
+    head_[i] = pos;  // insertion cursor
+    pos += nd_[i].len;
   }
   pfree_ = pos;
   // Column j appends its larger neighbours to its own list after the smaller ones,
   // which earlier columns appended: every list comes out sorted.
-  int32_t* const cursor = next_;
+  int32_t* const cursor = head_;
   for (int32_t j = 0; j < n; ++j) {
     int32_t begin = colptr[j];
     const int32_t end = colptr[j + 1];
@@ -235,13 +231,13 @@ void AmdOrdering::build_graph(const CscMatrix& lower, int32_t* iw, int32_t iwlen
   }
 
   for (int32_t i = 0; i < n; ++i) {
-    nv_[i] = 1;
-    elen_[i] = 0;
-    w_[i] = 1;
+    nd_[i].nv = 1;
+    nd_[i].elen = 0;
+    nd_[i].w = 1;
     link_[i] = kNone;
     head_[i] = kNone;
     hhead_[i] = kNone;
-    degree_[i] = len_[i];
+    nd_[i].degree = nd_[i].len;
   }
   tag_ = 2;
   // Step 5 of a pivot uses tags up to tag_ + lemax + 1 + |L_p| <= tag_ + 2n + 1.
@@ -250,27 +246,27 @@ void AmdOrdering::build_graph(const CscMatrix& lower, int32_t* iw, int32_t iwlen
   if (options.dense >= 0.0) {
     const double threshold = std::max(16.0, options.dense * std::sqrt(static_cast<double>(n)));
     for (int32_t i = 0; i < n; ++i) {
-      if (static_cast<double>(len_[i]) > threshold) {
-        elen_[i] = kDense;
-        nv_[i] = 0;  // skipped wherever it still appears in a list
-        pe_[i] = kNone;
-        len_[i] = 0;
+      if (static_cast<double>(nd_[i].len) > threshold) {
+        nd_[i].elen = kDense;
+        nd_[i].nv = 0;  // skipped wherever it still appears in a list
+        nd_[i].pe = kNone;
+        nd_[i].len = 0;
         ++ndense_;
       }
     }
     if (ndense_ > 0) {
       // Degrees count the graph without the dense rows.
       for (int32_t i = 0; i < n; ++i) {
-        if (elen_[i] == kDense) continue;
+        if (nd_[i].elen == kDense) continue;
         int32_t d = 0;
-        for (int32_t p = pe_[i]; p < pe_[i] + len_[i]; ++p) d += nv_[iw_[p]];
-        degree_[i] = d;
+        for (int32_t p = nd_[i].pe; p < nd_[i].pe + nd_[i].len; ++p) d += nd_[iw_[p]].nv;
+        nd_[i].degree = d;
       }
     }
   }
   nel_ = ndense_;
   for (int32_t i = 0; i < n; ++i) {
-    if (elen_[i] != kDense) insert_in_degree_list(i, degree_[i]);
+    if (nd_[i].elen != kDense) insert_in_degree_list(i, nd_[i].degree);
   }
   mindeg_ = 0;
 }
@@ -285,7 +281,7 @@ int32_t AmdOrdering::select_pivot() {
 void AmdOrdering::reset_tags() {
   // Live elements and variables get 1 (< any tag); absorbed elements keep 0.
   for (int32_t i = 0; i < n_; ++i) {
-    if (w_[i] != 0) w_[i] = 1;
+    if (nd_[i].w != 0) nd_[i].w = 1;
   }
   tag_ = 2;
 }
@@ -296,9 +292,9 @@ void AmdOrdering::reset_tags() {
 int32_t AmdOrdering::collect_garbage(int32_t scan_end) {
   ++compressions_;
   for (int32_t j = 0; j < n_; ++j) {
-    if (pe_[j] != kNone && len_[j] > 0) {
-      const int32_t p = pe_[j];
-      pe_[j] = iw_[p];
+    if (nd_[j].pe != kNone && nd_[j].len > 0) {
+      const int32_t p = nd_[j].pe;
+      nd_[j].pe = iw_[p];
       iw_[p] = -(j + 1);
     }
   }
@@ -308,10 +304,10 @@ int32_t AmdOrdering::collect_garbage(int32_t scan_end) {
     const int32_t v = iw_[q++];
     if (v >= 0) continue;  // a dead word
     const int32_t j = -(v + 1);
-    const int32_t first = pe_[j];
-    pe_[j] = dst;
+    const int32_t first = nd_[j].pe;
+    nd_[j].pe = dst;
     iw_[dst++] = first;
-    const int32_t rest = len_[j] - 1;
+    const int32_t rest = nd_[j].len - 1;
     std::memmove(iw_ + dst, iw_ + q, sizeof(int32_t) * static_cast<size_t>(rest));
     dst += rest;
     q += rest;
@@ -323,19 +319,18 @@ int32_t AmdOrdering::collect_garbage(int32_t scan_end) {
 // negating nv; absorbs the elements of E_p.
 void AmdOrdering::build_element(int32_t me) {
   int32_t* const iw = iw_;
-  int32_t* const nv = nv_;
-  int32_t degme = 0;
-  if (elen_[me] == 0) {
+    int32_t degme = 0;
+  if (nd_[me].elen == 0) {
     // No adjacent elements: L_p ⊆ A_p, built in place over p's own list.
-    int32_t dst = pe_[me];
+    int32_t dst = nd_[me].pe;
     pme1_ = dst;
-    const int32_t end = pe_[me] + len_[me];
-    for (int32_t q = pe_[me]; q < end; ++q) {
+    const int32_t end = nd_[me].pe + nd_[me].len;
+    for (int32_t q = nd_[me].pe; q < end; ++q) {
       const int32_t j = iw[q];
-      const int32_t nvj = nv[j];
+      const int32_t nvj = nd_[j].nv;
       if (nvj <= 0) continue;
       degme += nvj;
-      nv[j] = -nvj;
+      nd_[j].nv = -nvj;
       iw[dst++] = j;
       remove_from_degree_list(j);
     }
@@ -344,16 +339,16 @@ void AmdOrdering::build_element(int32_t me) {
     // Append L_p at the end of iw_: scan L_e for e ∈ E_p, then A_p.
     int32_t dst = pfree_;
     pme1_ = dst;
-    int32_t q = pe_[me];               // next unread word of p's list
-    int32_t qend = q + len_[me];
-    const int32_t ne = elen_[me];
+    int32_t q = nd_[me].pe;               // next unread word of p's list
+    int32_t qend = q + nd_[me].len;
+    const int32_t ne = nd_[me].elen;
     for (int32_t k = 0; k <= ne; ++k) {
       int32_t e, src, cnt;
       if (k < ne) {
         e = iw[q++];
-        if (pe_[e] == kNone) continue;  // defensive: already absorbed
-        src = pe_[e];
-        cnt = len_[e];
+        if (nd_[e].pe == kNone) continue;  // defensive: already absorbed
+        src = nd_[e].pe;
+        cnt = nd_[e].len;
       } else {
         e = me;
         src = q;
@@ -361,22 +356,22 @@ void AmdOrdering::build_element(int32_t me) {
       }
       for (; cnt > 0; --cnt) {
         const int32_t j = iw[src++];
-        const int32_t nvj = nv[j];
+        const int32_t nvj = nd_[j].nv;
         if (nvj <= 0) continue;
         if (dst >= iwlen_) {
           // Out of room. Record what is still unread, compact, and move the part of
           // L_p built so far behind the compacted lists. Live data never grows (L_p
           // is no longer than what was read for it), so this always frees room.
           if (e == me) {
-            pe_[me] = src;
-            len_[me] = cnt - 1;
-            elen_[me] = 0;
+            nd_[me].pe = src;
+            nd_[me].len = cnt - 1;
+            nd_[me].elen = 0;
           } else {
-            pe_[me] = q;
-            len_[me] = qend - q;
-            elen_[me] = ne - k - 1;
-            pe_[e] = src;
-            len_[e] = cnt - 1;
+            nd_[me].pe = q;
+            nd_[me].len = qend - q;
+            nd_[me].elen = ne - k - 1;
+            nd_[e].pe = src;
+            nd_[e].len = cnt - 1;
           }
           const int32_t built = dst - pme1_;
           const int32_t free_start = collect_garbage(pme1_);
@@ -384,54 +379,53 @@ void AmdOrdering::build_element(int32_t me) {
           pme1_ = free_start;
           dst = free_start + built;
           if (e == me) {
-            src = pe_[me];
+            src = nd_[me].pe;
           } else {
-            q = pe_[me];
-            qend = q + len_[me];
-            src = pe_[e];
+            q = nd_[me].pe;
+            qend = q + nd_[me].len;
+            src = nd_[e].pe;
           }
         }
         degme += nvj;
-        nv[j] = -nvj;
+        nd_[j].nv = -nvj;
         iw[dst++] = j;
         remove_from_degree_list(j);
       }
       if (e != me) {
         // e ⊆ L_p: absorbed.
         link_[e] = me;
-        w_[e] = 0;
-        pe_[e] = kNone;
-        len_[e] = 0;
+        nd_[e].w = 0;
+        nd_[e].pe = kNone;
+        nd_[e].len = 0;
       }
     }
     pme2_ = dst;
     pfree_ = dst;
   }
   degme_ = degme;
-  pe_[me] = pme1_;
-  len_[me] = pme2_ - pme1_;
-  elen_[me] = kElement;
+  nd_[me].pe = pme1_;
+  nd_[me].len = pme2_ - pme1_;
+  nd_[me].elen = kElement;
 }
 
 // For every element e adjacent to some i ∈ L_p, leaves w(e) = tag + |L_e \ L_p|.
 void AmdOrdering::set_differences(int32_t me) {
   (void)me;
   const int32_t* const iw = iw_;
-  int32_t* const w = w_;
-  const int32_t tag = tag_;
+    const int32_t tag = tag_;
   for (int32_t p = pme1_; p < pme2_; ++p) {
     const int32_t i = iw[p];
-    const int32_t eln = elen_[i];
+    const int32_t eln = nd_[i].elen;
     if (eln <= 0) continue;
-    const int32_t nvi = -nv_[i];
+    const int32_t nvi = -nd_[i].nv;
     const int32_t first_visit = tag - nvi;
-    for (int32_t q = pe_[i], end = pe_[i] + eln; q < end; ++q) {
+    for (int32_t q = nd_[i].pe, end = nd_[i].pe + eln; q < end; ++q) {
       const int32_t e = iw[q];
-      const int32_t we = w[e];
+      const int32_t we = nd_[e].w;
       if (we >= tag) {
-        w[e] = we - nvi;
+        nd_[e].w = we - nvi;
       } else if (we != 0) {
-        w[e] = degree_[e] + first_visit;
+        nd_[e].w = nd_[e].degree + first_visit;
       }
     }
   }
@@ -442,20 +436,18 @@ void AmdOrdering::set_differences(int32_t me) {
 // at the front of E_i and files i under the hash of its lists.
 void AmdOrdering::update_degrees(int32_t me) {
   int32_t* const iw = iw_;
-  int32_t* const w = w_;
-  int32_t* const nv = nv_;
-  const int32_t tag = tag_;
+      const int32_t tag = tag_;
   const uint32_t n = static_cast<uint32_t>(n_);
   for (int32_t p = pme1_; p < pme2_; ++p) {
     const int32_t i = iw[p];
-    const int32_t p1 = pe_[i];
-    const int32_t p2 = p1 + elen_[i];
+    const int32_t p1 = nd_[i].pe;
+    const int32_t p2 = p1 + nd_[i].elen;
     int32_t pn = p1;
     uint32_t hash = 0;
     int32_t deg = 0;
     for (int32_t q = p1; q < p2; ++q) {
       const int32_t e = iw[q];
-      const int32_t we = w[e];
+      const int32_t we = nd_[e].w;
       if (we == 0) continue;  // absorbed into p in build_element
       const int32_t dext = we - tag;
       if (dext > 0 || !aggressive_) {
@@ -465,17 +457,17 @@ void AmdOrdering::update_degrees(int32_t me) {
       } else {
         // L_e ⊆ L_p: aggressive absorption.
         link_[e] = me;
-        w[e] = 0;
-        pe_[e] = kNone;
-        len_[e] = 0;
+        nd_[e].w = 0;
+        nd_[e].pe = kNone;
+        nd_[e].len = 0;
       }
     }
     const int32_t kept_elements = pn - p1;
     const int32_t p3 = pn;
-    const int32_t p4 = p1 + len_[i];
+    const int32_t p4 = p1 + nd_[i].len;
     for (int32_t q = p2; q < p4; ++q) {
       const int32_t j = iw[q];
-      const int32_t nvj = nv[j];
+      const int32_t nvj = nd_[j].nv;
       if (nvj > 0) {  // drops p, L_p, members and dense rows
         deg += nvj;
         iw[pn++] = j;
@@ -484,28 +476,28 @@ void AmdOrdering::update_degrees(int32_t me) {
     }
     if (kept_elements == 0 && pn == p3) {
       // Only p is left next to i: i's row equals p's, eliminate it with p.
-      const int32_t nvi = -nv[i];
+      const int32_t nvi = -nd_[i].nv;
       link_[i] = me;
       degme_ -= nvi;
       nvpiv_ += nvi;
       nel_ += nvi;
-      nv[i] = 0;
-      elen_[i] = kMassElim;
-      pe_[i] = kNone;
-      len_[i] = 0;
+      nd_[i].nv = 0;
+      nd_[i].elen = kMassElim;
+      nd_[i].pe = kNone;
+      nd_[i].len = 0;
     } else {
-      degree_[i] = std::min(degree_[i], deg);
+      nd_[i].degree = std::min(nd_[i].degree, deg);
       // p goes first in E_i; the displaced element moves behind the elements, the
       // displaced variable to the end. Room exists: i lost at least p (from A_i) or
       // an element of E_p.
       iw[pn] = iw[p3];
       iw[p3] = iw[p1];
       iw[p1] = me;
-      len_[i] = pn - p1 + 1;
-      elen_[i] = kept_elements + 1;
+      nd_[i].len = pn - p1 + 1;
+      nd_[i].elen = kept_elements + 1;
       const int32_t h = static_cast<int32_t>(hash % n);
-      prev_[i] = h;
-      next_[i] = hhead_[h];
+      nd_[i].prev = h;
+      nd_[i].next = hhead_[h];
       hhead_[h] = i;
     }
   }
@@ -516,36 +508,34 @@ void AmdOrdering::update_degrees(int32_t me) {
 void AmdOrdering::merge_supervariables(int32_t me) {
   (void)me;
   const int32_t* const iw = iw_;
-  int32_t* const w = w_;
-  int32_t* const nv = nv_;
-  for (int32_t p = pme1_; p < pme2_; ++p) {
+      for (int32_t p = pme1_; p < pme2_; ++p) {
     const int32_t i = iw[p];
-    if (nv[i] >= 0) continue;  // mass-eliminated or merged
-    const int32_t h = prev_[i];
+    if (nd_[i].nv >= 0) continue;  // mass-eliminated or merged
+    const int32_t h = nd_[i].prev;
     int32_t a = hhead_[h];
     if (a == kNone) continue;
     hhead_[h] = kNone;
-    for (; a != kNone && next_[a] != kNone; a = next_[a]) {
-      const int32_t la = len_[a];
-      const int32_t ea = elen_[a];
-      const int32_t pa = pe_[a];
+    for (; a != kNone && nd_[a].next != kNone; a = nd_[a].next) {
+      const int32_t la = nd_[a].len;
+      const int32_t ea = nd_[a].elen;
+      const int32_t pa = nd_[a].pe;
       // Every list starts with p: compare from the second word on.
-      for (int32_t q = pa + 1; q < pa + la; ++q) w[iw[q]] = tag_;
+      for (int32_t q = pa + 1; q < pa + la; ++q) nd_[iw[q]].w = tag_;
       int32_t before = a;
-      for (int32_t b = next_[a]; b != kNone;) {
-        const int32_t after = next_[b];
-        bool same = len_[b] == la && elen_[b] == ea;
-        for (int32_t q = pe_[b] + 1, end = pe_[b] + len_[b]; same && q < end; ++q) {
-          same = w[iw[q]] == tag_;
+      for (int32_t b = nd_[a].next; b != kNone;) {
+        const int32_t after = nd_[b].next;
+        bool same = nd_[b].len == la && nd_[b].elen == ea;
+        for (int32_t q = nd_[b].pe + 1, end = nd_[b].pe + nd_[b].len; same && q < end; ++q) {
+          same = nd_[iw[q]].w == tag_;
         }
         if (same) {
-          nv[a] += nv[b];  // both negative while in L_p
-          nv[b] = 0;
-          elen_[b] = kMerged;
+          nd_[a].nv += nd_[b].nv;  // both negative while in L_p
+          nd_[b].nv = 0;
+          nd_[b].elen = kMerged;
           link_[b] = a;
-          pe_[b] = kNone;
-          len_[b] = 0;
-          next_[before] = after;
+          nd_[b].pe = kNone;
+          nd_[b].len = 0;
+          nd_[before].next = after;
         } else {
           before = b;
         }
@@ -560,26 +550,25 @@ void AmdOrdering::merge_supervariables(int32_t me) {
 // principal variables.
 void AmdOrdering::finalize_degrees(int32_t me) {
   int32_t* const iw = iw_;
-  int32_t* const nv = nv_;
-  const int32_t nleft = n_ - nel_;
+    const int32_t nleft = n_ - nel_;
   int32_t dst = pme1_;
   for (int32_t p = pme1_; p < pme2_; ++p) {
     const int32_t i = iw[p];
-    const int32_t nvi = -nv[i];
+    const int32_t nvi = -nd_[i].nv;
     if (nvi <= 0) continue;
-    const int32_t deg = std::min(degree_[i] + degme_ - nvi, nleft - nvi);
+    const int32_t deg = std::min(nd_[i].degree + degme_ - nvi, nleft - nvi);
     insert_in_degree_list(i, deg);
     if (deg < mindeg_) mindeg_ = deg;
-    degree_[i] = deg;
-    nv[i] = nvi;
+    nd_[i].degree = deg;
+    nd_[i].nv = nvi;
     iw[dst++] = i;
   }
-  nv[me] = nvpiv_;
-  degree_[me] = degme_;
-  len_[me] = dst - pme1_;
-  if (len_[me] == 0) {
-    pe_[me] = kNone;
-    w_[me] = 0;  // an empty element touches nothing; it is a root of the tree
+  nd_[me].nv = nvpiv_;
+  nd_[me].degree = degme_;
+  nd_[me].len = dst - pme1_;
+  if (nd_[me].len == 0) {
+    nd_[me].pe = kNone;
+    nd_[me].w = 0;  // an empty element touches nothing; it is a root of the tree
   }
   if (pfree_ == pme2_) pfree_ = dst;  // L_p was appended: give back its tail
 }
@@ -588,9 +577,9 @@ void AmdOrdering::eliminate() {
   while (nel_ < n_) {
     if (tag_ >= tag_limit_) reset_tags();
     const int32_t me = select_pivot();
-    nvpiv_ = nv_[me];
+    nvpiv_ = nd_[me].nv;
     nel_ += nvpiv_;
-    nv_[me] = -nvpiv_;  // p itself is dropped from every list it appears in
+    nd_[me].nv = -nvpiv_;  // p itself is dropped from every list it appears in
 
     build_element(me);
     set_differences(me);
@@ -623,15 +612,13 @@ void AmdOrdering::eliminate() {
 void AmdOrdering::order(int32_t* perm) {
   const int32_t n = n_;
   int32_t* const first_child = head_;
-  int32_t* const sibling = next_;
   int32_t* const stack = hhead_;
-  int32_t* const start = w_;
   for (int32_t i = 0; i < n; ++i) first_child[i] = kNone;
   // Children in increasing index order.
   for (int32_t e = n - 1; e >= 0; --e) {
-    if (elen_[e] == kElement && link_[e] != kNone) {
+    if (nd_[e].elen == kElement && link_[e] != kNone) {
       const int32_t parent = link_[e];
-      sibling[e] = first_child[parent];
+      nd_[e].next = first_child[parent];
       first_child[parent] = e;
     }
   }
@@ -639,10 +626,10 @@ void AmdOrdering::order(int32_t* perm) {
   // relaxed supernode amalgamation may merge with the parent, and it keeps the
   // multifrontal stack small.
   for (int32_t e = 0; e < n; ++e) {
-    if (elen_[e] != kElement || first_child[e] == kNone) continue;
+    if (nd_[e].elen != kElement || first_child[e] == kNone) continue;
     int32_t big = kNone, big_prev = kNone, big_size = -1, prev = kNone, last = kNone;
-    for (int32_t c = first_child[e]; c != kNone; prev = c, c = sibling[c]) {
-      const int32_t front = nv_[c] + degree_[c];
+    for (int32_t c = first_child[e]; c != kNone; prev = c, c = nd_[c].next) {
+      const int32_t front = nd_[c].nv + nd_[c].degree;
       if (front > big_size) {
         big = c;
         big_prev = prev;
@@ -652,40 +639,40 @@ void AmdOrdering::order(int32_t* perm) {
     }
     if (big != last) {
       if (big_prev == kNone) {
-        first_child[e] = sibling[big];
+        first_child[e] = nd_[big].next;
       } else {
-        sibling[big_prev] = sibling[big];
+        nd_[big_prev].next = nd_[big].next;
       }
-      sibling[last] = big;
-      sibling[big] = kNone;
+      nd_[last].next = big;
+      nd_[big].next = kNone;
     }
   }
   // Depth-first postorder; `start` receives each element's first position.
   int32_t k = 0;
   for (int32_t root = 0; root < n; ++root) {
-    if (elen_[root] != kElement || link_[root] != kNone) continue;
+    if (nd_[root].elen != kElement || link_[root] != kNone) continue;
     int32_t top = 0;
     stack[0] = root;
     while (top >= 0) {
       const int32_t e = stack[top];
       const int32_t c = first_child[e];
       if (c != kNone) {
-        first_child[e] = sibling[c];
+        first_child[e] = nd_[c].next;
         stack[++top] = c;
       } else {
         --top;
-        start[e] = k;
-        k += nv_[e];
+        nd_[e].w = k;
+        k += nd_[e].nv;
       }
     }
   }
   // Each variable's supervariable root is itself or the end of its chain of merges: a
   // pivot (now an element), or a variable mass-eliminated with the pivot link_[root].
   for (int32_t v = 0; v < n; ++v) {
-    if (elen_[v] != kMerged) continue;
+    if (nd_[v].elen != kMerged) continue;
     int32_t root = v;
-    while (elen_[root] == kMerged) root = link_[root];
-    for (int32_t x = v; elen_[x] == kMerged;) {  // path compression
+    while (nd_[root].elen == kMerged) root = link_[root];
+    for (int32_t x = v; nd_[x].elen == kMerged;) {  // path compression
       const int32_t up = link_[x];
       link_[x] = root;
       x = up;
@@ -695,27 +682,26 @@ void AmdOrdering::order(int32_t* perm) {
   // mass-eliminated with it: exactly the elimination sequence, so the block is a clique
   // (one supernode) and the predicted nnz(L) is the ordering's. (Any other order within
   // the block has at most that fill.)
-  int32_t* const mass_next = degree_;  // free now; sizes are in nv_
-  for (int32_t e = 0; e < n; ++e) mass_next[e] = 0;
+  for (int32_t e = 0; e < n; ++e) nd_[e].degree = 0;
   for (int32_t v = 0; v < n; ++v) {
-    if (elen_[v] == kDense) continue;
-    const int32_t root = elen_[v] == kMerged ? link_[v] : v;
-    if (elen_[root] == kMassElim) ++mass_next[link_[root]];
+    if (nd_[v].elen == kDense) continue;
+    const int32_t root = nd_[v].elen == kMerged ? link_[v] : v;
+    if (nd_[root].elen == kMassElim) ++nd_[link_[root]].degree;
   }
   for (int32_t e = 0; e < n; ++e) {
-    if (elen_[e] == kElement) mass_next[e] = start[e] + nv_[e] - mass_next[e];
+    if (nd_[e].elen == kElement) nd_[e].degree = nd_[e].w + nd_[e].nv - nd_[e].degree;
   }
   for (int32_t v = 0; v < n; ++v) {
-    if (elen_[v] == kDense) continue;
-    const int32_t root = elen_[v] == kMerged ? link_[v] : v;
-    if (elen_[root] == kMassElim) {
-      perm[mass_next[link_[root]]++] = v;
+    if (nd_[v].elen == kDense) continue;
+    const int32_t root = nd_[v].elen == kMerged ? link_[v] : v;
+    if (nd_[root].elen == kMassElim) {
+      perm[nd_[link_[root]].degree++] = v;
     } else {
-      perm[start[root]++] = v;
+      perm[nd_[root].w++] = v;
     }
   }
   for (int32_t v = 0; v < n; ++v) {
-    if (elen_[v] == kDense) perm[k++] = v;
+    if (nd_[v].elen == kDense) perm[k++] = v;
   }
 }
 
@@ -753,11 +739,11 @@ Status amd_order(const CscMatrix& lower, std::vector<int32_t>* perm, const AmdOp
     if (info != nullptr) *info = local_info;
     return Status::Ok();
   }
-  // Workspace: allocated here, before the elimination, and never resized. Left
-  // uninitialised: every word is written before it is read.
-  std::unique_ptr<int32_t[]> nodes(
-      new int32_t[AmdOrdering::kNodeArrays * static_cast<size_t>(n)]);
-  AmdOrdering amd(n, nodes.get(), options);
+  // Workspace: allocated here, before the elimination, and never resized; left
+  // uninitialised (every word is written before it is read).
+  std::unique_ptr<AmdOrdering::Node[]> nodes(new AmdOrdering::Node[static_cast<size_t>(n)]);
+  std::unique_ptr<int32_t[]> heads(new int32_t[3 * static_cast<size_t>(n)]);
+  AmdOrdering amd(n, nodes.get(), heads.get(), options);
   int64_t nzfull = 0;
   GAB_RETURN_IF_ERROR(amd.count_entries(lower, &nzfull));
   // Both triangles of the graph plus 20% elbow room, so that garbage collection is rare;

@@ -1,6 +1,7 @@
 // The CLI contract of DESIGN.md section 6, by running the gab binary.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <fstream>
@@ -15,7 +16,10 @@ struct CommandResult {
 };
 
 CommandResult run_gab(const std::string& args) {
-  const std::string err_path = ::testing::TempDir() + "/gab_cli_stderr.txt";
+  // Unique per process and call: ctest runs these tests in parallel.
+  static int calls = 0;
+  const std::string err_path = ::testing::TempDir() + "/gab_cli_stderr_" +
+                               std::to_string(getpid()) + "_" + std::to_string(++calls) + ".txt";
   const std::string cmd = std::string(GAB_BINARY) + " " + args + " 2>" + err_path;
   CommandResult r{-1, "", ""};
   FILE* p = popen(cmd.c_str(), "r");
@@ -27,11 +31,12 @@ CommandResult run_gab(const std::string& args) {
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   std::ifstream e(err_path);
   r.err.assign(std::istreambuf_iterator<char>(e), std::istreambuf_iterator<char>());
+  std::remove(err_path.c_str());
   return r;
 }
 
 std::string write_temp(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + "/" + name;
+  const std::string path = ::testing::TempDir() + "/" + std::to_string(getpid()) + "_" + name;
   std::ofstream(path) << text;
   return path;
 }
