@@ -47,16 +47,15 @@ int32_t blas_potrf(int32_t n, double* a, int32_t lda) {
   return info == 0 ? -1 : info - 1;
 }
 void blas_trsm(int32_t m, int32_t n, const double* l, int32_t ldl, double* b, int32_t ldb) {
-  cblas_dtrsm(CblasColMajor, CblasRight, CblasLower, CblasTrans, CblasNonUnit, m, n, 1.0, l, ldl,
-              b, ldb);
+  cblas_dtrsm(CblasColMajor, CblasRight, CblasLower, CblasTrans, CblasNonUnit, m, n, 1.0, l, ldl, b,
+              ldb);
 }
 void blas_syrk(int32_t n, int32_t k, const double* a, int32_t lda, double* c, int32_t ldc) {
   cblas_dsyrk(CblasColMajor, CblasLower, CblasNoTrans, n, k, -1.0, a, lda, 1.0, c, ldc);
 }
 void blas_gemm(int32_t m, int32_t n, int32_t k, const double* a, int32_t lda, const double* b,
                int32_t ldb, double* c, int32_t ldc) {
-  cblas_dgemm(CblasColMajor, CblasNoTrans, CblasTrans, m, n, k, -1.0, a, lda, b, ldb, 1.0, c,
-              ldc);
+  cblas_dgemm(CblasColMajor, CblasNoTrans, CblasTrans, m, n, k, -1.0, a, lda, b, ldb, 1.0, c, ldc);
 }
 #endif
 
@@ -67,7 +66,8 @@ std::vector<Impl> implementations() {
     if (k.level == level) out.push_back({gab::simd_level_name(level), k});
   }
 #ifdef GAB_HAVE_OPENBLAS
-  out.push_back({"openblas", {SimdLevel::kScalar, &blas_potrf, &blas_trsm, &blas_syrk, &blas_gemm}});
+  out.push_back(
+      {"openblas", {SimdLevel::kScalar, &blas_potrf, &blas_trsm, &blas_syrk, &blas_gemm}});
 #endif
   return out;
 }
@@ -90,8 +90,8 @@ void syrk(benchmark::State& state, DenseKernels k, int32_t n, int32_t kk) {
     k.syrk_lower_sub(n, kk, a.data() + kk, lda, c.data(), n);
     benchmark::ClobberMemory();
   }
-  state.counters["GFLOPS"] = benchmark::Counter(1e-9 * n * (n + 1.0) * kk,
-                                                benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["GFLOPS"] =
+      benchmark::Counter(1e-9 * n * (n + 1.0) * kk, benchmark::Counter::kIsIterationInvariantRate);
 }
 
 void gemm(benchmark::State& state, DenseKernels k, int32_t m, int32_t n, int32_t kk) {
@@ -104,52 +104,68 @@ void gemm(benchmark::State& state, DenseKernels k, int32_t m, int32_t n, int32_t
     k.gemm_nt_sub(m, n, kk, a.data(), lda, b.data(), ldb, c.data(), m);
     benchmark::ClobberMemory();
   }
-  state.counters["GFLOPS"] = benchmark::Counter(2e-9 * m * n * kk,
-                                                benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["GFLOPS"] =
+      benchmark::Counter(2e-9 * m * n * kk, benchmark::Counter::kIsIterationInvariantRate);
 }
 
-// potrf of B B^T + n I; the input is restored outside the timed region.
+// Copies of the input needed so one timed batch is long enough for the
+// pause/resume around the restore (about a microsecond) not to matter.
+int32_t batch_for(size_t doubles_per_call) {
+  return static_cast<int32_t>(std::max<size_t>(1, (size_t{1} << 16) / doubles_per_call));
+}
+
+// potrf of B B^T + n I; a batch of copies is factored per timed iteration
+// and restored outside the timed region.
 void potrf(benchmark::State& state, DenseKernels k, int32_t n) {
-  const std::vector<double> b = random_values(static_cast<size_t>(n) * n, 6);
-  std::vector<double> a(static_cast<size_t>(n) * n, 0.0);
+  const size_t nn = static_cast<size_t>(n) * n;
+  const std::vector<double> b = random_values(nn, 6);
+  std::vector<double> a(nn, 0.0);
   for (int32_t j = 0; j < n; ++j) {
     for (int32_t i = j; i < n; ++i) {
       double s = i == j ? n : 0.0;
-      for (int32_t p = 0; p < n; ++p) s += b[i + static_cast<size_t>(p) * n] * b[j + static_cast<size_t>(p) * n];
+      for (int32_t p = 0; p < n; ++p)
+        s += b[i + static_cast<size_t>(p) * n] * b[j + static_cast<size_t>(p) * n];
       a[i + static_cast<size_t>(j) * n] = s;
     }
   }
-  std::vector<double> work = a;
+  const int32_t batch = batch_for(nn);
+  std::vector<double> work(nn * batch);
   for (auto _ : state) {
     state.PauseTiming();
-    std::memcpy(work.data(), a.data(), a.size() * sizeof(double));
+    for (int32_t t = 0; t < batch; ++t) std::memcpy(&work[nn * t], a.data(), nn * sizeof(double));
     state.ResumeTiming();
-    benchmark::DoNotOptimize(k.potrf(n, work.data(), n));
+    for (int32_t t = 0; t < batch; ++t) benchmark::DoNotOptimize(k.potrf(n, &work[nn * t], n));
     benchmark::ClobberMemory();
   }
-  state.counters["GFLOPS"] = benchmark::Counter(1e-9 * n * n * (n / 3.0),
+  state.counters["GFLOPS"] = benchmark::Counter(1e-9 * batch * n * n * (n / 3.0),
                                                 benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["per_call"] = benchmark::Counter(
+      batch, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
-// B := B L^{-T} with a well-conditioned L; B is restored outside the timed
-// region.
+// B := B L^{-T} with a well-conditioned L, batched like potrf.
 void trsm(benchmark::State& state, DenseKernels k, int32_t m, int32_t n) {
   std::vector<double> l = random_values(static_cast<size_t>(n) * n, 7);
   for (int32_t j = 0; j < n; ++j) {
     l[j + static_cast<size_t>(j) * n] = 2.0 + l[j + static_cast<size_t>(j) * n];
     for (int32_t i = j + 1; i < n; ++i) l[i + static_cast<size_t>(j) * n] /= n;
   }
-  const std::vector<double> b = random_values(static_cast<size_t>(m) * n, 8);
-  std::vector<double> work = b;
+  const size_t mn = static_cast<size_t>(m) * n;
+  const std::vector<double> b = random_values(mn, 8);
+  const int32_t batch = batch_for(mn);
+  std::vector<double> work(mn * batch);
   for (auto _ : state) {
     state.PauseTiming();
-    std::memcpy(work.data(), b.data(), b.size() * sizeof(double));
+    for (int32_t t = 0; t < batch; ++t) std::memcpy(&work[mn * t], b.data(), mn * sizeof(double));
     state.ResumeTiming();
-    k.trsm_right_lower_trans(m, n, l.data(), n, work.data(), m);
+    for (int32_t t = 0; t < batch; ++t)
+      k.trsm_right_lower_trans(m, n, l.data(), n, &work[mn * t], m);
     benchmark::ClobberMemory();
   }
-  state.counters["GFLOPS"] = benchmark::Counter(1e-9 * m * n * n,
-                                                benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["GFLOPS"] =
+      benchmark::Counter(1e-9 * batch * m * n * n, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["per_call"] = benchmark::Counter(
+      batch, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 // Tiny calls, timed per call without pausing (pausing costs more than the
@@ -212,9 +228,16 @@ void register_all() {
   for (const Impl& impl : implementations()) {
     const DenseKernels k = impl.k;
     const std::string& name = impl.name;
-    for (const auto& nk : std::vector<std::pair<int32_t, int32_t>>{
-             {64, 16}, {256, 64}, {512, 128}, {1024, 256}, {1500, 300}, {100, 32}, {200, 100},
-             {800, 200}, {1500, 16}, {50, 300}}) {
+    for (const auto& nk : std::vector<std::pair<int32_t, int32_t>>{{64, 16},
+                                                                   {256, 64},
+                                                                   {512, 128},
+                                                                   {1024, 256},
+                                                                   {1500, 300},
+                                                                   {100, 32},
+                                                                   {200, 100},
+                                                                   {800, 200},
+                                                                   {1500, 16},
+                                                                   {50, 300}}) {
       const std::string label =
           "syrk/" + name + "/n:" + std::to_string(nk.first) + "/k:" + std::to_string(nk.second);
       benchmark::RegisterBenchmark(label.c_str(), syrk, k, nk.first, nk.second);
@@ -234,8 +257,8 @@ void register_all() {
       const std::string label = "potrf/" + name + "/n:" + std::to_string(n);
       benchmark::RegisterBenchmark(label.c_str(), potrf, k, n);
     }
-    for (const auto& mn : std::vector<std::pair<int32_t, int32_t>>{
-             {64, 16}, {500, 100}, {1500, 64}, {1500, 300}}) {
+    for (const auto& mn :
+         std::vector<std::pair<int32_t, int32_t>>{{64, 16}, {500, 100}, {1500, 64}, {1500, 300}}) {
       const std::string label =
           "trsm/" + name + "/m:" + std::to_string(mn.first) + "/n:" + std::to_string(mn.second);
       benchmark::RegisterBenchmark(label.c_str(), trsm, k, mn.first, mn.second);

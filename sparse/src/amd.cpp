@@ -104,12 +104,13 @@ class AmdOrdering {
   void insert_in_degree_list(int32_t i, int32_t deg);
   int32_t select_pivot();
   void build_element(int32_t me);
-  void set_differences(int32_t me);
+  void set_differences();
   void update_degrees(int32_t me);
-  void merge_supervariables(int32_t me);
+  void merge_supervariables();
   void finalize_degrees(int32_t me);
   int32_t collect_garbage(int32_t scan_end);
   void reset_tags();
+  void count_block(int64_t f, int64_t r);
 
   const int32_t n_;
   const bool aggressive_;
@@ -136,7 +137,7 @@ class AmdOrdering {
   int32_t degme_ = 0;            // weighted |L_p|
   int32_t nvpiv_ = 0;            // variables eliminated by this pivot
 
-  double lnz_ = 0.0;    // off-diagonal nonzeros of L
+  int64_t lnz_ = 0;     // off-diagonal nonzeros of L
   double flops_ = 0.0;  // sum over columns of |L(:,j)|^2
 };
 
@@ -288,7 +289,7 @@ void AmdOrdering::reset_tags() {
 
 // Slides every live list to the front of iw_ (lists start below scan_end) and returns the
 // first free word. The first word of each list is replaced by -(node+1) so that a
-// left-to-right sweep can tell where lists start; the displaced word waits in pe_.
+// left-to-right sweep can tell where lists start; the displaced word waits in pe.
 int32_t AmdOrdering::collect_garbage(int32_t scan_end) {
   ++compressions_;
   for (int32_t j = 0; j < n_; ++j) {
@@ -319,7 +320,7 @@ int32_t AmdOrdering::collect_garbage(int32_t scan_end) {
 // negating nv; absorbs the elements of E_p.
 void AmdOrdering::build_element(int32_t me) {
   int32_t* const iw = iw_;
-    int32_t degme = 0;
+  int32_t degme = 0;
   if (nd_[me].elen == 0) {
     // No adjacent elements: L_p ⊆ A_p, built in place over p's own list.
     int32_t dst = nd_[me].pe;
@@ -339,7 +340,7 @@ void AmdOrdering::build_element(int32_t me) {
     // Append L_p at the end of iw_: scan L_e for e ∈ E_p, then A_p.
     int32_t dst = pfree_;
     pme1_ = dst;
-    int32_t q = nd_[me].pe;               // next unread word of p's list
+    int32_t q = nd_[me].pe;  // next unread word of p's list
     int32_t qend = q + nd_[me].len;
     const int32_t ne = nd_[me].elen;
     for (int32_t k = 0; k <= ne; ++k) {
@@ -409,10 +410,9 @@ void AmdOrdering::build_element(int32_t me) {
 }
 
 // For every element e adjacent to some i ∈ L_p, leaves w(e) = tag + |L_e \ L_p|.
-void AmdOrdering::set_differences(int32_t me) {
-  (void)me;
+void AmdOrdering::set_differences() {
   const int32_t* const iw = iw_;
-    const int32_t tag = tag_;
+  const int32_t tag = tag_;
   for (int32_t p = pme1_; p < pme2_; ++p) {
     const int32_t i = iw[p];
     const int32_t eln = nd_[i].elen;
@@ -436,7 +436,7 @@ void AmdOrdering::set_differences(int32_t me) {
 // at the front of E_i and files i under the hash of its lists.
 void AmdOrdering::update_degrees(int32_t me) {
   int32_t* const iw = iw_;
-      const int32_t tag = tag_;
+  const int32_t tag = tag_;
   const uint32_t n = static_cast<uint32_t>(n_);
   for (int32_t p = pme1_; p < pme2_; ++p) {
     const int32_t i = iw[p];
@@ -465,14 +465,16 @@ void AmdOrdering::update_degrees(int32_t me) {
     const int32_t kept_elements = pn - p1;
     const int32_t p3 = pn;
     const int32_t p4 = p1 + nd_[i].len;
+    // Keeps the variables outside L_p (drops p, L_p, merged and mass-eliminated
+    // variables and dense rows). Branch-free: which entries survive is unpredictable.
     for (int32_t q = p2; q < p4; ++q) {
       const int32_t j = iw[q];
       const int32_t nvj = nd_[j].nv;
-      if (nvj > 0) {  // drops p, L_p, members and dense rows
-        deg += nvj;
-        iw[pn++] = j;
-        hash += static_cast<uint32_t>(j);
-      }
+      const int32_t keep = nvj > 0 ? -1 : 0;
+      iw[pn] = j;
+      pn -= keep;
+      deg += nvj & keep;
+      hash += static_cast<uint32_t>(j & keep);
     }
     if (kept_elements == 0 && pn == p3) {
       // Only p is left next to i: i's row equals p's, eliminate it with p.
@@ -505,10 +507,9 @@ void AmdOrdering::update_degrees(int32_t me) {
 
 // Supervariable detection: variables of L_p with equal hash are compared list against
 // list; a match is merged into the first (it is indistinguishable from now on).
-void AmdOrdering::merge_supervariables(int32_t me) {
-  (void)me;
+void AmdOrdering::merge_supervariables() {
   const int32_t* const iw = iw_;
-      for (int32_t p = pme1_; p < pme2_; ++p) {
+  for (int32_t p = pme1_; p < pme2_; ++p) {
     const int32_t i = iw[p];
     if (nd_[i].nv >= 0) continue;  // mass-eliminated or merged
     const int32_t h = nd_[i].prev;
@@ -550,7 +551,7 @@ void AmdOrdering::merge_supervariables(int32_t me) {
 // principal variables.
 void AmdOrdering::finalize_degrees(int32_t me) {
   int32_t* const iw = iw_;
-    const int32_t nleft = n_ - nel_;
+  const int32_t nleft = n_ - nel_;
   int32_t dst = pme1_;
   for (int32_t p = pme1_; p < pme2_; ++p) {
     const int32_t i = iw[p];
@@ -582,28 +583,28 @@ void AmdOrdering::eliminate() {
     nd_[me].nv = -nvpiv_;  // p itself is dropped from every list it appears in
 
     build_element(me);
-    set_differences(me);
+    set_differences();
     update_degrees(me);
     // Tags of this pivot's |L_e \ L_p| values are below tag_ + lemax + 1.
     lemax_ = std::max(lemax_, degme_);
     tag_ += lemax_ + 1;
-    merge_supervariables(me);
+    merge_supervariables();
     ++tag_;
     finalize_degrees(me);
 
-    // Column counts of this pivot block: f columns sharing r off-block rows.
-    const double f = nvpiv_;
-    const double r = static_cast<double>(degme_) + ndense_;
-    lnz_ += f * r + f * (f - 1.0) / 2.0;
-    // Σ_{c=r+1}^{r+f} c^2, one term per column (c counts the diagonal).
-    const auto sq = [](double m) { return m * (m + 1.0) * (2.0 * m + 1.0) / 6.0; };
-    flops_ += sq(r + f) - sq(r);
+    count_block(nvpiv_, int64_t{degme_} + ndense_);
   }
-  if (ndense_ > 0) {
-    const double f = ndense_;
-    lnz_ += f * (f - 1.0) / 2.0;
-    flops_ += f * (f + 1.0) * (2.0 * f + 1.0) / 6.0;
-  }
+  // The dense rows close the ordering as one dense block.
+  if (ndense_ > 0) count_block(ndense_, 0);
+}
+
+// Adds the columns of a pivot block to the predictions: f columns that share r rows below
+// the block, so the k-th has r + f - k off-diagonal entries.
+void AmdOrdering::count_block(int64_t f, int64_t r) {
+  lnz_ += f * r + f * (f - 1) / 2;
+  // Σ_{c=r+1}^{r+f} c², c counting the diagonal, expanded to avoid cancellation.
+  const double fd = static_cast<double>(f), rd = static_cast<double>(r);
+  flops_ += fd * rd * rd + rd * fd * (fd + 1.0) + fd * (fd + 1.0) * (2.0 * fd + 1.0) / 6.0;
 }
 
 // Postorders the assembly tree and writes the permutation: the elements in postorder,
@@ -708,7 +709,7 @@ void AmdOrdering::order(int32_t* perm) {
 void AmdOrdering::fill_info(AmdInfo* info) const {
   info->n = n_;
   info->dense_rows = ndense_;
-  info->nnz_L_estimate = static_cast<int64_t>(lnz_) + n_;
+  info->nnz_L_estimate = lnz_ + n_;
   info->flops_estimate = flops_;
   info->compressions = compressions_;
 }

@@ -10,9 +10,14 @@ namespace gab {
 Status Cholesky::analyze(const CscMatrix& lower, const AnalyzeOptions& options) {
   analyzed_ = factorized_ = false;
   GAB_RETURN_IF_ERROR(gab::analyze(lower, options, &symbolic_));
-  values_.assign(symbolic_.value_ptr[symbolic_.num_supernodes], 0.0);
-  work_.assign(factor_workspace_doubles(symbolic_), 0.0);
-  iwork_.assign(factor_workspace_ints(symbolic_), 0);
+  const int64_t values = symbolic_.value_ptr[symbolic_.num_supernodes];
+  const int64_t work = factor_workspace_doubles(symbolic_);
+  if (!values_.reserve(values) || !work_.reserve(work) ||
+      !iwork_.reserve(factor_workspace_ints(symbolic_))) {
+    return Status::Error(StatusCode::kOutOfMemory,
+                         "cannot allocate " + std::to_string((values + work) * 8 >> 20) +
+                             " MiB for the factor and its workspace");
+  }
   analyzed_ = true;
   return Status::Ok();
 }
@@ -34,10 +39,10 @@ Status Cholesky::solve(double* b, int32_t nrhs, int32_t ldb) {
     return Status::Error(StatusCode::kInvalidArgument,
                          "solve needs nrhs >= 0 and ldb >= n (" + std::to_string(n) + ")");
   }
-  const size_t need = static_cast<size_t>(n) * nrhs;
-  if (solve_rhs_.size() < need) solve_rhs_.resize(need);
-  const size_t need_work = static_cast<size_t>(symbolic_.max_front_rows) * nrhs;
-  if (solve_work_.size() < need_work) solve_work_.resize(need_work);
+  if (!solve_rhs_.reserve(static_cast<int64_t>(n) * nrhs) ||
+      !solve_work_.reserve(static_cast<int64_t>(symbolic_.max_front_rows) * nrhs)) {
+    return Status::Error(StatusCode::kOutOfMemory, "cannot allocate the solve's workspace");
+  }
   const int32_t* perm = symbolic_.perm.data();
   for (int32_t r = 0; r < nrhs; ++r) {
     const double* src = b + static_cast<int64_t>(r) * ldb;
@@ -45,9 +50,9 @@ Status Cholesky::solve(double* b, int32_t nrhs, int32_t ldb) {
     for (int32_t k = 0; k < n; ++k) dst[k] = src[perm[k]];
   }
   solve_lower_supernodal(symbolic_, values_.data(), solve_rhs_.data(), nrhs, n,
-                         solve_work_.data());
+                         solve_work_.data(), kernels_->level);
   solve_upper_supernodal(symbolic_, values_.data(), solve_rhs_.data(), nrhs, n,
-                         solve_work_.data());
+                         solve_work_.data(), kernels_->level);
   for (int32_t r = 0; r < nrhs; ++r) {
     const double* src = solve_rhs_.data() + static_cast<int64_t>(r) * n;
     double* dst = b + static_cast<int64_t>(r) * ldb;

@@ -30,7 +30,13 @@ int32_t find_root(std::vector<int32_t>* ancestor, int32_t j) {
 }  // namespace
 
 std::vector<int32_t> column_counts(const CscMatrix& lower, const EliminationTree& tree) {
-  const int32_t n = lower.ncols;
+  return column_counts_of_graph(symmetric_graph(lower), nullptr, nullptr, tree);
+}
+
+std::vector<int32_t> column_counts_of_graph(const CscMatrix& graph, const int32_t* perm,
+                                            const int32_t* inverse_perm,
+                                            const EliminationTree& tree) {
+  const int32_t n = graph.ncols;
   const std::vector<int32_t>& parent = tree.parent;
   const std::vector<int32_t>& post = tree.postorder;
   std::vector<int32_t> delta(n, 0), first(n, -1), maxfirst(n, -1), prevleaf(n, -1),
@@ -46,9 +52,10 @@ std::vector<int32_t> column_counts(const CscMatrix& lower, const EliminationTree
   for (int32_t k = 0; k < n; ++k) {
     const int32_t j = post[k];
     if (parent[j] != -1) --delta[parent[j]];  // row subtree j ends at j
-    // Rows i > j with A(i, j) != 0: column j of the lower triangle.
-    for (int32_t p = lower.colptr[j]; p < lower.colptr[j + 1]; ++p) {
-      const int32_t i = lower.rowind[p];
+    // Rows i > j with A(i, j) != 0 (the test below skips i <= j).
+    const int32_t col = perm != nullptr ? perm[j] : j;
+    for (int32_t p = graph.colptr[col]; p < graph.colptr[col + 1]; ++p) {
+      const int32_t i = inverse_perm != nullptr ? inverse_perm[graph.rowind[p]] : graph.rowind[p];
       if (i <= j || first[j] <= maxfirst[i]) continue;  // j is not a new leaf of row i
       maxfirst[i] = first[j];
       const int32_t jprev = prevleaf[i];

@@ -6,11 +6,12 @@
 // OS saves the register state they need (YMM for AVX2, opmask + ZMM for
 // AVX-512); a kernel run without the second check would fault on an OS or
 // hypervisor that disabled the state.
+#include "gab/sparse/dense_kernels.h"
+
 #include <cstdlib>
 #include <cstring>
 
 #include "dense_kernels_internal.h"
-#include "gab/sparse/dense_kernels.h"
 
 #if defined(__x86_64__)
 #include <cpuid.h>
@@ -37,8 +38,8 @@ SimdLevel detect_simd_level() {
   const bool avx = (ecx & (1u << 28)) != 0;
   if (!fma || !osxsave || !avx) return SimdLevel::kScalar;
   const uint64_t xcr0 = read_xcr0();
-  constexpr uint64_t kSseAvxState = 0x6;      // XMM, YMM upper halves
-  constexpr uint64_t kAvx512State = 0xE0;     // opmask, ZMM0-15 upper, ZMM16-31
+  constexpr uint64_t kSseAvxState = 0x6;   // XMM, YMM upper halves
+  constexpr uint64_t kAvx512State = 0xE0;  // opmask, ZMM0-15 upper, ZMM16-31
   if ((xcr0 & kSseAvxState) != kSseAvxState) return SimdLevel::kScalar;
   if (__get_cpuid_count(7, 0, &eax, &ebx, &ecx, &edx) == 0) return SimdLevel::kScalar;
   const bool avx2 = (ebx & (1u << 5)) != 0;
@@ -79,9 +80,12 @@ SimdLevel cpu_simd_level() {
 
 const char* simd_level_name(SimdLevel level) {
   switch (level) {
-    case SimdLevel::kAvx512: return "avx512";
-    case SimdLevel::kAvx2: return "avx2";
-    case SimdLevel::kScalar: break;
+    case SimdLevel::kAvx512:
+      return "avx512";
+    case SimdLevel::kAvx2:
+      return "avx2";
+    case SimdLevel::kScalar:
+      break;
   }
   return "scalar";
 }
@@ -99,9 +103,14 @@ const DenseKernels& dense_kernels(SimdLevel level) {
   level = lower(level, cpu_simd_level());
   const DenseKernels* table = nullptr;
   switch (level) {
-    case SimdLevel::kAvx512: table = dense_detail::avx512_table(); break;
-    case SimdLevel::kAvx2: table = dense_detail::avx2_table(); break;
-    case SimdLevel::kScalar: break;
+    case SimdLevel::kAvx512:
+      table = dense_detail::avx512_table();
+      break;
+    case SimdLevel::kAvx2:
+      table = dense_detail::avx2_table();
+      break;
+    case SimdLevel::kScalar:
+      break;
   }
   // cpu_simd_level() never exceeds what is compiled in, so table is only
   // null for the scalar level.

@@ -39,14 +39,14 @@ GAB_TARGET_AVX2 inline void accumulate(int32_t k, const double* a, ptrdiff_t as,
                                        ptrdiff_t bs, __m256i tail, __m256d (&acc)[MV][NC]) {
   for (int32_t p = 0; p < k; ++p) {
     __m256d av[MV];
-    #pragma GCC unroll 8
+#pragma GCC unroll 8
     for (int v = 0; v + 1 < MV; ++v) av[v] = _mm256_loadu_pd(a + 4 * v);
     av[MV - 1] = kMaskedTail ? _mm256_maskload_pd(a + 4 * (MV - 1), tail)
                              : _mm256_loadu_pd(a + 4 * (MV - 1));
-    #pragma GCC unroll 8
+#pragma GCC unroll 8
     for (int j = 0; j < NC; ++j) {
       const __m256d bj = _mm256_broadcast_sd(b + j);
-      #pragma GCC unroll 8
+#pragma GCC unroll 8
       for (int v = 0; v < MV; ++v) acc[v][j] = _mm256_fmadd_pd(av[v], bj, acc[v][j]);
     }
     a += as;
@@ -62,15 +62,15 @@ GAB_TARGET_AVX2 void tile_fixed(int32_t k, const double* a, ptrdiff_t as, const 
                                 int32_t diag) {
   const int32_t tail_rows = rows - 4 * (MV - 1);
   const __m256i tail = lanes_below(tail_rows);
-  #pragma GCC unroll 8
+#pragma GCC unroll 8
   for (int j = 0; j < NC; ++j) {
     _mm_prefetch(reinterpret_cast<const char*>(c + j * ldc), _MM_HINT_T0);
     _mm_prefetch(reinterpret_cast<const char*>(c + j * ldc + rows - 1), _MM_HINT_T0);
   }
   __m256d acc[MV][NC];
-  #pragma GCC unroll 8
+#pragma GCC unroll 8
   for (int v = 0; v < MV; ++v) {
-    #pragma GCC unroll 8
+#pragma GCC unroll 8
     for (int j = 0; j < NC; ++j) acc[v][j] = _mm256_setzero_pd();
   }
   if (tail_rows == 4) {
@@ -79,10 +79,10 @@ GAB_TARGET_AVX2 void tile_fixed(int32_t k, const double* a, ptrdiff_t as, const 
     accumulate<MV, NC, true>(k, a, as, b, bs, tail, acc);
   }
   const bool masked = tail_rows < 4 || diag < NC - 1;
-  #pragma GCC unroll 8
+#pragma GCC unroll 8
   for (int j = 0; j < NC; ++j) {
     double* cj = c + j * ldc;
-    #pragma GCC unroll 8
+#pragma GCC unroll 8
     for (int v = 0; v < MV; ++v) {
       if (!masked) {
         _mm256_storeu_pd(cj + 4 * v, _mm256_sub_pd(_mm256_loadu_pd(cj + 4 * v), acc[v][j]));
@@ -99,8 +99,7 @@ GAB_TARGET_AVX2 void tile_fixed(int32_t k, const double* a, ptrdiff_t as, const 
 
 // pack_panels with kMr = 12 rows: a panel step is three ymm copies, the
 // partial last panel loads under masks (which also zero its padding).
-GAB_TARGET_AVX2 void pack12(const double* a, ptrdiff_t lda, int32_t rows, int32_t k,
-                            double* dst) {
+GAB_TARGET_AVX2 void pack12(const double* a, ptrdiff_t lda, int32_t rows, int32_t k, double* dst) {
   for (int32_t i = 0; i < rows; i += kMr) {
     const int32_t h = std::min(kMr, rows - i);
     const double* src = a + i;
@@ -132,8 +131,8 @@ using TileFn = void (*)(int32_t, const double*, ptrdiff_t, const double*, ptrdif
 
 template <int MV>
 struct TileRow {
-  static constexpr TileFn fns[kNr] = {&tile_fixed<MV, 1>, &tile_fixed<MV, 2>,
-                                      &tile_fixed<MV, 3>, &tile_fixed<MV, 4>};
+  static constexpr TileFn fns[kNr] = {&tile_fixed<MV, 1>, &tile_fixed<MV, 2>, &tile_fixed<MV, 3>,
+                                      &tile_fixed<MV, 4>};
 };
 
 // B := B L^{-T} for N <= 8 columns on 4 rows at a time (fewer under a mask):
@@ -142,23 +141,23 @@ template <int N>
 GAB_TARGET_AVX2 void trsm_fixed(int32_t m, const double* l, ptrdiff_t ldl, double* b,
                                 ptrdiff_t ldb) {
   double inv[N];
-  #pragma GCC unroll 8
+#pragma GCC unroll 8
   for (int j = 0; j < N; ++j) inv[j] = 1.0 / l[j + j * ldl];
   for (int32_t i = 0; i < m; i += 4) {
     const __m256i mask = lanes_below(std::min<int32_t>(4, m - i));
     double* bi = b + i;
     __m256d x[N];
-    #pragma GCC unroll 8
+#pragma GCC unroll 8
     for (int j = 0; j < N; ++j) x[j] = _mm256_maskload_pd(bi + j * ldb, mask);
-    #pragma GCC unroll 8
+#pragma GCC unroll 8
     for (int j = 0; j < N; ++j) {
       x[j] = _mm256_mul_pd(x[j], _mm256_set1_pd(inv[j]));
-      #pragma GCC unroll 8
+#pragma GCC unroll 8
       for (int c = j + 1; c < N; ++c) {
         x[c] = _mm256_fnmadd_pd(x[j], _mm256_broadcast_sd(l + c + j * ldl), x[c]);
       }
     }
-    #pragma GCC unroll 8
+#pragma GCC unroll 8
     for (int j = 0; j < N; ++j) _mm256_maskstore_pd(bi + j * ldb, mask, x[j]);
   }
 }
@@ -203,14 +202,30 @@ struct Avx2Tile {
   static void trsm_small(int32_t m, int32_t n, const double* l, int32_t ldl, double* b,
                          int32_t ldb) {
     switch (n) {
-      case 1: trsm_fixed<1>(m, l, ldl, b, ldb); break;
-      case 2: trsm_fixed<2>(m, l, ldl, b, ldb); break;
-      case 3: trsm_fixed<3>(m, l, ldl, b, ldb); break;
-      case 4: trsm_fixed<4>(m, l, ldl, b, ldb); break;
-      case 5: trsm_fixed<5>(m, l, ldl, b, ldb); break;
-      case 6: trsm_fixed<6>(m, l, ldl, b, ldb); break;
-      case 7: trsm_fixed<7>(m, l, ldl, b, ldb); break;
-      default: trsm_fixed<8>(m, l, ldl, b, ldb); break;
+      case 1:
+        trsm_fixed<1>(m, l, ldl, b, ldb);
+        break;
+      case 2:
+        trsm_fixed<2>(m, l, ldl, b, ldb);
+        break;
+      case 3:
+        trsm_fixed<3>(m, l, ldl, b, ldb);
+        break;
+      case 4:
+        trsm_fixed<4>(m, l, ldl, b, ldb);
+        break;
+      case 5:
+        trsm_fixed<5>(m, l, ldl, b, ldb);
+        break;
+      case 6:
+        trsm_fixed<6>(m, l, ldl, b, ldb);
+        break;
+      case 7:
+        trsm_fixed<7>(m, l, ldl, b, ldb);
+        break;
+      default:
+        trsm_fixed<8>(m, l, ldl, b, ldb);
+        break;
     }
   }
 };

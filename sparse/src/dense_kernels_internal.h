@@ -52,25 +52,26 @@ inline int32_t recursive_split(int32_t n, int32_t align) {
   return std::min(std::max(half, align), n - 1);
 }
 
-// Unblocked right-looking Cholesky (Golub & Van Loan, Alg. 4.2.2, "gaxpy"
-// order turned right-looking), the base case of the scalar level and the
-// reference every other base case is tested against. Strict upper triangle
-// untouched.
+// Unblocked right-looking Cholesky (Golub & Van Loan, sec. 4.2), the base
+// case of the scalar and AVX2 levels. The trailing update is ordered as in
+// LDL^T, a_ic -= a_ij (a_cj / d_j) on the unscaled column, so the chain from
+// one pivot to the next is a divide, a multiply and a subtract; the square
+// root and the scaling of column j overlap with the following columns.
+// Strict upper triangle untouched.
 inline int32_t potrf_unblocked(int32_t n, double* a, int32_t lda) {
   for (int32_t j = 0; j < n; ++j) {
     double* aj = a + static_cast<ptrdiff_t>(j) * lda;
     const double d = aj[j];
     if (!pivot_ok(d)) return j;
-    const double s = std::sqrt(d);
-    aj[j] = s;
-    const double r = 1.0 / s;
-    for (int32_t i = j + 1; i < n; ++i) aj[i] *= r;
-    // Rank-1 update of the trailing lower triangle, column by column.
+    const double inv_d = 1.0 / d;
     for (int32_t c = j + 1; c < n; ++c) {
       double* ac = a + static_cast<ptrdiff_t>(c) * lda;
-      const double lcj = aj[c];
-      for (int32_t i = c; i < n; ++i) ac[i] -= aj[i] * lcj;
+      const double w = aj[c] * inv_d;
+      for (int32_t i = c; i < n; ++i) ac[i] -= aj[i] * w;
     }
+    const double s = std::sqrt(d);
+    aj[j] = s;
+    for (int32_t i = j + 1; i < n; ++i) aj[i] /= s;
   }
   return -1;
 }
@@ -165,8 +166,8 @@ struct Blocked {
             double* cj = c + ic + static_cast<ptrdiff_t>(jc + jr) * ldc;
             const double* bp = panel_rows(bpack, kc, jr);
             for (int32_t ir = 0; ir < mc; ir += T::kMr) {
-              T::tile(kc, apack + static_cast<ptrdiff_t>(ir) * kc, T::kMr, bp, T::kMr, cj + ir,
-                      ldc, std::min<int32_t>(T::kMr, mc - ir), cols, kNoDiagonal);
+              T::tile(kc, apack + static_cast<ptrdiff_t>(ir) * kc, T::kMr, bp, T::kMr, cj + ir, ldc,
+                      std::min<int32_t>(T::kMr, mc - ir), cols, kNoDiagonal);
             }
           }
         }
@@ -216,8 +217,8 @@ struct Blocked {
               const int32_t in_block = i - ic;
               const int32_t offset = in_block % T::kMr;
               const int32_t rows = std::min<int32_t>(T::kMr - offset, ic + mc - i);
-              T::tile(kc, ablock + static_cast<ptrdiff_t>(in_block - offset) * kc + offset,
-                      T::kMr, bp, T::kMr, cj + i, ldc, rows, cols, i - j);
+              T::tile(kc, ablock + static_cast<ptrdiff_t>(in_block - offset) * kc + offset, T::kMr,
+                      bp, T::kMr, cj + i, ldc, rows, cols, i - j);
               i += rows;
             }
           }
@@ -247,8 +248,8 @@ struct Blocked {
     return second >= 0 ? n1 + second : -1;
   }
 
-  static void trsm_right_lower_trans(int32_t m, int32_t n, const double* l, int32_t ldl,
-                                     double* b, int32_t ldb) {
+  static void trsm_right_lower_trans(int32_t m, int32_t n, const double* l, int32_t ldl, double* b,
+                                     int32_t ldb) {
     if (m <= 0 || n <= 0) return;
     if (n <= T::kSmall) {
       T::trsm_small(m, n, l, ldl, b, ldb);

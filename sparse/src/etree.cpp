@@ -7,18 +7,23 @@
 namespace gab {
 
 EliminationTree elimination_tree(const CscMatrix& lower) {
-  const int32_t n = lower.ncols;
+  return elimination_tree_of_graph(symmetric_graph(lower), nullptr, nullptr);
+}
+
+EliminationTree elimination_tree_of_graph(const CscMatrix& graph, const int32_t* perm,
+                                          const int32_t* inverse_perm) {
+  const int32_t n = graph.ncols;
   EliminationTree tree;
   tree.parent.assign(n, -1);
-  // Liu's algorithm visits rows in order and needs, for row k, the columns
-  // j < k with A(k, j) != 0: that is column k of the upper triangle.
-  const CscMatrix upper = transpose(lower);
   // ancestor[] is the path-compressed "virtual forest": following it from j
   // reaches the current root of j's subtree quickly.
   std::vector<int32_t> ancestor(n, -1);
+  // Liu's algorithm visits the rows k in order and, for each, the columns
+  // i < k with A(k, i) != 0 (both triangles of the graph are at hand).
   for (int32_t k = 0; k < n; ++k) {
-    for (int32_t p = upper.colptr[k]; p < upper.colptr[k + 1]; ++p) {
-      int32_t i = upper.rowind[p];
+    const int32_t col = perm != nullptr ? perm[k] : k;
+    for (int32_t p = graph.colptr[col]; p < graph.colptr[col + 1]; ++p) {
+      int32_t i = inverse_perm != nullptr ? inverse_perm[graph.rowind[p]] : graph.rowind[p];
       // Climb from i to the root of its subtree, pointing each visited node
       // at k (path compression); that root's parent is k.
       while (i != -1 && i < k) {

@@ -6,8 +6,13 @@
 // for the rows below it. A front is assembled from A's entries and the
 // update matrices of its children (extend-add through relative indices),
 // then partially factored: POTRF on the diagonal block, TRSM below it, and
-// one SYRK that forms its own update matrix. Update matrices live on a stack
-// sized by the analysis, so nothing is allocated here. Chosen over
+// one SYRK that forms its own update matrix. Update matrices live on two
+// stacks sharing one buffer sized by the analysis, so nothing is allocated
+// here: even-depth supernodes push at the low end, odd-depth ones at the
+// high end. A parent's children therefore sit on top of the other stack
+// than the one its own update goes to, so the parent's update is formed in
+// place while the children's are read, then the children are popped — no
+// copy (a single stack would need a memmove per front). Chosen over
 // left-looking because each supernode then does one large SYRK instead of
 // one small GEMM per descendant, which keeps the SIMD kernel busy.
 #include <cstring>
@@ -20,8 +25,8 @@ namespace gab {
 int64_t factor_workspace_doubles(const SymbolicFactor& f) { return f.stack_peak; }
 
 int64_t factor_workspace_ints(const SymbolicFactor& f) {
-  // map (n) + relative indices (max rows) + child lists (2 * supernodes)
-  return static_cast<int64_t>(f.n) + f.max_front_rows + 2 * static_cast<int64_t>(f.num_supernodes);
+  // map (n) + relative indices (max rows) + child lists and depths (3 * supernodes)
+  return static_cast<int64_t>(f.n) + f.max_front_rows + 3 * static_cast<int64_t>(f.num_supernodes);
 }
 
 Status factorize_supernodal(const SymbolicFactor& f, const CscMatrix& lower,
@@ -36,39 +41,48 @@ Status factorize_supernodal(const SymbolicFactor& f, const CscMatrix& lower,
   int32_t* rel = map + f.n;                   // child's rows -> positions in the front
   int32_t* child_head = rel + f.max_front_rows;
   int32_t* child_next = child_head + ns;
+  int32_t* depth = child_next + ns;
   for (int32_t s = 0; s < ns; ++s) child_head[s] = -1;
   // Children in increasing order: the order their updates were pushed.
   for (int32_t s = ns - 1; s >= 0; --s) {
     const int32_t parent = f.supernode_parent[s];
+    depth[s] = parent == -1 ? 0 : depth[parent] + 1;
     if (parent == -1) continue;
     child_next[s] = child_head[parent];
     child_head[parent] = s;
   }
   const double* a = lower.values.data();
-  int64_t top = 0;  // stack top, in doubles
+  // Stack 0 occupies work[0, top[0]); stack 1 occupies the last top[1]
+  // doubles of the f.stack_peak-sized buffer.
+  int64_t top[2] = {0, 0};
+  double* const work_end = work + f.stack_peak;
   for (int32_t s = 0; s < ns; ++s) {
     const int32_t k = f.cols(s), m = f.rows(s), p = m - k;
+    const int64_t pp = static_cast<int64_t>(p) * p;
     const int32_t* rows = f.row_ind.data() + f.row_ptr[s];
     double* block = values + f.value_ptr[s];
     std::memset(block, 0, sizeof(double) * static_cast<size_t>(m) * k);
     for (int32_t t = 0; t < m; ++t) map[rows[t]] = t;
     for (int64_t q = f.a_ptr[s]; q < f.a_ptr[s + 1]; ++q) values[f.a_dest[q]] += a[f.a_order[q]];
 
-    // Children's updates sit on top of the stack, in child order.
-    int64_t base = top;
-    for (int32_t c = child_head[s]; c != -1; c = child_next[c]) {
-      const int64_t pc = f.rows(c) - f.cols(c);
-      base -= pc * pc;
-    }
-    double* update = work + top;
+    const int side = depth[s] & 1, child_side = 1 - side;
+    double* update = side == 0 ? work + top[0] : work_end - top[1] - pp;
     for (int32_t j = 0; j < p; ++j) {
       std::memset(update + static_cast<int64_t>(j) * p + j, 0, sizeof(double) * (p - j));
     }
-    int64_t offset = base;
+    // Children's updates are the top of the other stack, pushed in child
+    // order; walk them from the oldest.
+    int64_t children_size = 0;
+    for (int32_t c = child_head[s]; c != -1; c = child_next[c]) {
+      const int64_t pc = f.rows(c) - f.cols(c);
+      children_size += pc * pc;
+    }
+    int64_t offset = top[child_side] - children_size;  // distance from the stack's base
     for (int32_t c = child_head[s]; c != -1; c = child_next[c]) {
       const int32_t kc = f.cols(c), pc = f.rows(c) - kc;
+      const int64_t pcc = static_cast<int64_t>(pc) * pc;
+      const double* cu = child_side == 0 ? work + offset : work_end - offset - pcc;
       const int32_t* crows = f.row_ind.data() + f.row_ptr[c] + kc;
-      const double* cu = work + offset;
       for (int32_t t = 0; t < pc; ++t) rel[t] = map[crows[t]];
       for (int32_t t = 0; t < pc; ++t) {
         const double* src = cu + static_cast<int64_t>(t) * pc;
@@ -81,8 +95,9 @@ Status factorize_supernodal(const SymbolicFactor& f, const CscMatrix& lower,
           for (int32_t u = t; u < pc; ++u) dst[rel[u]] += src[u];
         }
       }
-      offset += static_cast<int64_t>(pc) * pc;
+      offset += pcc;
     }
+    top[child_side] -= children_size;  // pop the children
 
     const int32_t bad = kern.potrf(k, block, m);
     if (bad >= 0) {
@@ -95,11 +110,7 @@ Status factorize_supernodal(const SymbolicFactor& f, const CscMatrix& lower,
     if (p > 0) {
       kern.trsm_right_lower_trans(p, k, block, m, block + k, m);
       kern.syrk_lower_sub(p, k, block + k, m, update, p);
-      // Pop the children, push this update in their place.
-      if (base != top) std::memmove(work + base, update, sizeof(double) * static_cast<size_t>(p) * p);
-      top = base + static_cast<int64_t>(p) * p;
-    } else {
-      top = base;
+      top[side] += pp;  // push this front's update
     }
   }
   return Status::Ok();

@@ -55,7 +55,8 @@ Status fill_reducing_order(const CscMatrix& lower, const AnalyzeOptions& options
 
 // Rows of every supernode: its own columns, then the union of the rows
 // below it from A's columns and from its children's structures, sorted.
-void supernode_rows(const CscMatrix& c, SymbolicFactor* f) {
+// `graph` is A's symmetric pattern in the original numbering.
+void supernode_rows(const CscMatrix& graph, SymbolicFactor* f) {
   const int32_t ns = f->num_supernodes;
   std::vector<int32_t> mark(f->n, -1);
   std::vector<std::vector<int32_t>> children(ns);
@@ -69,8 +70,9 @@ void supernode_rows(const CscMatrix& c, SymbolicFactor* f) {
     const int32_t first = f->first_col[s], last = f->first_col[s + 1] - 1;
     below.clear();
     for (int32_t j = first; j <= last; ++j) {
-      for (int32_t p = c.colptr[j]; p < c.colptr[j + 1]; ++p) {
-        const int32_t i = c.rowind[p];
+      const int32_t col = f->perm[j];
+      for (int32_t p = graph.colptr[col]; p < graph.colptr[col + 1]; ++p) {
+        const int32_t i = f->inverse_perm[graph.rowind[p]];
         if (i > last && mark[i] != s) {
           mark[i] = s;
           below.push_back(i);
@@ -144,16 +146,28 @@ Status analyze(const CscMatrix& lower, const AnalyzeOptions& options, SymbolicFa
   std::vector<int32_t> order;
   GAB_RETURN_IF_ERROR(fill_reducing_order(lower, options, &order));
 
-  // Renumber by a postorder of the etree so that subtrees, and therefore
-  // supernodes, are contiguous ranges of columns.
-  CscMatrix c = permute_symmetric_lower(lower, order);
-  const EliminationTree first_tree = elimination_tree(c);
+  // Everything below reads the pattern through the permutation; no
+  // permuted copy of A is formed. Renumber by a postorder of the etree so
+  // that subtrees, and therefore supernodes, are contiguous ranges of
+  // columns; relabelling the tree by its own postorder keeps it a tree.
+  const CscMatrix graph = symmetric_graph(lower);
+  const std::vector<int32_t> order_inverse = invert_permutation(order);
+  const EliminationTree first_tree =
+      elimination_tree_of_graph(graph, order.data(), order_inverse.data());
+  const std::vector<int32_t>& post = first_tree.postorder;
+  const std::vector<int32_t> post_inverse = invert_permutation(post);
   f.perm.resize(f.n);
-  for (int32_t k = 0; k < f.n; ++k) f.perm[k] = order[first_tree.postorder[k]];
+  f.etree.parent.resize(f.n);
+  f.etree.postorder.resize(f.n);
+  for (int32_t k = 0; k < f.n; ++k) {
+    f.perm[k] = order[post[k]];
+    const int32_t parent = first_tree.parent[post[k]];
+    f.etree.parent[k] = parent == -1 ? -1 : post_inverse[parent];
+    f.etree.postorder[k] = k;
+  }
   f.inverse_perm = invert_permutation(f.perm);
-  c = permute_symmetric_lower(lower, f.perm);
-  f.etree = elimination_tree(c);
-  f.column_counts = column_counts(c, f.etree);
+  f.column_counts =
+      column_counts_of_graph(graph, f.perm.data(), f.inverse_perm.data(), f.etree);
   for (int32_t k = 0; k < f.n; ++k) {
     f.nnz_L += f.column_counts[k];
     f.flops += static_cast<double>(f.column_counts[k]) * f.column_counts[k];
@@ -179,7 +193,7 @@ Status analyze(const CscMatrix& lower, const AnalyzeOptions& options, SymbolicFa
     const int32_t p = f.etree.parent[f.first_col[s + 1] - 1];
     f.supernode_parent[s] = p == -1 ? -1 : f.supernode_of[p];
   }
-  supernode_rows(c, &f);
+  supernode_rows(graph, &f);
 
   f.value_ptr.assign(ns + 1, 0);
   for (int32_t s = 0; s < ns; ++s) {
@@ -188,15 +202,23 @@ Status analyze(const CscMatrix& lower, const AnalyzeOptions& options, SymbolicFa
     f.stored_L += k * m - k * (k - 1) / 2;
     f.max_front_rows = std::max(f.max_front_rows, static_cast<int32_t>(m));
   }
-  // Multifrontal stack: children's update matrices wait on the stack until
-  // their parent is assembled; the parent's own update is allocated while
-  // its children are still there.
-  int64_t stack = 0;
-  std::vector<int64_t> pending(ns, 0);  // update doubles of s's children on the stack
+  // Multifrontal update stacks: an update matrix waits until its parent is
+  // assembled. Updates of even-depth supernodes grow from one end of the
+  // buffer, odd-depth ones from the other, so a parent's update is written
+  // while its children's are read and nothing is ever moved (see
+  // supernodal_factor.cpp). Simulate both ends to size the buffer.
+  std::vector<int32_t> depth(ns, 0);
+  for (int32_t s = ns - 1; s >= 0; --s) {
+    if (f.supernode_parent[s] != -1) depth[s] = depth[f.supernode_parent[s]] + 1;
+  }
+  int64_t top[2] = {0, 0};
+  std::vector<int64_t> pending(ns, 0);  // update doubles of s's children
   for (int32_t s = 0; s < ns; ++s) {
     const int64_t p = f.rows(s) - f.cols(s);
-    f.stack_peak = std::max(f.stack_peak, stack + p * p);
-    stack += p * p - pending[s];
+    const int side = depth[s] & 1;
+    top[side] += p * p;
+    f.stack_peak = std::max(f.stack_peak, top[0] + top[1]);
+    top[1 - side] -= pending[s];
     if (f.supernode_parent[s] != -1) pending[f.supernode_parent[s]] += p * p;
   }
   assembly_map(lower, &f);

@@ -34,7 +34,7 @@ double factor_difference(const Cholesky& chol, const CscMatrix& lower) {
   for (int32_t j = 0; j < n; ++j) {
     for (int32_t p = oracle.colptr[j]; p < oracle.colptr[j + 1]; ++p) col[oracle.rowind[p]] = oracle.values[p];
     const int32_t s = f.supernode_of[j], m = f.rows(s);
-    const double* block = chol.values().data() + f.value_ptr[s] + static_cast<int64_t>(j - f.first_col[s]) * m;
+    const double* block = chol.values() + f.value_ptr[s] + static_cast<int64_t>(j - f.first_col[s]) * m;
     for (int32_t t = j - f.first_col[s]; t < m; ++t) {
       const int32_t i = f.row_ind[f.row_ptr[s] + t];
       diff = std::max(diff, std::abs(block[t] - col[i]));

@@ -26,7 +26,9 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr double kCanary = -7.0e77;
 
 // A column-major rows x cols matrix inside a buffer with leading dimension
-// ld > rows; everything outside the block starts as kCanary.
+// ld >= rows; the padding rows start as kCanary. The buffer ends right after
+// the last column's last row, the least a BLAS-style caller passes, so any
+// access past it is an error the sanitizer build reports.
 struct Padded {
   int32_t rows = 0;
   int32_t cols = 0;
@@ -34,8 +36,7 @@ struct Padded {
   std::vector<double> data;
 
   Padded(int32_t r, int32_t c, int32_t extra_ld) : rows(r), cols(c), ld(std::max(1, r + extra_ld)) {
-    // One extra column's worth at the end catches writes past the last one.
-    data.assign(static_cast<size_t>(ld) * (c + 1), kCanary);
+    data.assign(c == 0 ? 0 : static_cast<size_t>(ld) * (c - 1) + r, kCanary);
   }
   double& at(int32_t i, int32_t j) { return data[i + static_cast<size_t>(j) * ld]; }
   const double& at(int32_t i, int32_t j) const { return data[i + static_cast<size_t>(j) * ld]; }
@@ -98,7 +99,7 @@ void check_gemm(const DenseKernels& kern, int32_t m, int32_t n, int32_t k, int32
     }
     for (int32_t p = 0; p < k; ++p) {
       const double bjp = b.at(j, p);
-      const double* ap = &a.at(0, p);
+      const double* ap = a.ptr() + static_cast<size_t>(p) * a.ld;
       for (int32_t i = 0; i < m; ++i) {
         ref[i] -= ap[i] * bjp;
         mag[i] += std::abs(ap[i] * bjp);
@@ -134,7 +135,7 @@ void check_syrk(const DenseKernels& kern, int32_t n, int32_t k, int32_t salt) {
     }
     for (int32_t p = 0; p < k; ++p) {
       const double ajp = a.at(j, p);
-      const double* ap = &a.at(0, p);
+      const double* ap = a.ptr() + static_cast<size_t>(p) * a.ld;
       for (int32_t i = j; i < n; ++i) {
         ref[i] -= ap[i] * ajp;
         mag[i] += std::abs(ap[i] * ajp);
@@ -319,9 +320,9 @@ TEST_P(DenseKernelLevels, SyrkEdgeShapes) {
 }
 
 TEST_P(DenseKernelLevels, SyrkPackedAndBlockedShapes) {
-  check_syrk(k(), 400, 200, 1);   // packed, several row blocks
-  check_syrk(k(), 333, 701, 2);   // several inner-dimension blocks
-  check_syrk(k(), 1601, 45, 3);   // several column blocks
+  check_syrk(k(), 400, 200, 1);  // packed, several row blocks
+  check_syrk(k(), 333, 701, 2);  // several inner-dimension blocks
+  check_syrk(k(), 1601, 45, 3);  // several column blocks
   check_syrk(k(), 217, 317, 4);
 }
 
@@ -360,7 +361,8 @@ TEST_P(DenseKernelLevels, PotrfReportsFirstFailingColumn) {
       // Columns before j hold their factor.
       double worst = 0.0;
       for (int32_t c = 0; c < j; ++c) {
-        for (int32_t i = c; i < n; ++i) worst = std::max(worst, std::abs(bad.at(i, c) - l.at(i, c)));
+        for (int32_t i = c; i < n; ++i)
+          worst = std::max(worst, std::abs(bad.at(i, c) - l.at(i, c)));
       }
       EXPECT_LE(worst, 1e-10 * n) << "n=" << n << " j=" << j;
       int64_t upper_changed = 0;

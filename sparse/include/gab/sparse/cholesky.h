@@ -14,6 +14,7 @@
 
 #include "gab/sparse/csc.h"
 #include "gab/sparse/dense_kernels.h"
+#include "gab/sparse/large_buffer.h"
 #include "gab/sparse/status.h"
 #include "gab/sparse/symbolic.h"
 
@@ -21,32 +22,35 @@ namespace gab {
 
 class Cholesky {
  public:
-  // Ordering and symbolic analysis of the lower triangle's pattern.
+  // Ordering and symbolic analysis of the lower triangle's pattern; also
+  // reserves the factor's storage (kOutOfMemory when it cannot be had).
   Status analyze(const CscMatrix& lower, const AnalyzeOptions& options = AnalyzeOptions());
   // Numeric factorization of a matrix with the analyzed pattern. Uses the
   // dense kernels of the best SIMD level unless set_kernels() chose others.
   Status factorize(const CscMatrix& lower);
   // Solves A X = B in place: b is n x nrhs column-major, leading dimension
   // ldb >= n, in the original numbering. Requires a successful factorize().
+  // The first call with a given nrhs reserves nrhs * n doubles of workspace.
   Status solve(double* b, int32_t nrhs, int32_t ldb);
 
   void set_kernels(const DenseKernels& kernels) { kernels_ = &kernels; }
   bool factorized() const { return factorized_; }
   const SymbolicFactor& symbolic() const { return symbolic_; }
-  // The supernode blocks (see SymbolicFactor): for inspection and updates.
-  const std::vector<double>& values() const { return values_; }
-  std::vector<double>& mutable_values() { return values_; }
+  // The supernode blocks (see SymbolicFactor), symbolic().value_ptr.back()
+  // doubles: for inspection and in-place updates.
+  const double* values() const { return values_.data(); }
+  double* mutable_values() { return values_.data(); }
 
  private:
   SymbolicFactor symbolic_;
   const DenseKernels* kernels_ = nullptr;
   bool analyzed_ = false;
   bool factorized_ = false;
-  std::vector<double> values_;
-  std::vector<double> work_;       // multifrontal stack
-  std::vector<int32_t> iwork_;
-  std::vector<double> solve_rhs_;  // permuted right-hand sides
-  std::vector<double> solve_work_;
+  LargeBuffer<double> values_;
+  LargeBuffer<double> work_;        // multifrontal update stacks
+  LargeBuffer<int32_t> iwork_;
+  LargeBuffer<double> solve_rhs_;   // permuted right-hand sides
+  LargeBuffer<double> solve_work_;
 };
 
 }  // namespace gab

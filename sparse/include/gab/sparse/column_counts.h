@@ -16,4 +16,11 @@ namespace gab {
 // O(nnz * alpha(n)) time, O(n) workspace.
 std::vector<int32_t> column_counts(const CscMatrix& lower, const EliminationTree& tree);
 
+// Column counts of P G P^T for a symmetric pattern `graph` holding both
+// triangles, perm[k] the original index of pivot k (nullptr: identity), and
+// the elimination tree of P G P^T. Same costs, no permuted copy formed.
+std::vector<int32_t> column_counts_of_graph(const CscMatrix& graph, const int32_t* perm,
+                                            const int32_t* inverse_perm,
+                                            const EliminationTree& tree);
+
 }  // namespace gab

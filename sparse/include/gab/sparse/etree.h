@@ -25,8 +25,15 @@ struct EliminationTree {
 
 // Elimination tree of the symmetric matrix whose lower triangle is `lower`
 // (pattern only). Liu's algorithm with path compression (Davis, "Direct
-// Methods", sec. 4.1): O(nnz * alpha(n)) time, O(n) workspace.
+// Methods", sec. 4.1): O(nnz * alpha(n)) time, O(n + nnz) workspace.
 EliminationTree elimination_tree(const CscMatrix& lower);
+
+// Elimination tree of P G P^T, where `graph` holds both triangles of a
+// symmetric pattern (see symmetric_graph) and perm[k] is the original index
+// of pivot k (nullptr: identity), without forming the permuted matrix.
+// O(nnz * alpha(n)) time, O(n) workspace.
+EliminationTree elimination_tree_of_graph(const CscMatrix& graph, const int32_t* perm,
+                                          const int32_t* inverse_perm);
 
 // A postorder of the forest given by parent[] (children visited in
 // increasing index order, so a tree that is already postordered maps to the

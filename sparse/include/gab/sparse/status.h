@@ -15,6 +15,7 @@ enum class StatusCode {
   kParseError,          // a file's content is malformed (message names the line)
   kNotPositiveDefinite, // Cholesky met a non-positive pivot (message names the column)
   kOverflow,            // a count exceeds the int32 index limit
+  kOutOfMemory,         // storage for the factor or a workspace could not be had
 };
 
 class Status {

@@ -27,13 +27,14 @@ Status factorize_supernodal(const SymbolicFactor& f, const CscMatrix& lower,
                             const DenseKernels& k, double* values, double* work,
                             int32_t* iwork);
 
-// Solves L Y = B then L^T X = Y in place, in the permuted numbering: x is
-// n x nrhs column-major with leading dimension ldx. `work` holds
-// f.max_front_rows * nrhs doubles. Time O(nnz(L) * nrhs), one pass over L
-// per direction for all right-hand sides together.
+// Solves L Y = B (lower) or L^T X = Y (upper) in place, in the permuted
+// numbering: x is n x nrhs column-major with leading dimension ldx. `work`
+// holds f.max_front_rows * nrhs doubles. `level` picks the SIMD kernels
+// (clamped to the CPU's). Time O(nnz(L) * nrhs), one pass over L per
+// direction for all right-hand sides together.
 void solve_lower_supernodal(const SymbolicFactor& f, const double* values, double* x,
-                            int32_t nrhs, int32_t ldx, double* work);
+                            int32_t nrhs, int32_t ldx, double* work, SimdLevel level);
 void solve_upper_supernodal(const SymbolicFactor& f, const double* values, double* x,
-                            int32_t nrhs, int32_t ldx, double* work);
+                            int32_t nrhs, int32_t ldx, double* work, SimdLevel level);
 
 }  // namespace gab

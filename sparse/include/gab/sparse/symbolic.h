@@ -61,7 +61,7 @@ struct SymbolicFactor {
   int64_t nnz_L = 0;          // true nonzeros of L incl. diagonal (sum of column counts)
   int64_t stored_L = 0;       // entries stored in supernode blocks (incl. explicit zeros)
   double flops = 0.0;         // sum over columns of column_count^2 (true nonzeros)
-  int64_t stack_peak = 0;     // doubles of multifrontal update stack needed
+  int64_t stack_peak = 0;     // doubles of multifrontal update stacks needed
   int32_t max_front_rows = 0; // largest rows(s)
 
   int32_t rows(int32_t s) const { return static_cast<int32_t>(row_ptr[s + 1] - row_ptr[s]); }
