@@ -4,12 +4,14 @@
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/normal_matrix.h"
 #include "gab/mesh/off_io.h"
+#include "gab/mesh/subdivide.h"
 #include "gab/sparse/matrix_market.h"
 
 namespace gab {
 namespace cli {
 
-Status load_benchmark_system(const std::string& path, int32_t k0, BenchmarkSystem* out) {
+Status load_benchmark_system(const std::string& path, int32_t k0, BenchmarkSystem* out,
+                             int subdivide) {
   const std::string ext = extension(path);
   BenchmarkSystem sys;
   if (ext == "mtx") {
@@ -25,6 +27,8 @@ Status load_benchmark_system(const std::string& path, int32_t k0, BenchmarkSyste
   } else if (ext == "off") {
     Mesh mesh;
     GAB_RETURN_IF_ERROR(read_off(path, &mesh));
+    if (subdivide > 0) mesh = subdivide_midpoint(mesh, subdivide);
+    sys.faces = mesh.num_triangles();
     const EdgeGraph graph = build_edge_graph(mesh);
     sys.anchors = benchmark_anchors(graph, k0);
     GAB_RETURN_IF_ERROR(assemble_normal_matrix(graph, sys.anchors, 1.0, &sys.lower));

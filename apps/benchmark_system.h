@@ -18,10 +18,13 @@ struct BenchmarkSystem {
   std::vector<double> rhs;    // n x 3 column-major
   std::vector<int32_t> anchors;  // mesh input only: initial anchors
   bool from_mesh = false;
+  int32_t faces = 0;             // mesh input only
 };
 
-// k0: number of initial anchors for a mesh (ignored for .mtx).
-Status load_benchmark_system(const std::string& path, int32_t k0, BenchmarkSystem* out);
+// k0: number of initial anchors for a mesh; subdivide: levels of 1:4
+// midpoint subdivision applied to a mesh first (both ignored for .mtx).
+Status load_benchmark_system(const std::string& path, int32_t k0, BenchmarkSystem* out,
+                             int subdivide = 0);
 
 }  // namespace cli
 }  // namespace gab

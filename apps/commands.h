@@ -5,6 +5,7 @@ namespace gab {
 namespace cli {
 
 int run_factor(int argc, char** argv);
+int run_study(int argc, char** argv);
 
 }  // namespace cli
 }  // namespace gab

@@ -17,6 +17,10 @@ const char* kHelp =
     "  factor IN [--ordering amd|natural] [--anchors K] [--repeat R] [--json]\n"
     "      order, analyze, factor and solve the least-squares matrix of a mesh (.off)\n"
     "      or a Matrix Market file (.mtx); report sizes and median phase times\n"
+    "  study IN... [--ordering amd|natural] [--updates U] [--batch B] [--anchors K]\n"
+    "        [--subdivide K] [--csv F] [--svg F] [--json]\n"
+    "      add U anchors to the factor one (or B) at a time by Givens rotations along the\n"
+    "      elimination tree; report path lengths, entries touched, times, drift\n"
     "\n"
     "--json prints one JSON object on stdout; messages go to stderr.\n";
 
@@ -33,6 +37,7 @@ int main(int argc, char** argv) {
     return gab::cli::kExitOk;
   }
   if (!std::strcmp(command, "factor")) return gab::cli::run_factor(argc - 2, argv + 2);
+  if (!std::strcmp(command, "study")) return gab::cli::run_study(argc - 2, argv + 2);
   std::fprintf(stderr, "gab: unknown command '%s' (try 'gab help')\n", command);
   return gab::cli::kExitUsage;
 }

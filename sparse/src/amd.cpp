@@ -1,11 +1,12 @@
-// Approximate minimum degree ordering, written from the published descriptions:
+// Approximate minimum degree ordering, written (clean-room) from the published
+// descriptions:
 //
 //   [ADD96] P. R. Amestoy, T. A. Davis, I. S. Duff, "An approximate minimum degree
 //           ordering algorithm", SIAM J. Matrix Anal. Appl. 17(4):886-905, 1996.
 //   [Dav06] T. A. Davis, "Direct Methods for Sparse Linear Systems", SIAM 2006, sec. 7.1.
 //
 // The quotient graph ([ADD96] sec. 2). After some pivots have been eliminated the graph
-// holds *variables* (uneliminated; each is a supervariable standing for |i| = nd_[i].nv
+// holds *variables* (uneliminated; each is a supervariable standing for |i| = nv(i)
 // indistinguishable rows) and *elements* (eliminated pivots; element e stands for the
 // clique on its variable list L_e). Variable i keeps two lists,
 //
@@ -16,33 +17,34 @@
 //
 //     L_p = (A_p ∪ ∪_{e∈E_p} L_e) \ {p},                                          (1)
 //
-// and every e ∈ E_p is absorbed into p (its clique is contained in L_p's).
+// and every e ∈ E_p is absorbed into p (its clique is contained in L_p's). |L_p| is the
+// exact column count of p in the factor.
 //
 // Approximate external degree ([ADD96] sec. 3). For i ∈ L_p, with k variables eliminated,
 //
 //     d_i ≈ min( n - k - |i|,
 //                d_i^old + |L_p \ i|,
-//                |A_i \ i| + |L_p \ i| + Σ_{e ∈ E_i \ {p}} |L_e \ L_p| ).               (2)
+//                |A_i \ i| + |L_p \ i| + Σ_{e ∈ E_i \ {p}} |L_e \ L_p| ),            (2)
 //
-// The set differences |L_e \ L_p| for every element touching L_p cost one pass over the
-// E_i of i ∈ L_p: starting from w(e) = |L_e|, subtract |i| for each i ∈ L_p ∩ L_e.
-// An element with |L_e \ L_p| = 0 is a subset of L_p and is absorbed too ("aggressive
-// absorption"). A variable whose only neighbour left is p is eliminated with it ("mass
-// elimination"); variables with identical lists (found by a hash of the lists, then
-// compared) are merged into one supervariable. The bound (2) uses only weighted sizes, so
-// the degree of every i ∈ L_p is updated in time proportional to the lists it touches.
+// an upper bound on the true external degree. The set differences |L_e \ L_p| for every
+// element touching L_p cost one pass over the E_i of i ∈ L_p: starting from w(e) = |L_e|,
+// subtract |i| for each i ∈ L_p ∩ L_e. An element with |L_e \ L_p| = 0 is a subset of
+// L_p and is absorbed too ("aggressive absorption"). A variable whose only neighbour left
+// is p is eliminated with it ("mass elimination"); variables with identical lists (found
+// by a hash of the lists, then compared) are merged into one supervariable. The bound (2)
+// uses only weighted sizes, so each i ∈ L_p costs time proportional to its own lists.
 //
 // Rows with more than max(16, dense·sqrt(n)) entries are removed first and ordered last
 // (they would make every degree update expensive and are filled in anyway). Variables are
 // finally renumbered by a postorder of the assembly tree (element e's parent is the element
-// that absorbed it), with each element's supervariable kept contiguous: an equivalent
-// ordering with the same fill whose supernodes are consecutive columns.
+// that absorbed it), each element's block of variables kept contiguous: an equivalent
+// ordering (same factor pattern), whose supernodes are runs of consecutive columns.
 //
 // Storage. All lists live in one int32 array `iw` with elbow room: variable i's list is
-// iw[pe[i] .. pe[i]+nd_[i].len), its first elen[i] entries are E_i, the rest A_i; element e's
-// list is L_e. New elements are appended at `pfree`; when the array is full, the live lists
-// are slid to the front (garbage collection). All workspace is allocated once, before the
-// elimination starts.
+// iw[pe(i) .. pe(i) + len(i)), its first elen(i) entries are E_i, the rest A_i; element
+// e's list is L_e. New elements are appended at `pfree`; when the array is full, the live
+// lists are slid to the front (garbage collection). All workspace is allocated once,
+// before the elimination starts; the elimination itself allocates nothing.
 
 #include "gab/sparse/amd.h"
 
@@ -58,16 +60,17 @@ namespace {
 
 constexpr int32_t kNone = -1;
 
-// elen[] of a node that is no longer a variable.
+// Node::elen of a node that is no longer a variable.
 constexpr int32_t kElement = -1;  // a pivot: eliminated, stands for an element
 constexpr int32_t kMerged = -2;   // merged into another supervariable (link: its principal)
-constexpr int32_t kMassElim = -3; // eliminated together with pivot link[i] (mass elimination)
+constexpr int32_t kMassElim = -3; // eliminated with the pivot link[i] (mass elimination)
 constexpr int32_t kDense = -4;    // dense row, postponed to the end
 
 class AmdOrdering {
  public:
-  // Everything the elimination reads or writes about one node, in one cache line's half:
-  // each visit to a node touches most of these fields together.
+  // Everything the elimination keeps per node, 32 bytes: a visit to a node touches most
+  // of these fields together, so one cache miss brings them all (rather than one miss
+  // per array with a structure-of-arrays layout).
   struct Node {
     int32_t pe;      // start of the node's list in iw_, kNone when it has none
     int32_t len;     // length of the list
@@ -648,7 +651,8 @@ void AmdOrdering::order(int32_t* perm) {
       nd_[big].next = kNone;
     }
   }
-  // Depth-first postorder; `start` receives each element's first position.
+  // Depth-first postorder. The elimination is over, so the degree-list and tag fields are
+  // free: nd_[e].w becomes the first position of e's block.
   int32_t k = 0;
   for (int32_t root = 0; root < n; ++root) {
     if (nd_[root].elen != kElement || link_[root] != kNone) continue;
@@ -682,7 +686,9 @@ void AmdOrdering::order(int32_t* perm) {
   // Within an element's block the pivot supervariable comes first, then the variables
   // mass-eliminated with it: exactly the elimination sequence, so the block is a clique
   // (one supernode) and the predicted nnz(L) is the ordering's. (Any other order within
-  // the block has at most that fill.)
+  // the block has at most that fill.) Cursors: nd_[e].w for the pivot supervariable,
+  // nd_[e].degree for the mass-eliminated ones, which start nv(e) - #mass-eliminated
+  // positions into the block.
   for (int32_t e = 0; e < n; ++e) nd_[e].degree = 0;
   for (int32_t v = 0; v < n; ++v) {
     if (nd_[v].elen == kDense) continue;

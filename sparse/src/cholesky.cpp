@@ -19,6 +19,7 @@ Status Cholesky::analyze(const CscMatrix& lower, const AnalyzeOptions& options) 
                              " MiB for the factor and its workspace");
   }
   analyzed_ = true;
+  update_ready_ = false;
   return Status::Ok();
 }
 
@@ -59,6 +60,40 @@ Status Cholesky::solve(double* b, int32_t nrhs, int32_t ldb) {
     for (int32_t k = 0; k < n; ++k) dst[perm[k]] = src[k];
   }
   return Status::Ok();
+}
+
+Status Cholesky::prepare_update() {
+  if (!factorized_) return Status::Error(StatusCode::kInvalidArgument, "update before factorize");
+  if (update_ready_) return Status::Ok();
+  if (!update_work_.reserve(update_workspace_doubles(symbolic_)) ||
+      !update_iwork_.reserve(update_workspace_ints(symbolic_))) {
+    return Status::Error(StatusCode::kOutOfMemory, "cannot allocate the updater's workspace");
+  }
+  // The updates keep these invariants (see update.h).
+  const int64_t zeros = update_workspace_zero_prefix(symbolic_);
+  for (int64_t i = 0; i < zeros; ++i) update_work_.data()[i] = 0.0;
+  const int64_t ints = update_workspace_ints(symbolic_);
+  for (int64_t i = 0; i < ints; ++i) update_iwork_.data()[i] = -1;
+  update_ready_ = true;
+  return Status::Ok();
+}
+
+Status Cholesky::add_anchor(int32_t j, double weight, UpdateStats* stats) {
+  GAB_RETURN_IF_ERROR(prepare_update());
+  return add_anchor_supernodal(symbolic_, values_.data(), j, weight, kernels_->level,
+                               update_work_.data(), stats);
+}
+
+Status Cholesky::add_anchors(const int32_t* j, int32_t count, double weight, UpdateStats* stats) {
+  GAB_RETURN_IF_ERROR(prepare_update());
+  return add_anchors_supernodal(symbolic_, values_.data(), j, count, weight, kernels_->level,
+                                update_work_.data(), update_iwork_.data(), stats);
+}
+
+Status Cholesky::remove_anchor(int32_t j, double weight, UpdateStats* stats) {
+  GAB_RETURN_IF_ERROR(prepare_update());
+  return remove_anchor_supernodal(symbolic_, values_.data(), j, weight, kernels_->level,
+                                  update_work_.data(), update_iwork_.data(), stats);
 }
 
 }  // namespace gab

@@ -127,10 +127,8 @@ namespace dense_detail {
 double* packing_workspace(size_t doubles) {
   thread_local Workspace ws;
   if (doubles <= ws.size) return ws.data;
-  // Grow geometrically so a run of slowly growing fronts reallocates only a
-  // few times; whole cache lines so aligned_alloc's size rule holds.
-  size_t want = std::max(doubles, ws.size + ws.size / 2);
-  want = (want + 7) / 8 * 8;
+  // Whole cache lines, so aligned_alloc's size rule holds.
+  const size_t want = (doubles + 7) / 8 * 8;
   void* fresh = std::aligned_alloc(64, want * sizeof(double));
   if (fresh == nullptr) return nullptr;  // the caller runs unpacked
   std::free(ws.data);

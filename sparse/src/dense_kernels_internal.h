@@ -33,9 +33,10 @@ const DenseKernels* avx512_table();
 
 // The calling thread's packing workspace, at least `doubles` long and 64-byte
 // aligned, or nullptr if it cannot be had (the caller then takes the unpacked
-// path). It only ever grows, so after the first large call of a thread the
-// kernels allocate nothing; it is freed at thread exit. One buffer serves all
-// levels: no kernel holds it while calling another that packs.
+// path). Callers always ask for their level's fixed maximum, so a thread
+// allocates once and the kernels allocate nothing afterwards; it is freed at
+// thread exit. One buffer serves all levels: no kernel holds it while
+// calling another that packs.
 double* packing_workspace(size_t doubles);
 
 // Passed as the tile's diagonal offset when no entry is to be masked.
@@ -145,7 +146,7 @@ struct Blocked {
                           const double* b, int32_t ldb, double* c, int32_t ldc) {
     if (m <= 0 || n <= 0 || k <= 0) return;
     double* ws = nullptr;
-    if (!T::direct(m, n, k)) ws = packing_workspace(workspace_doubles(n, k));
+    if (!T::direct(m, n, k)) ws = packing_workspace(workspace_doubles());
     if (ws == nullptr) {
       gemm_direct(m, n, k, a, lda, b, ldb, c, ldc);
       return;
@@ -179,7 +180,7 @@ struct Blocked {
                              int32_t ldc) {
     if (n <= 0 || k <= 0) return;
     double* ws = nullptr;
-    if (!T::direct(n, n, k)) ws = packing_workspace(workspace_doubles(n, k));
+    if (!T::direct(n, n, k)) ws = packing_workspace(workspace_doubles());
     if (ws == nullptr) {
       syrk_direct(n, k, a, lda, c, ldc);
       return;
@@ -277,13 +278,11 @@ struct Blocked {
     return packed + static_cast<ptrdiff_t>(row - offset) * kc + offset;
   }
 
-  static size_t workspace_doubles(int32_t n, int32_t k) {
-    const size_t kc = static_cast<size_t>(std::min<int32_t>(T::kKc, k));
-    const size_t mr = static_cast<size_t>(T::kMr);
-    const size_t nc = (static_cast<size_t>(std::min<int32_t>(T::kNc, n)) + mr - 1) / mr * mr;
-    // The A block sits first at a fixed size so the B block's place does
-    // not depend on m.
-    return static_cast<size_t>(T::kMc) * T::kKc + nc * kc;
+  // The whole workspace a packed call may use, requested in full every time
+  // so a thread allocates it once, on its first packed call, and never
+  // regrows it: kMc x kKc doubles of A, then kNc x kKc of B^T.
+  static constexpr size_t workspace_doubles() {
+    return static_cast<size_t>(T::kMc + T::kNc) * static_cast<size_t>(T::kKc);
   }
 
   // Unpacked: tiles read A and B^T straight from the caller's matrices. For

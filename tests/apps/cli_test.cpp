@@ -108,3 +108,46 @@ TEST(CliTest, UnsupportedExtensionIsBadInput) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CliStudyTest, JsonCsvAndSvg) {
+  const std::string path = write_temp("octa_study.off", kOctahedron);
+  const std::string csv = ::testing::TempDir() + "/" + std::to_string(getpid()) + "_study.csv";
+  const std::string svg = ::testing::TempDir() + "/" + std::to_string(getpid()) + "_study.svg";
+  const CommandResult r = run_gab("study " + path + " --anchors 1 --updates 4 --json --csv " + csv + " --svg " + svg);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* key : {"\"n\": 6", "\"nnz_L\":", "\"updates\": 4", "\"path_len_avg\":", "\"path_len_max\":",
+                          "\"touched_avg\":", "\"touched_max\":", "\"update_s_avg\":", "\"update_s_median\":",
+                          "\"update_s_max\":", "\"factor_s\":", "\"drift\":"}) {
+    EXPECT_NE(r.out.find(key), std::string::npos) << key << " missing in " << r.out;
+  }
+  std::ifstream c(csv);
+  std::string header, line;
+  std::getline(c, header);
+  EXPECT_EQ(header, "input,update,vertex,anchors,path_columns,path_supernodes,touched,flops,seconds");
+  int rows = 0;
+  while (std::getline(c, line)) ++rows;
+  EXPECT_EQ(rows, 4);
+  std::ifstream s(svg);
+  std::string first;
+  std::getline(s, first);
+  EXPECT_EQ(first.rfind("<svg", 0), 0u);
+}
+
+TEST(CliStudyTest, UpdatesStopWhenEveryVertexIsAnchored) {
+  const std::string path = write_temp("octa_all.off", kOctahedron);
+  const CommandResult r = run_gab("study " + path + " --anchors 2 --updates 100 --batch 3 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"updates\": 4"), std::string::npos) << r.out;  // 6 vertices, 2 anchored
+}
+
+TEST(CliStudyTest, BadUsage) {
+  EXPECT_EQ(run_gab("study").exit_code, 2);
+  EXPECT_EQ(run_gab("study a.off --batch 0").exit_code, 2);
+  EXPECT_EQ(run_gab("study a.off --ordering metis").exit_code, 2);
+  const CommandResult r = run_gab("study /nonexistent.off");
+  EXPECT_EQ(r.exit_code, 1);
+}
+
+}  // namespace

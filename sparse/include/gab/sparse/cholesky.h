@@ -17,6 +17,7 @@
 #include "gab/sparse/large_buffer.h"
 #include "gab/sparse/status.h"
 #include "gab/sparse/symbolic.h"
+#include "gab/sparse/update.h"
 
 namespace gab {
 
@@ -32,6 +33,19 @@ class Cholesky {
   // ldb >= n, in the original numbering. Requires a successful factorize().
   // The first call with a given nrhs reserves nrhs * n doubles of workspace.
   Status solve(double* b, int32_t nrhs, int32_t ldb);
+
+  // In place, the factor of A + w^2 e_j e_j^T (j in the original
+  // numbering): Givens rotations along the elimination-tree path, no change
+  // of structure, no allocation after the first call. Cost: the entries of
+  // L on the path (reported in *stats when given). Solves afterwards see the
+  // updated matrix.
+  Status add_anchor(int32_t j, double weight, UpdateStats* stats = nullptr);
+  // Batch form of add_anchor: count anchors, swept over the union of their
+  // paths up to 8 at a time (stats sum the sweeps).
+  Status add_anchors(const int32_t* j, int32_t count, double weight, UpdateStats* stats = nullptr);
+  // The factor of A - w^2 e_j e_j^T; if that matrix would not be positive
+  // definite, kNotPositiveDefinite and the factor is unchanged.
+  Status remove_anchor(int32_t j, double weight, UpdateStats* stats = nullptr);
 
   void set_kernels(const DenseKernels& kernels) { kernels_ = &kernels; }
   bool factorized() const { return factorized_; }
@@ -51,6 +65,10 @@ class Cholesky {
   LargeBuffer<int32_t> iwork_;
   LargeBuffer<double> solve_rhs_;   // permuted right-hand sides
   LargeBuffer<double> solve_work_;
+  LargeBuffer<double> update_work_;  // see update_workspace_doubles
+  LargeBuffer<int32_t> update_iwork_;
+  bool update_ready_ = false;
+  Status prepare_update();
 };
 
 }  // namespace gab

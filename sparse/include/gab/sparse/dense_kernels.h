@@ -4,13 +4,15 @@
 // them, AVX2 and AVX-512 versions; dense_kernels() picks the best one the CPU
 // supports at run time (one binary runs everywhere). The environment variable
 // GAB_SIMD=scalar|avx2|avx512 caps the choice (tests use it; so can users
-// chasing a bug).
+// chasing a bug). Levels differ only in rounding (the SIMD ones use FMA).
 //
-// Memory: no kernel allocates inside its numeric loops. Large GEMM/SYRK calls
-// pack their operands into one per-thread buffer that grows on demand (to at
-// most ~5 MB, on the first large call of each thread) and is freed at thread
-// exit; if it cannot be had they run unpacked, correct but slower. All other
-// work is in registers or on the stack.
+// Memory: no kernel allocates inside its numeric loops. GEMM/SYRK calls large
+// enough to pack their operands (A beyond ~512 KB) use one per-thread buffer
+// of fixed size (4.4 MB at AVX-512, 3.5 MB at AVX2, 2.4 MB scalar), allocated
+// by the first such call of each thread and freed at thread exit; if it
+// cannot be had they run unpacked, correct but slower. All other work is in
+// registers or on the stack (POTRF/TRSM reach the packed path through their
+// GEMM/SYRK).
 //
 // Shapes: every dimension may be 0 (no-op); leading dimensions are >= the row
 // count and >= 1. Matrices are column-major; int32 sizes, products of a
@@ -34,15 +36,20 @@ struct DenseKernels {
   // In-place Cholesky A = L L^T of the n x n lower triangle of a (leading
   // dimension lda); the strict upper triangle is not touched. Returns -1 on
   // success, otherwise the first column j (0-based) whose pivot is <= 0 or
-  // not finite (columns before j hold their factor).
+  // not finite (NaN, inf); columns before j then hold their factor (all
+  // rows), the others are partly updated. n^3/3 flops.
   int32_t (*potrf)(int32_t n, double* a, int32_t lda);
-  // B := B L^{-T}: b is m x n (ldb), l is n x n lower triangular (ldl).
+  // B := B L^{-T}: b is m x n (ldb), l is n x n lower triangular (ldl; its
+  // strict upper triangle is not read). No check for a zero diagonal.
+  // m n^2 flops.
   void (*trsm_right_lower_trans)(int32_t m, int32_t n, const double* l, int32_t ldl, double* b,
                                  int32_t ldb);
-  // Lower triangle of C (n x n, ldc) -= A A^T, a is n x k (lda).
+  // Lower triangle of C (n x n, ldc) -= A A^T, a is n x k (lda); the strict
+  // upper triangle of C is never written. n (n+1) k flops.
   void (*syrk_lower_sub)(int32_t n, int32_t k, const double* a, int32_t lda, double* c,
                          int32_t ldc);
-  // C (m x n, ldc) -= A B^T, a is m x k (lda), b is n x k (ldb).
+  // C (m x n, ldc) -= A B^T, a is m x k (lda), b is n x k (ldb). 2 m n k
+  // flops.
   void (*gemm_nt_sub)(int32_t m, int32_t n, int32_t k, const double* a, int32_t lda,
                       const double* b, int32_t ldb, double* c, int32_t ldc);
 };

@@ -1,0 +1,323 @@
+// gab study IN... [--ordering amd|natural] [--updates U] [--batch B]
+//                 [--anchors K] [--subdivide K] [--csv F] [--svg F] [--json]
+// Factors each input's benchmark matrix, then adds U anchors by the
+// benchmark update rule (v_t = t * 2654435761 mod n, skipping anchored
+// vertices) through the Givens updater, B at a time, and reports what every
+// update cost against nnz(L), plus the drift from a fresh factorization.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "benchmark_system.h"
+#include "cli.h"
+#include "commands.h"
+#include "gab/sparse/cholesky.h"
+#include "svg_plot.h"
+
+namespace gab {
+namespace cli {
+
+namespace {
+
+const char* kUsage =
+    "gab study IN... [--ordering amd|natural] [--updates U] [--batch B] [--anchors K] "
+    "[--subdivide K] [--csv F] [--svg F] [--json]";
+
+struct UpdateRecord {
+  int64_t first_update;  // 1-based number of the batch's first anchor
+  int32_t vertex;        // its vertex
+  int32_t count;         // anchors in the batch
+  UpdateStats stats;
+  double seconds;
+};
+
+struct StudyResult {
+  std::string input;
+  int32_t n = 0;
+  int64_t nnz_L = 0;
+  // The same updates measured on the true (simplicial) structure: the
+  // elimination-tree path and the nonzeros of L on it, which is what a
+  // simplicial updater touches and what the separator bound speaks of.
+  double true_path_avg = 0.0, true_touched_avg = 0.0;
+  double factor_s = 0.0, solve1_s = 0.0, drift = 0.0;
+  bool diagonal_positive = true;
+  std::vector<UpdateRecord> records;
+};
+
+// The benchmark update sequence (DESIGN.md section 6).
+std::vector<int32_t> update_sequence(int32_t n, const std::vector<int32_t>& initial, int64_t count) {
+  std::vector<char> anchored(n, 0);
+  for (int32_t a : initial) anchored[a] = 1;
+  int64_t free_vertices = n;
+  for (int32_t a : initial) free_vertices -= anchored[a] ? 1 : 0;
+  std::vector<int32_t> seq;
+  count = std::min<int64_t>(count, free_vertices);
+  for (uint64_t t = 1; static_cast<int64_t>(seq.size()) < count; ++t) {
+    const int32_t v = static_cast<int32_t>((t * 2654435761ull) % static_cast<uint64_t>(n));
+    if (anchored[v]) continue;
+    anchored[v] = 1;
+    seq.push_back(v);
+  }
+  return seq;
+}
+
+Status study_one(const std::string& path, const std::string& ordering, int64_t updates,
+                 int64_t batch, int64_t anchors, int64_t subdivide, StudyResult* out) {
+  BenchmarkSystem sys;
+  GAB_RETURN_IF_ERROR(load_benchmark_system(path, static_cast<int32_t>(anchors), &sys,
+                                            static_cast<int>(subdivide)));
+  CscMatrix a = sys.lower;
+  const int32_t n = a.ncols;
+  AnalyzeOptions options;
+  options.ordering = ordering == "natural" ? Ordering::kNatural : Ordering::kAmd;
+  Cholesky chol;
+  GAB_RETURN_IF_ERROR(chol.analyze(a, options));
+  double t0 = now_seconds();
+  GAB_RETURN_IF_ERROR(chol.factorize(a));
+  out->factor_s = now_seconds() - t0;
+  {
+    // One warm 1-rhs solve: the paper compares an update with it.
+    std::vector<double> x(sys.rhs.begin(), sys.rhs.begin() + n);
+    GAB_RETURN_IF_ERROR(chol.solve(x.data(), 1, n));
+    x.assign(sys.rhs.begin(), sys.rhs.begin() + n);
+    t0 = now_seconds();
+    GAB_RETURN_IF_ERROR(chol.solve(x.data(), 1, n));
+    out->solve1_s = now_seconds() - t0;
+  }
+  out->input = path;
+  out->n = n;
+  out->nnz_L = chol.symbolic().nnz_L;
+
+  const std::vector<int32_t> seq = update_sequence(n, sys.anchors, updates);
+  {
+    const SymbolicFactor& f = chol.symbolic();
+    for (int32_t v : seq) {
+      for (int32_t c = f.inverse_perm[v]; c != -1; c = f.etree.parent[c]) {
+        out->true_path_avg += 1.0;
+        out->true_touched_avg += f.column_counts[c];
+      }
+    }
+    if (!seq.empty()) {
+      out->true_path_avg /= static_cast<double>(seq.size());
+      out->true_touched_avg /= static_cast<double>(seq.size());
+    }
+  }
+  for (size_t u = 0; u < seq.size(); u += static_cast<size_t>(batch)) {
+    const int32_t count = static_cast<int32_t>(std::min<size_t>(batch, seq.size() - u));
+    UpdateRecord rec;
+    rec.first_update = static_cast<int64_t>(u) + 1;
+    rec.vertex = seq[u];
+    rec.count = count;
+    t0 = now_seconds();
+    Status s = count == 1 ? chol.add_anchor(seq[u], 1.0, &rec.stats)
+                          : chol.add_anchors(seq.data() + u, count, 1.0, &rec.stats);
+    rec.seconds = now_seconds() - t0;
+    if (!s.ok()) return s;
+    out->records.push_back(rec);
+  }
+
+  // Drift: the updated factor's solution against a fresh factorization of
+  // the updated matrix, for three smooth solutions.
+  for (int32_t v : seq) {
+    for (int32_t p = a.colptr[v]; p < a.colptr[v + 1]; ++p) {
+      if (a.rowind[p] == v) a.values[p] += 1.0;
+    }
+  }
+  std::vector<double> xt(static_cast<size_t>(n) * 3), b(xt.size());
+  for (int r = 0; r < 3; ++r) {
+    for (int32_t i = 0; i < n; ++i) xt[i + static_cast<size_t>(r) * n] = std::cos(0.001 * i * (r + 1));
+    symmetric_lower_matvec(a, xt.data() + static_cast<size_t>(r) * n, b.data() + static_cast<size_t>(r) * n);
+  }
+  std::vector<double> xu = b, xf = b;
+  GAB_RETURN_IF_ERROR(chol.solve(xu.data(), 3, n));
+  Cholesky fresh;
+  AnalyzeOptions same;
+  same.ordering = Ordering::kGiven;
+  same.given_perm = chol.symbolic().perm;
+  GAB_RETURN_IF_ERROR(fresh.analyze(a, same));
+  GAB_RETURN_IF_ERROR(fresh.factorize(a));
+  GAB_RETURN_IF_ERROR(fresh.solve(xf.data(), 3, n));
+  double num = 0.0, den = 0.0;
+  for (size_t i = 0; i < xu.size(); ++i) {
+    num += (xu[i] - xf[i]) * (xu[i] - xf[i]);
+    den += xf[i] * xf[i];
+  }
+  out->drift = den > 0 ? std::sqrt(num / den) : std::sqrt(num);
+  const SymbolicFactor& f = chol.symbolic();
+  for (int32_t s = 0; s < f.num_supernodes; ++s) {
+    const double* block = chol.values() + f.value_ptr[s];
+    for (int32_t c = 0; c < f.cols(s); ++c) {
+      if (!(block[static_cast<int64_t>(c) * f.rows(s) + c] > 0.0)) out->diagonal_positive = false;
+    }
+  }
+  return Status::Ok();
+}
+
+JsonObject summary(const StudyResult& r, int64_t batch) {
+  int64_t anchors = 0, path_max = 0, touched_max = 0;
+  double path_sum = 0, touched_sum = 0, super_sum = 0, flops_sum = 0, time_sum = 0, time_max = 0;
+  std::vector<double> per_anchor;
+  for (const UpdateRecord& u : r.records) {
+    anchors += u.count;
+    path_sum += u.stats.path_columns;
+    super_sum += u.stats.path_supernodes;
+    touched_sum += static_cast<double>(u.stats.touched);
+    flops_sum += u.stats.flops;
+    time_sum += u.seconds;
+    path_max = std::max<int64_t>(path_max, u.stats.path_columns);
+    touched_max = std::max<int64_t>(touched_max, u.stats.touched);
+    time_max = std::max(time_max, u.seconds / u.count);
+    per_anchor.push_back(u.seconds / u.count);
+  }
+  const double per = anchors > 0 ? 1.0 / static_cast<double>(anchors) : 0.0;
+  const double nb = r.records.empty() ? 0.0 : 1.0 / static_cast<double>(r.records.size());
+  JsonObject j;
+  j.add("n", static_cast<int64_t>(r.n));
+  j.add("nnz_L", r.nnz_L);
+  j.add("updates", anchors);
+  // Path and touched figures are per update call (per batch when B > 1).
+  j.add("path_len_avg", path_sum * nb);
+  j.add("path_len_max", path_max);
+  j.add("touched_avg", touched_sum * nb);
+  j.add("touched_max", touched_max);
+  j.add("update_s_avg", time_sum * per);
+  j.add("update_s_median", median(per_anchor));
+  j.add("update_s_max", time_max);
+  j.add("factor_s", r.factor_s);
+  j.add("drift", r.drift);
+  j.add("input", r.input);
+  j.add("batch", batch);
+  j.add("path_supernodes_avg", super_sum * nb);
+  j.add("flops_avg", flops_sum * nb);
+  j.add("solve1_s", r.solve1_s);
+  j.add("true_path_len_avg", r.true_path_avg);
+  j.add("true_touched_avg", r.true_touched_avg);
+  // Factor bytes read and written per second while updating.
+  j.add("update_gbytes_per_s", time_sum > 0 ? touched_sum * 16.0 / time_sum * 1e-9 : 0.0);
+  j.add("diagonal_positive", std::string(r.diagonal_positive ? "yes" : "no"));
+  return j;
+}
+
+std::string path_name(const std::string& path) { return path.substr(path.find_last_of('/') + 1); }
+
+std::string csv(const std::vector<StudyResult>& results) {
+  std::string out = "input,update,vertex,anchors,path_columns,path_supernodes,touched,flops,seconds\n";
+  char buf[512];
+  for (const StudyResult& r : results) {
+    for (const UpdateRecord& u : r.records) {
+      std::snprintf(buf, sizeof(buf), "%s,%lld,%d,%d,%d,%d,%lld,%.0f,%.9f\n", r.input.c_str(),
+                    static_cast<long long>(u.first_update), u.vertex, u.count, u.stats.path_columns,
+                    u.stats.path_supernodes, static_cast<long long>(u.stats.touched), u.stats.flops,
+                    u.seconds);
+      out += buf;
+    }
+  }
+  return out;
+}
+
+std::string svg(const std::vector<StudyResult>& results) {
+  static const char* kColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
+  Chart touched{"Entries of L touched per update", "update", "touched nonzeros", {}};
+  Chart seconds{"Time per update", "update", "microseconds", {}};
+  for (size_t i = 0; i < results.size(); ++i) {
+    const StudyResult& r = results[i];
+    const std::string color = kColors[i % 6];
+    const std::string name = r.input.substr(r.input.find_last_of('/') + 1);
+    Series st{name + " (nnz(L) = " + std::to_string(r.nnz_L) + ")", color, {}, {}, false, false};
+    Series ss{name, color, {}, {}, false, false};
+    for (const UpdateRecord& u : r.records) {
+      st.x.push_back(static_cast<double>(u.first_update));
+      st.y.push_back(static_cast<double>(u.stats.touched));
+      ss.x.push_back(static_cast<double>(u.first_update));
+      ss.y.push_back(u.seconds * 1e6);
+    }
+    touched.series.push_back(st);
+    seconds.series.push_back(ss);
+  }
+  std::vector<Chart> charts = {touched, seconds};
+  if (results.size() > 1) {
+    // Growth against n, beside the O(n) separator bound (bounded genus)
+    // drawn through the smallest input.
+    Chart growth{"Average touched entries against n", "n", "average touched nonzeros", {}};
+    Series measured{"measured", "#1f77b4", {}, {}, true, false};
+    Series bound{"O(n) through the smallest input", "#888", {}, {}, false, true};
+    std::vector<std::pair<double, double>> pts;
+    for (const StudyResult& r : results) {
+      double sum = 0;
+      for (const UpdateRecord& u : r.records) sum += static_cast<double>(u.stats.touched);
+      pts.emplace_back(r.n, r.records.empty() ? 0.0 : sum / r.records.size());
+    }
+    std::sort(pts.begin(), pts.end());
+    for (const auto& p : pts) {
+      measured.x.push_back(p.first);
+      measured.y.push_back(p.second);
+      bound.x.push_back(p.first);
+      bound.y.push_back(pts[0].second * p.first / pts[0].first);
+    }
+    Series line = measured;
+    line.points = false;
+    line.name = "";
+    growth.series = {measured, line, bound};
+    charts.push_back(growth);
+  }
+  return render_svg(charts);
+}
+
+}  // namespace
+
+int run_study(int argc, char** argv) {
+  Args args;
+  if (!args.parse(argc, argv, {"--ordering", "--updates", "--batch", "--anchors", "--subdivide", "--csv", "--svg"},
+                  {"--json"})) {
+    return usage_error("study", args.error(), kUsage);
+  }
+  if (args.positionals().empty()) return usage_error("study", "expected at least one input file", kUsage);
+  int64_t updates = 1000, batch = 1, anchors = 100, subdivide = 0;
+  if (!args.get_int("--updates", 0, INT32_MAX, &updates) || !args.get_int("--batch", 1, 4096, &batch) ||
+      !args.get_int("--anchors", 1, INT32_MAX, &anchors) || !args.get_int("--subdivide", 0, 6, &subdivide)) {
+    return usage_error("study", args.error(), kUsage);
+  }
+  const std::string ordering = args.get("--ordering", "amd");
+  if (ordering != "amd" && ordering != "natural") {
+    return usage_error("study", "--ordering must be amd or natural, got '" + ordering + "'", kUsage);
+  }
+  const bool json = args.has("--json");
+  std::vector<StudyResult> results;
+  for (const std::string& path : args.positionals()) {
+    StudyResult r;
+    const Status s = study_one(path, ordering, updates, batch, anchors, subdivide, &r);
+    if (!s.ok()) return fail(s.message());
+    const JsonObject j = summary(r, batch);
+    if (json) {
+      std::printf("%s\n", j.str().c_str());
+    } else {
+      double touched = 0, seconds = 0, path = 0;
+      int64_t count = 0;
+      for (const UpdateRecord& u : r.records) {
+        touched += static_cast<double>(u.stats.touched);
+        seconds += u.seconds;
+        path += u.stats.path_columns;
+        count += u.count;
+      }
+      const double calls = r.records.empty() ? 1.0 : static_cast<double>(r.records.size());
+      std::printf("%s: n = %d, nnz(L) = %lld, factor %.4f s, 1-rhs solve %.4f s\n", path_name(r.input).c_str(),
+                  r.n, static_cast<long long>(r.nnz_L), r.factor_s, r.solve1_s);
+      std::printf("  %lld anchors in batches of %lld: path %.0f columns, %.0f entries touched (%.3f%% of nnz(L)) per call;"
+                  " %.1f us per anchor; drift %.2g\n",
+                  static_cast<long long>(count), static_cast<long long>(batch), path / calls, touched / calls,
+                  100.0 * touched / calls / static_cast<double>(r.nnz_L), count ? seconds / count * 1e6 : 0.0,
+                  r.drift);
+    }
+    std::fflush(stdout);
+    results.push_back(std::move(r));
+  }
+  std::string error;
+  if (args.has("--csv") && !write_file_atomically(args.get("--csv"), csv(results), &error)) return fail(error);
+  if (args.has("--svg") && !write_file_atomically(args.get("--svg"), svg(results), &error)) return fail(error);
+  return kExitOk;
+}
+
+}  // namespace cli
+}  // namespace gab
