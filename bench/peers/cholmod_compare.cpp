@@ -20,8 +20,17 @@
 #include "gab/mesh/off_io.h"
 #include "gab/sparse/amd.h"
 #include "gab/sparse/cholesky.h"
+#include "gab/sparse/update.h"
 
 namespace {
+
+std::vector<std::string> update_rows;
+
+std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.3g", v);
+  return buf;
+}
 
 double now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
@@ -33,6 +42,36 @@ double median(std::vector<double> v) {
 }
 
 constexpr int kRepeat = 5;
+constexpr int kUpdates = 1000;
+
+// Single-core copy bandwidth (bytes read + written per second) over a
+// buffer much larger than the caches: the ceiling for streaming updates.
+double copy_bandwidth() {
+  const size_t n = size_t{1} << 26;  // 512 MiB per array
+  std::vector<double> a(n, 1.0), b(n, 2.0);
+  std::vector<double> t;
+  for (int r = 0; r < 5; ++r) {
+    double t0 = now();
+    for (size_t i = 0; i < n; ++i) b[i] = a[i] * 1.000001;
+    t.push_back(now() - t0);
+  }
+  return 2.0 * n * sizeof(double) / median(t);
+}
+
+// The benchmark update sequence of DESIGN.md section 6.
+std::vector<int32_t> update_sequence(int32_t n, const std::vector<int32_t>& initial, int count) {
+  std::vector<char> anchored(n, 0);
+  for (int32_t a : initial) anchored[a] = 1;
+  std::vector<int32_t> seq;
+  for (uint64_t t = 1; static_cast<int>(seq.size()) < count; ++t) {
+    const int32_t v = static_cast<int32_t>((t * 2654435761ull) % static_cast<uint64_t>(n));
+    if (!anchored[v]) {
+      anchored[v] = 1;
+      seq.push_back(v);
+    }
+  }
+  return seq;
+}
 
 void compare(const std::string& path) {
   gab::Mesh mesh;
@@ -114,6 +153,73 @@ void compare(const std::string& path) {
   const double c_lnz = c.lnz;
   const double c_fl = c.fl;
 
+  // Updates: CHOLMOD must first convert to a simplicial LDL^T (not timed),
+  // then cholmod_updown with one column (single) or eight (rank-8 batch).
+  // C holds w = 1 at the permuted row of each anchor.
+  const std::vector<int32_t> seq = update_sequence(n, anchors, kUpdates);
+  const int32_t* cperm = static_cast<int32_t*>(lf->Perm);
+  std::vector<int32_t> cinv(n);
+  for (int32_t k = 0; k < n; ++k) cinv[cperm[k]] = k;
+  auto updown = [&](cholmod_factor* f, int32_t first, int32_t width) {
+    cholmod_sparse* cs = cholmod_allocate_sparse(n, width, width, 1, 1, 0, CHOLMOD_REAL, &c);
+    int32_t* cp = static_cast<int32_t*>(cs->p);
+    int32_t* ci = static_cast<int32_t*>(cs->i);
+    double* cx = static_cast<double*>(cs->x);
+    for (int32_t q = 0; q < width; ++q) {
+      cp[q] = q;
+      ci[q] = cinv[seq[first + q]];
+      cx[q] = 1.0;
+    }
+    cp[width] = width;
+    cholmod_sort(cs, &c);
+    double t0 = now();
+    cholmod_updown(1, cs, f, &c);
+    double dt = now() - t0;
+    cholmod_free_sparse(&cs, &c);
+    return dt;
+  };
+  cholmod_factor* lsingle = cholmod_copy_factor(lf, &c);
+  cholmod_change_factor(CHOLMOD_REAL, 0, 0, 1, 1, lsingle, &c);
+  cholmod_factor* lbatch = cholmod_copy_factor(lsingle, &c);
+  std::vector<double> cu_single, cu_batch;
+  for (int u = 0; u < kUpdates; ++u) cu_single.push_back(updown(lsingle, u, 1));
+  for (int u = 0; u + 8 <= kUpdates; u += 8) cu_batch.push_back(updown(lbatch, u, 8) / 8.0);
+  cholmod_free_factor(&lsingle, &c);
+  cholmod_free_factor(&lbatch, &c);
+
+  gab::Cholesky single, batch;
+  single.analyze(a, options);
+  single.factorize(a);
+  batch.analyze(a, options);
+  batch.factorize(a);
+  std::vector<double> g_single, g_batch;
+  double touched_single = 0.0;
+  for (int u = 0; u < kUpdates; ++u) {
+    gab::UpdateStats st;
+    double t0 = now();
+    single.add_anchor(seq[u], 1.0, &st);
+    g_single.push_back(now() - t0);
+    touched_single += static_cast<double>(st.touched);
+  }
+  for (int u = 0; u + 8 <= kUpdates; u += 8) {
+    double t0 = now();
+    batch.add_anchors(seq.data() + u, 8, 1.0);
+    g_batch.push_back((now() - t0) / 8.0);
+  }
+  double sum_cs = 0, sum_gs = 0, sum_cb = 0, sum_gb = 0;
+  for (double v : cu_single) sum_cs += v;
+  for (double v : g_single) sum_gs += v;
+  for (double v : cu_batch) sum_cb += v;
+  for (double v : g_batch) sum_gb += v;
+  const double avg_cs = sum_cs / cu_single.size(), avg_gs = sum_gs / g_single.size();
+  const double avg_cb = sum_cb / cu_batch.size(), avg_gb = sum_gb / g_batch.size();
+  update_rows.push_back(
+      "| " + path.substr(path.find_last_of('/') + 1) + " | " + fmt(avg_cs * 1e3) + " | " +
+      fmt(*std::max_element(cu_single.begin(), cu_single.end()) * 1e3) + " | " + fmt(avg_gs * 1e3) + " | " +
+      fmt(*std::max_element(g_single.begin(), g_single.end()) * 1e3) + " | " + fmt(avg_cs / avg_gs) + "x | " +
+      fmt(avg_cb * 1e3) + " | " + fmt(avg_gb * 1e3) + " | " + fmt(avg_cs / avg_gb) + "x | " +
+      fmt(touched_single * 16.0 / sum_gs * 1e-9) + " |");
+
   const std::string name = path.substr(path.find_last_of('/') + 1);
   std::printf("| %s | %d | %lld | %.0f | %.0f | %.4f | %.4f | %.2fx | %.4f | %.4f | %.2fx | %.4f | %.4f | %.2fx | %.1f | %.1f |\n",
               name.c_str(), n, static_cast<long long>(chol.symbolic().nnz_L), ss_amd_lnz, c_lnz,
@@ -144,5 +250,12 @@ int main(int argc, char** argv) {
               "solve3 gab s | solve3 CHOLMOD s | ratio | GFLOP/s gab | GFLOP/s CHOLMOD |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (const std::string& path : inputs) compare(path);
+  std::printf("\nAnchor updates (%d by the benchmark rule, w = 1; CHOLMOD on its simplicial LDL^T, "
+              "conversion not timed). Times in ms per anchor.\n\n", kUpdates);
+  std::printf("| mesh | updown avg | updown max | gab avg | gab max | ratio | updown rank-8 per anchor | "
+              "gab batch-8 per anchor | ratio vs single updown | gab GB/s touched |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (const std::string& row : update_rows) std::printf("%s\n", row.c_str());
+  std::printf("\nsingle-core copy bandwidth: %.1f GB/s (read + write)\n", copy_bandwidth() * 1e-9);
   return 0;
 }

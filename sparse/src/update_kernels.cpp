@@ -14,6 +14,16 @@ namespace {
 
 using simd::Vec;
 
+// Full unrolling of the loops over the batch's vectors lets the compiler
+// keep the per-vector arrays in registers instead of on the stack.
+#if defined(__clang__)
+#define GAB_UNROLL _Pragma("unroll")
+#elif defined(__GNUC__)
+#define GAB_UNROLL _Pragma("GCC unroll 8")
+#else
+#define GAB_UNROLL
+#endif
+
 template <int W>
 GAB_INLINE void rotate_rows_body(int32_t p, int32_t ncols, const double* c, const double* s,
                                  double* l, int32_t ld, double* x) {
@@ -70,34 +80,53 @@ GAB_INLINE void rotate_rows_reverse_body(int32_t p, int32_t ncols, const double*
   }
 }
 
+// Each column's entry passes through NV dependent rotations, so one row
+// chunk alone is bound by their latency; two chunks are interleaved so the
+// two chains overlap (2 * NV vectors of x stay in registers).
 template <int W, int NV>
 GAB_INLINE void rotate_rows_batch_fixed(int32_t p, int32_t ncols, const double* c, const double* s,
                                         double* l, int32_t ld, double* x, int32_t ldx) {
   using V = Vec<W>;
+  typedef typename V::type T;
   int32_t t = 0;
-  for (; t + W <= p; t += W) {
-    typename V::type xv[NV];
-    for (int v = 0; v < NV; ++v) xv[v] = V::load(x + static_cast<int64_t>(v) * ldx + t);
+  for (; t + 2 * W <= p; t += 2 * W) {
+    T xa[NV], xb[NV];
+    GAB_UNROLL
+    for (int v = 0; v < NV; ++v) {
+      xa[v] = V::load(x + static_cast<int64_t>(v) * ldx + t);
+      xb[v] = V::load(x + static_cast<int64_t>(v) * ldx + t + W);
+    }
     for (int32_t q = 0; q < ncols; ++q) {
       double* lq = l + static_cast<int64_t>(q) * ld + t;
-      typename V::type lv = V::load(lq);
-      for (int v = 0; v < NV; ++v) {
-        const typename V::type cq = V::splat(c[q * NV + v]), sq = V::splat(s[q * NV + v]);
-        const typename V::type rotated = cq * lv + sq * xv[v];
-        xv[v] = cq * xv[v] - sq * lv;
-        lv = rotated;
+      T la = V::load(lq), lb = V::load(lq + W);
+      GAB_UNROLL
+    for (int v = 0; v < NV; ++v) {
+        const T cq = V::splat(c[q * NV + v]), sq = V::splat(s[q * NV + v]);
+        const T ra = cq * la + sq * xa[v];
+        const T rb = cq * lb + sq * xb[v];
+        xa[v] = cq * xa[v] - sq * la;
+        xb[v] = cq * xb[v] - sq * lb;
+        la = ra;
+        lb = rb;
       }
-      V::store(lq, lv);
+      V::store(lq, la);
+      V::store(lq + W, lb);
     }
-    for (int v = 0; v < NV; ++v) V::store(x + static_cast<int64_t>(v) * ldx + t, xv[v]);
+    GAB_UNROLL
+    for (int v = 0; v < NV; ++v) {
+      V::store(x + static_cast<int64_t>(v) * ldx + t, xa[v]);
+      V::store(x + static_cast<int64_t>(v) * ldx + t + W, xb[v]);
+    }
   }
   for (; t < p; ++t) {
     double xv[NV];
+    GAB_UNROLL
     for (int v = 0; v < NV; ++v) xv[v] = x[static_cast<int64_t>(v) * ldx + t];
     for (int32_t q = 0; q < ncols; ++q) {
       double* lq = l + static_cast<int64_t>(q) * ld + t;
       double lv = *lq;
-      for (int v = 0; v < NV; ++v) {
+      GAB_UNROLL
+    for (int v = 0; v < NV; ++v) {
         const double cq = c[q * NV + v], sq = s[q * NV + v];
         const double rotated = cq * lv + sq * xv[v];
         xv[v] = cq * xv[v] - sq * lv;
@@ -105,6 +134,7 @@ GAB_INLINE void rotate_rows_batch_fixed(int32_t p, int32_t ncols, const double* 
       }
       *lq = lv;
     }
+    GAB_UNROLL
     for (int v = 0; v < NV; ++v) x[static_cast<int64_t>(v) * ldx + t] = xv[v];
   }
 }
