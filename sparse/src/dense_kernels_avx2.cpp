@@ -172,9 +172,11 @@ struct Avx2Tile {
 
   // Packing pays for itself only when a packed operand is reused: with few
   // column strips or few row tiles there is no reuse, and while A (m x k)
-  // fits in L2 the unpacked tiles re-read it from there at full speed.
+  // is small the unpacked tiles re-read it from L2 at full speed. The
+  // 4-column strips re-read A twice as often as AVX-512's, hence half its
+  // limit (measured: unpacked falls behind from about 256 KB of A).
   static bool direct(int32_t m, int32_t n, int32_t k) {
-    return n <= 2 * kNr || m <= kMr || static_cast<int64_t>(m) * k <= 64 * 1024;
+    return n <= 2 * kNr || m <= kMr || static_cast<int64_t>(m) * k <= 32 * 1024;
   }
 
   static void tile(int32_t k, const double* a, ptrdiff_t as, const double* b, ptrdiff_t bs,

@@ -232,7 +232,8 @@ struct Avx512Tile {
 
   // Packing pays for itself only when a packed operand is reused: with few
   // column strips or few row tiles there is no reuse, and while A (m x k)
-  // fits in L2 the unpacked tiles re-read it from there at full speed.
+  // fits in L2 the unpacked tiles re-read it from there at full speed
+  // (measured on Zen 5: unpacked stays ahead up to about 512 KB of A).
   static bool direct(int32_t m, int32_t n, int32_t k) {
     return n <= 2 * kNr || m <= kMr || static_cast<int64_t>(m) * k <= 64 * 1024;
   }

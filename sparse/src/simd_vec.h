@@ -19,7 +19,9 @@ namespace simd {
 // The vector types below never cross a call boundary (every user is
 // always_inline into a function compiled for the matching instruction set),
 // so GCC's note that their ABI depends on -mavx does not apply.
-#if defined(__GNUC__) && !defined(__clang__)
+#if defined(__clang__)
+#pragma clang diagnostic ignored "-Wpsabi"
+#elif defined(__GNUC__)
 #pragma GCC diagnostic ignored "-Wpsabi"
 #endif
 

@@ -7,12 +7,12 @@
 // chasing a bug). Levels differ only in rounding (the SIMD ones use FMA).
 //
 // Memory: no kernel allocates inside its numeric loops. GEMM/SYRK calls large
-// enough to pack their operands (A beyond ~512 KB) use one per-thread buffer
-// of fixed size (4.4 MB at AVX-512, 3.5 MB at AVX2, 2.4 MB scalar), allocated
-// by the first such call of each thread and freed at thread exit; if it
-// cannot be had they run unpacked, correct but slower. All other work is in
-// registers or on the stack (POTRF/TRSM reach the packed path through their
-// GEMM/SYRK).
+// enough to pack their operands (A of 256-512 KB or more) use one per-thread
+// buffer of fixed size (4.4 MB at AVX-512, 3.5 MB at AVX2, 2.4 MB scalar),
+// allocated by the first such call of each thread and freed at thread exit;
+// if it cannot be had they run unpacked, correct but slower. All other work
+// is in registers or on the stack (POTRF/TRSM reach the packed path through
+// their GEMM/SYRK).
 //
 // Shapes: every dimension may be 0 (no-op); leading dimensions are >= the row
 // count and >= 1. Matrices are column-major; int32 sizes, products of a
