@@ -25,8 +25,10 @@ namespace gab {
 int64_t factor_workspace_doubles(const SymbolicFactor& f) { return f.stack_peak; }
 
 int64_t factor_workspace_ints(const SymbolicFactor& f) {
-  // map (n) + relative indices (max rows) + child lists and depths (3 * supernodes)
-  return static_cast<int64_t>(f.n) + f.max_front_rows + 3 * static_cast<int64_t>(f.num_supernodes);
+  // map (n) + relative indices and their run ends (2 * max rows) + child
+  // lists and depths (3 * supernodes)
+  return static_cast<int64_t>(f.n) + 2 * static_cast<int64_t>(f.max_front_rows) +
+         3 * static_cast<int64_t>(f.num_supernodes);
 }
 
 Status factorize_supernodal(const SymbolicFactor& f, const CscMatrix& lower,
@@ -39,7 +41,8 @@ Status factorize_supernodal(const SymbolicFactor& f, const CscMatrix& lower,
   const int32_t ns = f.num_supernodes;
   int32_t* map = iwork;                       // row -> position in the current front
   int32_t* rel = map + f.n;                   // child's rows -> positions in the front
-  int32_t* child_head = rel + f.max_front_rows;
+  int32_t* run_end = rel + f.max_front_rows;  // end of the run of consecutive rel[] holding u
+  int32_t* child_head = run_end + f.max_front_rows;
   int32_t* child_next = child_head + ns;
   int32_t* depth = child_next + ns;
   for (int32_t s = 0; s < ns; ++s) child_head[s] = -1;
@@ -84,15 +87,21 @@ Status factorize_supernodal(const SymbolicFactor& f, const CscMatrix& lower,
       const double* cu = child_side == 0 ? work + offset : work_end - offset - pcc;
       const int32_t* crows = f.row_ind.data() + f.row_ptr[c] + kc;
       for (int32_t t = 0; t < pc; ++t) rel[t] = map[crows[t]];
+      // A child's rows mostly land on runs of consecutive front rows; add
+      // each run as one contiguous (vectorizable) loop instead of a scatter.
+      for (int32_t u = pc - 1; u >= 0; --u) {
+        run_end[u] = (u + 1 < pc && rel[u + 1] == rel[u] + 1) ? run_end[u + 1] : u + 1;
+      }
       for (int32_t t = 0; t < pc; ++t) {
         const double* src = cu + static_cast<int64_t>(t) * pc;
         const int32_t col = rel[t];
-        if (col < k) {
-          double* dst = block + static_cast<int64_t>(col) * m;
-          for (int32_t u = t; u < pc; ++u) dst[rel[u]] += src[u];
-        } else {
-          double* dst = update + static_cast<int64_t>(col - k) * p - k;
-          for (int32_t u = t; u < pc; ++u) dst[rel[u]] += src[u];
+        double* dst = col < k ? block + static_cast<int64_t>(col) * m
+                              : update + static_cast<int64_t>(col - k) * p - k;
+        for (int32_t u = t; u < pc;) {
+          const int32_t end = run_end[u];
+          double* d = dst + rel[u] - u;
+          for (int32_t w = u; w < end; ++w) d[w] += src[w];
+          u = end;
         }
       }
       offset += pcc;
