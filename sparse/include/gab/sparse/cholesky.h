@@ -69,6 +69,7 @@ class Cholesky {
   LargeBuffer<int32_t> update_iwork_;
   bool update_ready_ = false;
   Status prepare_update();
+  Status prepare_update_workspace();
 };
 
 }  // namespace gab
