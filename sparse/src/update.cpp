@@ -27,13 +27,15 @@ namespace {
 
 constexpr int32_t kRotationBlock = 8;
 
-// Workspace layout (doubles): x (n * kMaxBatch) | carry | p | sines (n
-// each), then xs (kMaxBatch per row of the largest supernode), cs, sn. x
-// and carry are zero between calls; the rest is written before it is read.
+// Room for one block of rotations (batch: one per column and vector), or
+// one per row of the largest supernode.
 int64_t rotation_slots(const SymbolicFactor& f) {
   return std::max<int64_t>(f.max_front_rows, kRotationBlock * update_detail::kMaxBatch);
 }
 
+// Workspace layout (doubles): x (n * kMaxBatch) | carry | p | sines (n
+// each), then xs (kMaxBatch per row of the largest supernode), cs, sn. x
+// and carry are zero between calls; the rest is written before it is read.
 struct Workspace {
   double* x;      // the rotated-in rows, indexed by (permuted) row, n apart
   double* carry;  // downdate: each row's running value between supernodes
