@@ -3,7 +3,7 @@
 #include "cli.h"
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/normal_matrix.h"
-#include "gab/mesh/off_io.h"
+#include "gab/mesh/mesh_io.h"
 #include "gab/mesh/subdivide.h"
 #include "gab/sparse/matrix_market.h"
 
@@ -24,9 +24,9 @@ Status load_benchmark_system(const std::string& path, int32_t k0, BenchmarkSyste
       for (int32_t i = 0; i < n; ++i) x[i] = 1.0 + 0.5 * ((i * (r + 3)) % 17) / 17.0;
       symmetric_lower_matvec(sys.lower, x.data(), sys.rhs.data() + static_cast<size_t>(r) * n);
     }
-  } else if (ext == "off") {
+  } else if (ext == "obj" || ext == "off" || ext == "ply") {
     Mesh mesh;
-    GAB_RETURN_IF_ERROR(read_off(path, &mesh));
+    GAB_RETURN_IF_ERROR(read_mesh(path, &mesh));
     if (subdivide > 0) mesh = subdivide_midpoint(mesh, subdivide);
     sys.faces = mesh.num_triangles();
     const EdgeGraph graph = build_edge_graph(mesh);
@@ -36,7 +36,7 @@ Status load_benchmark_system(const std::string& path, int32_t k0, BenchmarkSyste
     sys.from_mesh = true;
   } else {
     return Status::Error(StatusCode::kInvalidArgument,
-                         path + ": unsupported input type '." + ext + "' (expected .off or .mtx)");
+                         path + ": unsupported input type '." + ext + "' (expected .obj, .off, .ply or .mtx)");
   }
   *out = std::move(sys);
   return Status::Ok();

@@ -6,6 +6,7 @@ namespace cli {
 
 int run_factor(int argc, char** argv);
 int run_study(int argc, char** argv);
+int run_diff(int argc, char** argv);
 
 }  // namespace cli
 }  // namespace gab

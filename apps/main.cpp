@@ -15,12 +15,15 @@ const char* kHelp =
     "\n"
     "commands:\n"
     "  factor IN [--ordering amd|natural] [--anchors K] [--repeat R] [--json]\n"
-    "      order, analyze, factor and solve the least-squares matrix of a mesh (.off)\n"
+    "      order, analyze, factor and solve the least-squares matrix of a mesh (.obj .off .ply)\n"
     "      or a Matrix Market file (.mtx); report sizes and median phase times\n"
     "  study IN... [--ordering amd|natural] [--updates U] [--batch B] [--anchors K]\n"
     "        [--subdivide K] [--csv F] [--svg F] [--json]\n"
     "      add U anchors to the factor one (or B) at a time by Givens rotations along the\n"
     "      elimination tree; report path lengths, entries touched, times, drift\n"
+    "  diff A B [--samples N] [--json]\n"
+    "      distances between two meshes (.obj .off .ply): per vertex when the vertex counts\n"
+    "      match, and the symmetric surface distance (mean, RMS, Hausdorff) from N samples\n"
     "\n"
     "--json prints one JSON object on stdout; messages go to stderr.\n";
 
@@ -38,6 +41,7 @@ int main(int argc, char** argv) {
   }
   if (!std::strcmp(command, "factor")) return gab::cli::run_factor(argc - 2, argv + 2);
   if (!std::strcmp(command, "study")) return gab::cli::run_study(argc - 2, argv + 2);
+  if (!std::strcmp(command, "diff")) return gab::cli::run_diff(argc - 2, argv + 2);
   std::fprintf(stderr, "gab: unknown command '%s' (try 'gab help')\n", command);
   return gab::cli::kExitUsage;
 }

@@ -1,159 +1,131 @@
-// OFF reader. The format is token-based (a record may span lines), so the
-// parser walks tokens while counting lines for the error messages.
+// OFF reader and writer. The format is free-form text (Geomview's OFF(5)
+// manual page): a record may span lines, so the parser walks tokens while
+// counting lines for its messages; optional per-vertex and per-face extras
+// sit at the end of a record's line and are skipped with the line.
 #include "gab/mesh/off_io.h"
 
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
+
+#include "gab/mesh/file_io.h"
+#include "text_scanner.h"
 
 namespace gab {
 
 namespace {
 
-class Tokens {
- public:
-  Tokens(const std::string& text, const std::string& name) : text_(text), name_(name) {}
+using mesh_detail::parse_int;
+using mesh_detail::parse_real;
+using mesh_detail::printable;
+using mesh_detail::TextScanner;
 
-  // Next whitespace-separated token, skipping '#' comments; false at end.
-  bool next(const char** begin, size_t* len) {
-    const size_t n = text_.size();
-    while (pos_ < n) {
-      const char c = text_[pos_];
-      if (c == '\n') {
-        ++line_;
-        ++pos_;
-      } else if (c == '#') {
-        while (pos_ < n && text_[pos_] != '\n') ++pos_;
-      } else if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
-        ++pos_;
-      } else {
-        break;
-      }
-    }
-    if (pos_ >= n) return false;
-    const size_t start = pos_;
-    while (pos_ < n && !std::strchr(" \t\r\n\f\v#", text_[pos_])) ++pos_;
-    *begin = text_.data() + start;
-    *len = pos_ - start;
-    token_line_ = line_;
-    return true;
-  }
-
-  // Skips the rest of the current line (extras after a record).
-  void skip_line() {
-    while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
-  }
-
-  Status error(const std::string& what) const {
-    return Status::Error(StatusCode::kParseError,
-                         name_ + ":" + std::to_string(token_line_) + ": " + what);
-  }
-  Status error_at_end(const std::string& what) const {
-    return Status::Error(StatusCode::kParseError, name_ + ":" + std::to_string(line_) + ": " + what);
-  }
-  size_t size() const { return text_.size(); }
-
- private:
-  const std::string& text_;
-  const std::string& name_;
-  size_t pos_ = 0;
-  int64_t line_ = 1;
-  int64_t token_line_ = 1;
+struct OffHeader {
+  bool texture = false, colors = false, normals = false, homogeneous = false, ndim = false;
 };
 
-bool parse_int(const char* s, size_t len, int64_t* out) {
-  if (len == 0 || len > 18) return false;
+// Splits the [ST][C][N][4][n]OFF keyword; false if the token is not one.
+bool parse_keyword(std::string_view key, OffHeader* h) {
   size_t i = 0;
-  bool neg = false;
-  if (s[0] == '-' || s[0] == '+') {
-    neg = s[0] == '-';
-    if (++i == len) return false;
-  }
-  int64_t v = 0;
-  for (; i < len; ++i) {
-    if (s[i] < '0' || s[i] > '9') return false;
-    v = v * 10 + (s[i] - '0');
-  }
-  *out = neg ? -v : v;
-  return true;
-}
-
-bool parse_double(const char* s, size_t len, double* out) {
-  char buf[64];
-  if (len == 0 || len >= sizeof(buf)) return false;
-  std::memcpy(buf, s, len);
-  buf[len] = '\0';
-  char* end = nullptr;
-  *out = std::strtod(buf, &end);
-  return end == buf + len;
+  auto take = [&key, &i](std::string_view prefix) {
+    if (key.substr(i, prefix.size()) != prefix) return false;
+    i += prefix.size();
+    return true;
+  };
+  h->texture = take("ST");
+  h->colors = take("C");
+  h->normals = take("N");
+  h->homogeneous = take("4");
+  h->ndim = take("n");
+  return key.substr(i) == "OFF";
 }
 
 }  // namespace
 
-Status parse_off(const std::string& text, const std::string& name, Mesh* mesh) {
-  Tokens tok(text, name);
-  const char* t;
-  size_t len;
-  if (!tok.next(&t, &len)) return tok.error_at_end("empty file, expected an OFF header");
-  const std::string magic(t, len);
-  const bool has_normals = magic.find('N') != std::string::npos;
-  const bool has_colors = magic.find('C') != std::string::npos;
-  if (magic != "OFF" && magic != "COFF" && magic != "NOFF" && magic != "CNOFF" && magic != "NCOFF") {
-    return tok.error("not an OFF file (header '" + magic.substr(0, 16) + "')");
+Status parse_off(std::string_view text, const std::string& name, Mesh* mesh) {
+  TextScanner tok(text, name, '#');
+  std::string_view t;
+  if (!tok.next(&t)) return tok.error_here("empty file, expected an OFF header");
+  OffHeader h;
+  if (!parse_keyword(t, &h)) return tok.error("not an OFF file (header '" + printable(t) + "')");
+  if (h.ndim) {
+    int64_t dim = 0;
+    if (!tok.next(&t)) return tok.error_here("truncated header: expected the nOFF dimension");
+    if (!parse_int(t, &dim) || dim != 3) {
+      return tok.error("nOFF dimension '" + printable(t) + "' is not supported (only 3)");
+    }
   }
   int64_t counts[3];
   for (int i = 0; i < 3; ++i) {
-    if (!tok.next(&t, &len)) return tok.error_at_end("truncated header: expected vertex, face and edge counts");
-    if (!parse_int(t, len, &counts[i]) || counts[i] < 0) {
-      return tok.error("bad count '" + std::string(t, len < 32 ? len : 32) + "' in header");
+    if (!tok.next(&t)) return tok.error_here("truncated header: expected vertex, face and edge counts");
+    if (i == 0 && t == "BINARY") return tok.error("binary OFF is not supported");
+    if (!parse_int(t, &counts[i]) || counts[i] < 0) {
+      return tok.error("bad count '" + printable(t) + "' in header");
     }
   }
   const int64_t nv = counts[0], nf = counts[1];
-  // Never trust a count for allocation: every vertex needs at least 6 bytes
-  // ("0 0 0\n") and every face 8 ("3 0 1 2\n").
-  if (nv > static_cast<int64_t>(tok.size() / 6) + 1 || nf > static_cast<int64_t>(tok.size() / 8) + 1) {
+  // Never trust a count for allocation: a vertex takes at least 6 bytes
+  // ("0 0 0\n") and a face 8 ("3 0 1 2\n"). (A file cut short passes this
+  // coarse bound and is reported as truncated where it ends.)
+  const int64_t size = static_cast<int64_t>(text.size());
+  if (nv > size / 6 + 1 || nf > size / 8 + 1) {
     return tok.error("header claims " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
-                     " faces, more than the file's " + std::to_string(tok.size()) + " bytes can hold");
+                     " faces, more than the file's " + std::to_string(size) + " bytes can hold");
   }
   if (nv == 0) return tok.error("mesh has no vertices");
-  tok.skip_line();
+  if (nf == 0) return tok.error("mesh has no faces");
+  if (nv > INT32_MAX) return tok.error("more than 2^31-1 vertices");
+
   Mesh m;
   m.positions.resize(static_cast<size_t>(nv) * 3);
+  const int dims = h.homogeneous ? 4 : 3;
+  const bool vertex_extras = h.texture || h.colors || h.normals;
   for (int64_t v = 0; v < nv; ++v) {
-    for (int c = 0; c < 3; ++c) {
-      if (!tok.next(&t, &len)) {
-        return tok.error_at_end("truncated: file ends in vertex " + std::to_string(v) + " of " +
-                                std::to_string(nv));
+    double x[4];
+    for (int c = 0; c < dims; ++c) {
+      if (!tok.next(&t)) {
+        return tok.error_here("truncated: file ends in vertex " + std::to_string(v) + " of " + std::to_string(nv));
       }
-      double x;
-      if (!parse_double(t, len, &x)) {
-        return tok.error("vertex " + std::to_string(v) + ": bad coordinate '" +
-                         std::string(t, len < 32 ? len : 32) + "'");
+      if (!parse_real(t, &x[c])) {
+        return tok.error("vertex " + std::to_string(v) + ": bad coordinate '" + printable(t) + "'");
       }
-      if (!std::isfinite(x)) return tok.error("vertex " + std::to_string(v) + ": coordinate is not finite");
-      m.positions[static_cast<size_t>(v) * 3 + c] = x;
+      if (!std::isfinite(x[c])) return tok.error("vertex " + std::to_string(v) + ": coordinate is not finite");
     }
-    if (has_normals || has_colors) tok.skip_line();
+    if (h.homogeneous) {
+      if (x[3] == 0.0) return tok.error("vertex " + std::to_string(v) + ": homogeneous coordinate w is 0");
+      for (int c = 0; c < 3; ++c) {
+        x[c] /= x[3];
+        if (!std::isfinite(x[c])) return tok.error("vertex " + std::to_string(v) + ": coordinate is not finite");
+      }
+    }
+    for (int c = 0; c < 3; ++c) m.positions[static_cast<size_t>(v) * 3 + c] = x[c];
+    if (vertex_extras) tok.skip_line();
   }
+
   m.triangles.reserve(static_cast<size_t>(nf) * 3);
   for (int64_t f = 0; f < nf; ++f) {
     int64_t k;
-    if (!tok.next(&t, &len)) {
-      return tok.error_at_end("truncated: file ends in face " + std::to_string(f) + " of " + std::to_string(nf));
+    if (!tok.next(&t)) {
+      return tok.error_here("truncated: file ends in face " + std::to_string(f) + " of " + std::to_string(nf));
     }
-    if (!parse_int(t, len, &k)) return tok.error("face " + std::to_string(f) + ": bad vertex count");
+    if (!parse_int(t, &k) || k < 0) {
+      return tok.error("face " + std::to_string(f) + ": bad vertex count '" + printable(t) + "'");
+    }
     if (k < 3) return tok.error("face " + std::to_string(f) + " has " + std::to_string(k) + " vertices (need 3 or more)");
-    if (k > nv && k > 1000000) return tok.error("face " + std::to_string(f) + ": absurd vertex count " + std::to_string(k));
+    // k indices take at least 2k - 1 bytes.
+    if (k > static_cast<int64_t>(tok.remaining() / 2) + 1) {
+      return tok.error("face " + std::to_string(f) + ": vertex count " + std::to_string(k) +
+                       " is more than the rest of the file can hold");
+    }
+    if (static_cast<int64_t>(m.triangles.size() / 3) + (k - 2) > INT32_MAX) {
+      return tok.error("face " + std::to_string(f) + ": more than 2^31-1 triangles");
+    }
     int32_t first = 0, prev = 0;
     for (int64_t c = 0; c < k; ++c) {
       int64_t idx;
-      if (!tok.next(&t, &len)) {
-        return tok.error_at_end("truncated: file ends in face " + std::to_string(f) + " of " + std::to_string(nf));
+      if (!tok.next(&t)) {
+        return tok.error_here("truncated: file ends in face " + std::to_string(f) + " of " + std::to_string(nf));
       }
-      if (!parse_int(t, len, &idx)) {
-        return tok.error("face " + std::to_string(f) + ": bad vertex index '" + std::string(t, len < 32 ? len : 32) + "'");
+      if (!parse_int(t, &idx)) {
+        return tok.error("face " + std::to_string(f) + ": bad vertex index '" + printable(t) + "'");
       }
       if (idx < 0 || idx >= nv) {
         return tok.error("face " + std::to_string(f) + ": vertex index " + std::to_string(idx) +
@@ -175,18 +147,37 @@ Status parse_off(const std::string& text, const std::string& name, Mesh* mesh) {
 }
 
 Status read_off(const std::string& path, Mesh* mesh) {
-  std::FILE* file = std::fopen(path.c_str(), "rb");
-  if (file == nullptr) {
-    return Status::Error(StatusCode::kIoError, path + ": cannot open: " + std::strerror(errno));
+  std::string bytes;
+  GAB_RETURN_IF_ERROR(read_file(path, &bytes));
+  return parse_off(bytes, path, mesh);
+}
+
+std::string format_off(const Mesh& mesh) {
+  using mesh_detail::append_int;
+  using mesh_detail::append_real;
+  std::string out = "OFF\n";
+  out.reserve(static_cast<size_t>(mesh.num_vertices()) * 40 + static_cast<size_t>(mesh.num_triangles()) * 24);
+  append_int(&out, mesh.num_vertices());
+  out += ' ';
+  append_int(&out, mesh.num_triangles());
+  out += " 0\n";
+  for (size_t i = 0; i < mesh.positions.size(); ++i) {
+    append_real(&out, mesh.positions[i]);
+    out += i % 3 == 2 ? '\n' : ' ';
   }
-  std::string text;
-  char buf[1 << 16];
-  size_t got;
-  while ((got = std::fread(buf, 1, sizeof(buf), file)) > 0) text.append(buf, got);
-  const bool failed = std::ferror(file) != 0;
-  std::fclose(file);
-  if (failed) return Status::Error(StatusCode::kIoError, path + ": read error");
-  return parse_off(text, path, mesh);
+  for (size_t i = 0; i < mesh.triangles.size(); i += 3) {
+    out += "3 ";
+    for (int c = 0; c < 3; ++c) {
+      append_int(&out, mesh.triangles[i + c]);
+      out += c == 2 ? '\n' : ' ';
+    }
+  }
+  return out;
+}
+
+Status write_off(const std::string& path, const Mesh& mesh) {
+  GAB_RETURN_IF_ERROR(validate_mesh(mesh, path));
+  return write_file_atomically(path, format_off(mesh));
 }
 
 }  // namespace gab

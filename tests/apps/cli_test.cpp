@@ -104,7 +104,7 @@ TEST(CliTest, BadUsageExitsTwo) {
 TEST(CliTest, UnsupportedExtensionIsBadInput) {
   const CommandResult r = run_gab("factor model.stl");
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_EQ(r.err, "gab: error: model.stl: unsupported input type '.stl' (expected .off or .mtx)\n");
+  EXPECT_EQ(r.err, "gab: error: model.stl: unsupported input type '.stl' (expected .obj, .off, .ply or .mtx)\n");
 }
 
 }  // namespace

@@ -1,9 +1,10 @@
-// Solves a 1-D Laplacian system through the installed headers; exits 0 only
-// if the answer is right.
+// Solves a 1-D Laplacian system and reads an OBJ mesh through the installed
+// headers; exits 0 only if both are right.
 #include <cmath>
 #include <cstdio>
 #include <vector>
 
+#include "gab/mesh/mesh_io.h"
 #include "gab/sparse/cholesky.h"
 
 int main() {
@@ -26,5 +27,10 @@ int main() {
   double err = 0.0;
   for (int i = 0; i < n; ++i) err = std::fmax(err, std::fabs(y[i] - 1.0));
   std::printf("consumer: max error %.3g\n", err);
-  return err < 1e-10 ? 0 : 1;
+  // The mesh layer too (its OBJ reader links tinyobjloader, a dependency
+  // the package config must bring along).
+  gab::Mesh mesh;
+  const gab::Status read = gab::parse_mesh("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", gab::MeshFormat::kObj, "t.obj", &mesh);
+  std::printf("consumer: OBJ read %s, %d triangle(s)\n", read.ok() ? "ok" : read.message().c_str(), mesh.num_triangles());
+  return err < 1e-10 && read.ok() && mesh.num_triangles() == 1 ? 0 : 1;
 }

@@ -73,3 +73,45 @@ TEST(OffTest, ReadsTheSharedBunny) {
 
 }  // namespace
 }  // namespace gab
+
+namespace gab {
+namespace {
+
+TEST(OffTest, HeaderVariants) {
+  struct Case {
+    const char* text;
+    std::vector<double> positions;
+  };
+  const Case cases[] = {
+      // Normals, texture coordinates and colours after x y z are skipped.
+      {"NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n3 0 1 2\n", {0, 0, 0, 1, 0, 0, 0, 1, 0}},
+      {"STCNOFF\n3 1 0\n0 0 0 1 2 3 .1 .2 .3 1 9 9\n1 0 0 1 2 3 .1 .2 .3 1 9 9\n0 1 0 1 2 3 .1 .2 .3 1 9 9\n3 0 1 2\n",
+       {0, 0, 0, 1, 0, 0, 0, 1, 0}},
+      // Homogeneous coordinates are divided by w.
+      {"4OFF\n3 1 0\n2 4 6 2\n1 0 0 1\n0 3 0 3\n3 0 1 2\n", {1, 2, 3, 1, 0, 0, 0, 1, 0}},
+      // nOFF with dimension 3, counts on the keyword's line, CRLF, BOM, comments anywhere.
+      {"\xEF\xBB\xBFnOFF 3 # dim\r\n3 1 0\r\n0 0 0\r\n1 0 0 # x\r\n0 1 0\r\n3 0 1 2\r\n", {0, 0, 0, 1, 0, 0, 0, 1, 0}},
+      // Free format: a record may span lines.
+      {"OFF 3 1 0 0 0\n0 1 0 0 0\n1\n0 3 0\n1 2\n", {0, 0, 0, 1, 0, 0, 0, 1, 0}},
+  };
+  for (const Case& c : cases) {
+    Mesh m;
+    const Status s = parse_off(c.text, "v.off", &m);
+    ASSERT_TRUE(s.ok()) << s.message() << " in " << c.text;
+    EXPECT_EQ(m.positions, c.positions) << c.text;
+    EXPECT_EQ(m.triangles, (std::vector<int32_t>{0, 1, 2})) << c.text;
+  }
+}
+
+TEST(OffTest, RoundTripIsExact) {
+  Mesh m;
+  m.positions = {0.1, -2.5e-300, 1e300, 1.0 / 3.0, 123456789.123456789, -0.0, 5, 6, 7, 8, 9, 10};
+  m.triangles = {0, 1, 2, 2, 1, 3, 3, 3, 0};  // a degenerate face is kept
+  Mesh back;
+  ASSERT_TRUE(parse_off(format_off(m), "r.off", &back).ok());
+  EXPECT_EQ(back.positions, m.positions);
+  EXPECT_EQ(back.triangles, m.triangles);
+}
+
+}  // namespace
+}  // namespace gab

@@ -2,7 +2,10 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
+
+#include "gab/sparse/status.h"
 
 namespace gab {
 
@@ -13,5 +16,11 @@ struct Mesh {
   int32_t num_vertices() const { return static_cast<int32_t>(positions.size() / 3); }
   int32_t num_triangles() const { return static_cast<int32_t>(triangles.size() / 3); }
 };
+
+// Checks what every reader guarantees: at least one vertex and one triangle,
+// array sizes multiples of 3 and within int32, finite coordinates, indices in
+// range. Degenerate or duplicate triangles and unreferenced vertices are
+// legal. Messages start with `name`. O(V + T).
+Status validate_mesh(const Mesh& mesh, const std::string& name);
 
 }  // namespace gab

@@ -1,0 +1,31 @@
+// Wavefront OBJ files: read (through tinyobjloader) and write.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "gab/mesh/mesh.h"
+#include "gab/sparse/status.h"
+
+namespace gab {
+
+// Reads the `v` and `f` records of an OBJ file (1-based or negative relative
+// indices; v/vt/vn triples use the v part; polygons fan-triangulated; other
+// records and .mtl libraries ignored). Errors name the file and line:
+// malformed or non-finite coordinates, missing ones, bad or out-of-range
+// indices, faces with fewer than 3 vertices, no vertices or no faces.
+// Coordinates are tinyobjloader's parse, which may differ from the decimal in
+// the last bits. O(file size).
+Status read_obj(const std::string& path, Mesh* mesh);
+
+// Same, from the file's bytes in memory; `name` is used in messages.
+Status parse_obj(std::string_view text, const std::string& name, Mesh* mesh);
+
+// The OBJ text of a mesh: "v x y z" (shortest round-trip decimals) and
+// "f i j k" (1-based) lines. O(V + T).
+std::string format_obj(const Mesh& mesh);
+
+// Validates the mesh, then writes format_obj(mesh) atomically. O(V + T).
+Status write_obj(const std::string& path, const Mesh& mesh);
+
+}  // namespace gab

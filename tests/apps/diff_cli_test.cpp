@@ -1,0 +1,167 @@
+// `gab diff` (DESIGN.md section 6), by running the gab binary.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+namespace {
+
+struct CommandResult {
+  int exit_code;
+  std::string out;
+  std::string err;
+};
+
+CommandResult run_gab(const std::string& args) {
+  // Unique per process and call: ctest runs these tests in parallel.
+  static int calls = 0;
+  const std::string err_path = ::testing::TempDir() + "/gab_diff_stderr_" + std::to_string(getpid()) + "_" +
+                               std::to_string(++calls) + ".txt";
+  const std::string cmd = std::string(GAB_BINARY) + " " + args + " 2>" + err_path;
+  CommandResult r{-1, "", ""};
+  FILE* p = popen(cmd.c_str(), "r");
+  if (p == nullptr) return r;
+  char buf[4096];
+  size_t got;
+  while ((got = fread(buf, 1, sizeof(buf), p)) > 0) r.out.append(buf, got);
+  const int status = pclose(p);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream e(err_path);
+  r.err.assign(std::istreambuf_iterator<char>(e), std::istreambuf_iterator<char>());
+  std::remove(err_path.c_str());
+  return r;
+}
+
+std::string write_temp(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + "/" + std::to_string(getpid()) + "_diff_" + name;
+  std::ofstream(path, std::ios::binary) << text;
+  return path;
+}
+
+// The value of "key" in a one-line JSON object; NaN if absent or null.
+double json_number(const std::string& json, const std::string& key) {
+  const size_t at = json.find("\"" + key + "\": ");
+  if (at == std::string::npos) return std::nan("");
+  const std::string rest = json.substr(at + key.size() + 4);
+  if (rest.rfind("null", 0) == 0) return std::nan("");
+  return std::stod(rest);
+}
+bool json_null(const std::string& json, const std::string& key) {
+  return json.find("\"" + key + "\": null") != std::string::npos;
+}
+
+// The unit square (two triangles) at height z, as OFF; and as OBJ.
+std::string square_off(double z) {
+  const std::string h = std::to_string(z);
+  return "OFF\n4 2 0\n0 0 " + h + "\n1 0 " + h + "\n1 1 " + h + "\n0 1 " + h + "\n3 0 1 2\n3 0 2 3\n";
+}
+
+TEST(DiffCliTest, JsonHasTheContractKeysAndKnownValues) {
+  const std::string a = write_temp("a.off", square_off(0));
+  const std::string b = write_temp("b.obj", "v 0 0 0.25\nv 1 0 0.25\nv 1 1 0.25\nv 0 1 0.25\nf 1 2 3\nf 1 3 4\n");
+  const CommandResult r = run_gab("diff " + a + " " + b + " --json --samples 5000");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // Exactly one JSON object on one line, nothing else on stdout.
+  ASSERT_FALSE(r.out.empty());
+  EXPECT_EQ(r.out.front(), '{');
+  EXPECT_EQ(r.out.find('\n'), r.out.size() - 1);
+  EXPECT_EQ(r.out[r.out.size() - 2], '}');
+  const double diag = std::sqrt(2.0);
+  EXPECT_EQ(json_number(r.out, "n"), 4);
+  EXPECT_DOUBLE_EQ(json_number(r.out, "linf"), 0.25);
+  EXPECT_DOUBLE_EQ(json_number(r.out, "rms"), 0.25);
+  EXPECT_NEAR(json_number(r.out, "linf_rel"), 0.25 / diag, 1e-8);
+  EXPECT_NEAR(json_number(r.out, "rms_rel"), 0.25 / diag, 1e-8);
+  EXPECT_NEAR(json_number(r.out, "metro_mean_rel"), 0.25 / diag, 1e-8);
+  EXPECT_NEAR(json_number(r.out, "metro_rms_rel"), 0.25 / diag, 1e-8);
+  EXPECT_NEAR(json_number(r.out, "hausdorff_rel"), 0.25 / diag, 1e-8);
+  EXPECT_EQ(json_number(r.out, "samples"), 5000);
+  EXPECT_EQ(r.err, "");
+}
+
+TEST(DiffCliTest, DifferentVertexCountsGiveNullVertexMetrics) {
+  const std::string a = write_temp("a2.off", square_off(0));
+  // The same square as four triangles around a centre vertex, in ASCII PLY.
+  const std::string b = write_temp(
+      "b2.ply",
+      "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 4\nproperty list uchar int vertex_indices\nend_header\n"
+      "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 0\n3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n");
+  const CommandResult r = run_gab("diff " + a + " " + b + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* key : {"linf", "rms", "linf_rel", "rms_rel"}) EXPECT_TRUE(json_null(r.out, key)) << key;
+  // Same surface, different tessellation: zero up to rounding.
+  EXPECT_LT(json_number(r.out, "hausdorff_rel"), 1e-12);
+  EXPECT_LT(json_number(r.out, "metro_mean_rel"), 1e-12);
+  EXPECT_EQ(json_number(r.out, "n"), 4);
+  EXPECT_EQ(json_number(r.out, "n_b"), 5);
+}
+
+TEST(DiffCliTest, NoSamplesLeavesOnlyTheVertexHausdorff) {
+  const std::string a = write_temp("a5.off", square_off(0));
+  const std::string b = write_temp("b5.off", square_off(2));
+  const CommandResult r = run_gab("diff " + a + " " + b + " --samples 0 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(json_null(r.out, "metro_mean_rel"));
+  EXPECT_TRUE(json_null(r.out, "metro_rms_rel"));
+  EXPECT_NEAR(json_number(r.out, "hausdorff_rel"), 2 / std::sqrt(2.0), 1e-8);
+}
+
+TEST(DiffCliTest, HumanReadableOutput) {
+  const std::string a = write_temp("a3.off", square_off(0));
+  const std::string b = write_temp("b3.off", square_off(0.5));
+  const CommandResult r = run_gab("diff " + a + " " + b + " --samples 100");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("vertex distance: max 0.5"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Hausdorff 0.5"), std::string::npos) << r.out;
+}
+
+TEST(DiffCliTest, BadInputExitsOneWithOneLine) {
+  const std::string a = write_temp("a4.off", square_off(0));
+  const std::string bad = write_temp("bad.ply", square_off(0));
+  CommandResult r = run_gab("diff " + a + " " + bad + " --json");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(r.err, "gab: error: " + bad + ": not a PLY file (it looks like OFF)\n");
+  r = run_gab("diff /nonexistent/a.obj " + a);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "gab: error: /nonexistent/a.obj: cannot open: No such file or directory\n");
+  const std::string hostile = write_temp("hostile.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 9\n");
+  r = run_gab("diff " + hostile + " " + a);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "gab: error: " + hostile + ":6: face 0: vertex index 9 out of range [0, 3)\n");
+  r = run_gab("diff " + a + " model.stl");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "gab: error: model.stl: unsupported mesh type '.stl' (expected .obj, .off or .ply)\n");
+}
+
+TEST(DiffCliTest, BadUsageExitsTwo) {
+  EXPECT_EQ(run_gab("diff").exit_code, 2);
+  EXPECT_EQ(run_gab("diff a.off").exit_code, 2);
+  EXPECT_EQ(run_gab("diff a.off b.off c.off").exit_code, 2);
+  const CommandResult r = run_gab("diff a.off b.off --samples lots");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--samples must be an integer in [0, 1000000000], got 'lots'"), std::string::npos) << r.err;
+  EXPECT_EQ(run_gab("diff a.off b.off --samples -5").exit_code, 2);
+  EXPECT_EQ(run_gab("diff a.off b.off --frobnicate").exit_code, 2);
+}
+
+TEST(DiffCliTest, FactorReadsEveryMeshFormat) {
+  const std::string obj = write_temp("sq.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
+  const std::string ply = write_temp(
+      "sq.ply",
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n");
+  for (const std::string& path : {obj, ply}) {
+    const CommandResult r = run_gab("factor " + path + " --json --anchors 1 --repeat 1");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(json_number(r.out, "n"), 4) << path;
+    EXPECT_LT(json_number(r.out, "residual"), 1e-12) << path;
+  }
+}
+
+}  // namespace

@@ -1,0 +1,78 @@
+// BFS hop distances and farthest-point sampling on the edge graph.
+#include "gab/mesh/graph_distance.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "mesh_test_util.h"
+
+namespace gab {
+namespace {
+
+TEST(BfsTest, GridDistancesAreManhattanLikeAndUnreachableIsMinusOne) {
+  // On the split-square grid the diagonals (v, ur) are edges, so the hop
+  // distance from (0, 0) to (i, j) is max(i, j).
+  Mesh m = testing_util::grid(5, 4);
+  m.positions.insert(m.positions.end(), {9, 9, 9});  // isolated vertex 30
+  const EdgeGraph g = build_edge_graph(m);
+  std::vector<int32_t> d;
+  ASSERT_TRUE(bfs_distances(g, {0}, &d).ok());
+  for (int j = 0; j <= 4; ++j)
+    for (int i = 0; i <= 5; ++i) EXPECT_EQ(d[i + 6 * j], std::max(i, j)) << i << "," << j;
+  EXPECT_EQ(d[30], -1);
+  // Several sources: the nearest one counts.
+  ASSERT_TRUE(bfs_distances(g, {0, 29, 29}, &d).ok());
+  EXPECT_EQ(d[29], 0);
+  EXPECT_EQ(d[5], 4);  // (5, 0): 5 from vertex 0, 4 from (5, 4)
+  EXPECT_EQ(bfs_distances(g, {31}, &d).message(), "source 31 is not a vertex (n = 31)");
+}
+
+TEST(FarthestPointTest, CoversComponentsFirstThenSpreads) {
+  // Grid 0..29, a lone triangle 30..32, an isolated vertex 33.
+  Mesh m = testing_util::grid(5, 4);
+  m.positions.insert(m.positions.end(), {20, 0, 0, 21, 0, 0, 20, 1, 0, 40, 40, 40});
+  m.triangles.insert(m.triangles.end(), {30, 31, 32});
+  const EdgeGraph g = build_edge_graph(m);
+  std::vector<int32_t> picked;
+  ASSERT_TRUE(farthest_point_sampling(g, 6, {}, &picked).ok());
+  // 0 first (nothing chosen: all infinitely far, smallest index), then the
+  // smallest vertex of each component still without a pick, then the grid
+  // grid vertex farthest from 0: (5, 0) = 5 and (5, 4) = 29 are both 5
+  // hops away (diagonals are edges), and the tie goes to the smaller index.
+  ASSERT_EQ(picked.size(), 6u);
+  EXPECT_EQ(std::vector<int32_t>(picked.begin(), picked.begin() + 4), (std::vector<int32_t>{0, 30, 33, 5}));
+  // The result is a deterministic function of the input.
+  std::vector<int32_t> again;
+  ASSERT_TRUE(farthest_point_sampling(g, 6, {}, &again).ok());
+  EXPECT_EQ(again, picked);
+}
+
+TEST(FarthestPointTest, GreedyPropertyAndSeeds) {
+  const Mesh m = testing_util::torus(30, 20);
+  const EdgeGraph g = build_edge_graph(m);
+  std::vector<int32_t> picked;
+  ASSERT_TRUE(farthest_point_sampling(g, 40, {17, 250}, &picked).ok());
+  ASSERT_EQ(picked.size(), 40u);
+  EXPECT_EQ(picked[0], 17);
+  EXPECT_EQ(picked[1], 250);
+  // Each pick is at maximal distance from those before it (checked by BFS).
+  for (size_t k = 2; k < picked.size(); ++k) {
+    std::vector<int32_t> d;
+    ASSERT_TRUE(bfs_distances(g, std::vector<int32_t>(picked.begin(), picked.begin() + k), &d).ok());
+    const int32_t far = *std::max_element(d.begin(), d.end());
+    EXPECT_EQ(d[picked[k]], far) << "pick " << k;
+    EXPECT_EQ(std::find(d.begin(), d.end(), far) - d.begin(), picked[k]) << "ties go to the smallest index";
+  }
+  // Asking for more than n gives every vertex exactly once.
+  ASSERT_TRUE(farthest_point_sampling(g, 100000, {}, &picked).ok());
+  std::vector<int32_t> sorted = picked;
+  std::sort(sorted.begin(), sorted.end());
+  ASSERT_EQ(sorted.size(), static_cast<size_t>(g.num_vertices()));
+  for (int32_t v = 0; v < g.num_vertices(); ++v) EXPECT_EQ(sorted[v], v);
+  EXPECT_EQ(farthest_point_sampling(g, 3, {5, 5}, &picked).message(), "seed 5 given twice");
+  EXPECT_EQ(farthest_point_sampling(g, 3, {-1}, &picked).message(), "seed -1 is not a vertex (n = 600)");
+}
+
+}  // namespace
+}  // namespace gab
