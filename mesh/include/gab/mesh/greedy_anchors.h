@@ -1,0 +1,39 @@
+// Greedy anchor selection, one anchor per step as in the paper (Sorkine et
+// al. 2005, sec. IV): start from a well-spread set, then repeatedly
+// reconstruct, anchor the vertex whose reconstruction is farthest (in 3D)
+// from its original position, and update the factor.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gab/mesh/edge_graph.h"
+#include "gab/mesh/mesh.h"
+#include "gab/sparse/status.h"
+
+namespace gab {
+
+struct GreedyOptions {
+  double weight = 1.0;        // anchor weight w of the relaxed basis
+  int32_t initial = 0;        // farthest-point (hop) spread anchors to start from;
+                              // raised to one per connected component
+  int32_t max_anchors = 100;  // stop when this many anchors are chosen
+  double target_rms_rel = 0;  // or when the relative vertex RMS is at most this (0: off)
+};
+
+// One point of the error curve: after `anchors` anchors, the vertex RMS and
+// max 3D distance, relative to the bounding-box diagonal.
+struct GreedyStep {
+  int32_t anchors;
+  double rms_rel;
+  double linf_rel;
+};
+
+// Chooses anchors (initial set first, then in selection order) with their
+// exact original positions as coefficients (quantization belongs to the
+// codec). `curve` gets one entry per reconstruction. Cost per step: one
+// three-right-hand-side solve, one factor update, an O(n) error scan.
+Status select_anchors_greedy(const Mesh& mesh, const EdgeGraph& graph, const GreedyOptions& options,
+                             std::vector<int32_t>* anchors, std::vector<GreedyStep>* curve);
+
+}  // namespace gab

@@ -1,0 +1,56 @@
+// The relaxed geometry-aware basis (Sorkine et al. 2005, eq. 1; DESIGN.md
+// section 1): the shape  x~ = argmin ||L x||^2 + w^2 sum_a (x_a - c_a)^2  for
+// x, y and z, L the uniform Laplacian of the connectivity. The matrix
+// L^T L + w^2 E^T E is analyzed and factored once; further anchors enter
+// through the engine's Givens updater (no refactorization), which is what an
+// encoder's greedy loop and a progressive decoder both need.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gab/mesh/edge_graph.h"
+#include "gab/sparse/cholesky.h"
+#include "gab/sparse/status.h"
+
+namespace gab {
+
+class RelaxedReconstruction {
+ public:
+  // Analyzes and factors the system for the initial anchors, whose
+  // coefficients are `coefficients` (3 per anchor: x y z). Anchors must be
+  // distinct vertices and every connected component needs one (otherwise
+  // the system is singular: the error names a vertex of such a component).
+  // Cost: one AMD ordering, analysis and factorization.
+  Status init(const EdgeGraph& graph, double weight, const std::vector<int32_t>& anchors,
+              const std::vector<double>& coefficients);
+
+  // Adds anchors (distinct, not anchored yet) with their coefficients, by
+  // rank-one updates of the factor. Cost: the factor's entries on each
+  // anchor's elimination-tree path (batched 8 at a time).
+  Status add_anchors(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
+
+  // The current shape, 3 coordinates per vertex (x0 y0 z0 x1 ...). Cost: one
+  // solve with three right-hand sides.
+  Status reconstruct(std::vector<double>* positions);
+
+  int32_t num_vertices() const { return n_; }
+  int32_t num_anchors() const { return static_cast<int32_t>(anchors_.size()); }
+  // Anchors in the order they were given.
+  const std::vector<int32_t>& anchors() const { return anchors_; }
+  bool is_anchor(int32_t v) const { return anchored_[v] != 0; }
+  const Cholesky& cholesky() const { return chol_; }
+
+ private:
+  Status check_new(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
+  void add_to_rhs(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
+
+  int32_t n_ = 0;
+  double weight_ = 0.0;
+  Cholesky chol_;
+  std::vector<int32_t> anchors_;
+  std::vector<char> anchored_;
+  std::vector<double> rhs_;  // w^2 E^T c: n x 3 column-major
+};
+
+}  // namespace gab

@@ -1,0 +1,106 @@
+#include "gab/mesh/relaxed_reconstruction.h"
+
+#include <cmath>
+#include <string>
+
+#include "gab/mesh/normal_matrix.h"
+
+namespace gab {
+
+Status RelaxedReconstruction::check_new(const std::vector<int32_t>& anchors,
+                                        const std::vector<double>& coefficients) {
+  if (coefficients.size() != 3 * anchors.size()) {
+    return Status::Error(StatusCode::kInvalidArgument,
+                         "need 3 coefficients per anchor: got " + std::to_string(coefficients.size()) +
+                             " for " + std::to_string(anchors.size()) + " anchors");
+  }
+  for (double c : coefficients) {
+    if (!std::isfinite(c)) return Status::Error(StatusCode::kInvalidArgument, "anchor coefficient is not finite");
+  }
+  // Mark the new anchors 2 while checking (1 = anchored before), then unmark.
+  Status status;
+  size_t marked = 0;
+  for (; marked < anchors.size(); ++marked) {
+    const int32_t a = anchors[marked];
+    if (a < 0 || a >= n_) {
+      status = Status::Error(StatusCode::kInvalidArgument,
+                             "anchor " + std::to_string(a) + " is not a vertex (n = " + std::to_string(n_) + ")");
+      break;
+    }
+    if (anchored_[a] != 0) {
+      status = Status::Error(StatusCode::kInvalidArgument,
+                             anchored_[a] == 1 ? "vertex " + std::to_string(a) + " is already an anchor"
+                                               : "anchor " + std::to_string(a) + " given twice");
+      break;
+    }
+    anchored_[a] = 2;
+  }
+  for (size_t i = 0; i < marked; ++i) anchored_[anchors[i]] = 0;
+  return status;
+}
+
+void RelaxedReconstruction::add_to_rhs(const std::vector<int32_t>& anchors,
+                                       const std::vector<double>& coefficients) {
+  const double w2 = weight_ * weight_;
+  for (size_t i = 0; i < anchors.size(); ++i) {
+    for (int c = 0; c < 3; ++c) {
+      rhs_[anchors[i] + static_cast<size_t>(c) * n_] += w2 * coefficients[3 * i + c];
+    }
+    anchored_[anchors[i]] = 1;
+    anchors_.push_back(anchors[i]);
+  }
+}
+
+Status RelaxedReconstruction::init(const EdgeGraph& graph, double weight,
+                                   const std::vector<int32_t>& anchors,
+                                   const std::vector<double>& coefficients) {
+  if (!(weight > 0.0) || !std::isfinite(weight)) {
+    return Status::Error(StatusCode::kInvalidArgument, "anchor weight must be positive and finite");
+  }
+  n_ = graph.num_vertices();
+  weight_ = weight;
+  anchors_.clear();
+  anchored_.assign(n_, 0);
+  rhs_.assign(static_cast<size_t>(n_) * 3, 0.0);
+  GAB_RETURN_IF_ERROR(check_new(anchors, coefficients));
+  // Every component needs an anchor, or L^T L + w^2 E^T E is singular there.
+  int32_t ncomp = 0;
+  const std::vector<int32_t> comp = connected_components(graph, &ncomp);
+  std::vector<char> covered(ncomp, 0);
+  for (int32_t a : anchors) covered[comp[a]] = 1;
+  for (int32_t v = 0; v < n_; ++v) {
+    if (!covered[comp[v]]) {
+      return Status::Error(StatusCode::kInvalidArgument,
+                           "the connected component of vertex " + std::to_string(v) +
+                               " has no anchor (every component needs one)");
+    }
+  }
+  CscMatrix a;
+  GAB_RETURN_IF_ERROR(assemble_normal_matrix(graph, anchors, weight, &a));
+  GAB_RETURN_IF_ERROR(chol_.analyze(a));
+  GAB_RETURN_IF_ERROR(chol_.factorize(a));
+  add_to_rhs(anchors, coefficients);
+  return Status::Ok();
+}
+
+Status RelaxedReconstruction::add_anchors(const std::vector<int32_t>& anchors,
+                                          const std::vector<double>& coefficients) {
+  if (!chol_.factorized()) return Status::Error(StatusCode::kInvalidArgument, "add_anchors before init");
+  GAB_RETURN_IF_ERROR(check_new(anchors, coefficients));
+  GAB_RETURN_IF_ERROR(chol_.add_anchors(anchors.data(), static_cast<int32_t>(anchors.size()), weight_));
+  add_to_rhs(anchors, coefficients);
+  return Status::Ok();
+}
+
+Status RelaxedReconstruction::reconstruct(std::vector<double>* positions) {
+  if (!chol_.factorized()) return Status::Error(StatusCode::kInvalidArgument, "reconstruct before init");
+  std::vector<double> x = rhs_;
+  GAB_RETURN_IF_ERROR(chol_.solve(x.data(), 3, n_));
+  positions->resize(static_cast<size_t>(n_) * 3);
+  for (int32_t v = 0; v < n_; ++v) {
+    for (int c = 0; c < 3; ++c) (*positions)[3 * static_cast<size_t>(v) + c] = x[v + static_cast<size_t>(c) * n_];
+  }
+  return Status::Ok();
+}
+
+}  // namespace gab

@@ -1,0 +1,130 @@
+// The relaxed geometry-aware reconstruction and greedy anchor selection.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gab/mesh/edge_graph.h"
+#include "gab/mesh/greedy_anchors.h"
+#include "gab/mesh/relaxed_reconstruction.h"
+#include "gab/mesh/subdivide.h"
+
+namespace gab {
+namespace {
+
+// A bumpy closed surface: an octahedron subdivided `levels` times, pushed
+// onto a sphere with radial bumps.
+Mesh bumpy_sphere(int levels) {
+  Mesh m;
+  m.positions = {1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1};
+  m.triangles = {0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5};
+  m = subdivide_midpoint(m, levels);
+  for (int32_t v = 0; v < m.num_vertices(); ++v) {
+    double* p = &m.positions[3 * static_cast<size_t>(v)];
+    const double r = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    const double bump = 1.0 + 0.15 * std::sin(5 * p[0] / r) * std::cos(3 * p[1] / r);
+    for (int k = 0; k < 3; ++k) p[k] *= bump / r;
+  }
+  return m;
+}
+
+std::vector<double> coefficients(const Mesh& m, const std::vector<int32_t>& anchors) {
+  std::vector<double> c;
+  for (int32_t a : anchors)
+    for (int k = 0; k < 3; ++k) c.push_back(m.positions[3 * static_cast<size_t>(a) + k]);
+  return c;
+}
+
+TEST(RelaxedReconstructionTest, UpdatedEqualsFreshFactorization) {
+  const Mesh m = bumpy_sphere(3);
+  const EdgeGraph g = build_edge_graph(m);
+  const std::vector<int32_t> first = {0, 1, 2, 3, 4, 5}, more = {10, 50, 77, 120, 200, 31, 9, 150, 8, 99};
+  RelaxedReconstruction updated, fresh;
+  ASSERT_TRUE(updated.init(g, 3.0, first, coefficients(m, first)).ok());
+  ASSERT_TRUE(updated.add_anchors(more, coefficients(m, more)).ok());
+  std::vector<int32_t> all = first;
+  all.insert(all.end(), more.begin(), more.end());
+  ASSERT_TRUE(fresh.init(g, 3.0, all, coefficients(m, all)).ok());
+  std::vector<double> a, b;
+  ASSERT_TRUE(updated.reconstruct(&a).ok());
+  ASSERT_TRUE(fresh.reconstruct(&b).ok());
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) EXPECT_NEAR(a[i], b[i], 1e-11);
+  EXPECT_EQ(updated.num_anchors(), 16);
+}
+
+TEST(RelaxedReconstructionTest, ZeroCoordinateStaysExactlyZero) {
+  // Every anchor has z = 0, so the minimizer's z is exactly 0 everywhere.
+  Mesh m = bumpy_sphere(2);
+  for (int32_t v = 0; v < m.num_vertices(); ++v) m.positions[3 * static_cast<size_t>(v) + 2] = 0.0;
+  const EdgeGraph g = build_edge_graph(m);
+  RelaxedReconstruction rec;
+  const std::vector<int32_t> anchors = {0, 7, 33, 60};
+  ASSERT_TRUE(rec.init(g, 1.0, anchors, coefficients(m, anchors)).ok());
+  std::vector<double> x;
+  ASSERT_TRUE(rec.reconstruct(&x).ok());
+  for (int32_t v = 0; v < m.num_vertices(); ++v) EXPECT_EQ(x[3 * static_cast<size_t>(v) + 2], 0.0);
+}
+
+TEST(RelaxedReconstructionTest, HeavyAnchorsEverywhereReproduceTheShape) {
+  const Mesh m = bumpy_sphere(2);
+  const EdgeGraph g = build_edge_graph(m);
+  std::vector<int32_t> all(m.num_vertices());
+  for (int32_t v = 0; v < m.num_vertices(); ++v) all[v] = v;
+  RelaxedReconstruction rec;
+  ASSERT_TRUE(rec.init(g, 1000.0, all, coefficients(m, all)).ok());
+  std::vector<double> x;
+  ASSERT_TRUE(rec.reconstruct(&x).ok());
+  for (size_t i = 0; i < x.size(); ++i) EXPECT_NEAR(x[i], m.positions[i], 1e-4);
+}
+
+TEST(RelaxedReconstructionTest, ClearErrors) {
+  Mesh m = bumpy_sphere(1);
+  // An extra isolated vertex: a component of its own.
+  m.positions.insert(m.positions.end(), {5.0, 5.0, 5.0});
+  const EdgeGraph g = build_edge_graph(m);
+  const int32_t isolated = m.num_vertices() - 1;
+  RelaxedReconstruction rec;
+  EXPECT_EQ(rec.init(g, 1.0, {0}, coefficients(m, {0})).message(),
+            "the connected component of vertex " + std::to_string(isolated) + " has no anchor (every component needs one)");
+  EXPECT_EQ(rec.init(g, 0.0, {0, isolated}, coefficients(m, {0, isolated})).message(),
+            "anchor weight must be positive and finite");
+  EXPECT_EQ(rec.init(g, 1.0, {0, isolated}, {1.0}).message(), "need 3 coefficients per anchor: got 1 for 2 anchors");
+  ASSERT_TRUE(rec.init(g, 1.0, {0, isolated}, coefficients(m, {0, isolated})).ok());
+  EXPECT_EQ(rec.add_anchors({0}, coefficients(m, {0})).message(), "vertex 0 is already an anchor");
+  EXPECT_EQ(rec.add_anchors({3, 3}, coefficients(m, {3, 3})).message(), "anchor 3 given twice");
+  EXPECT_EQ(rec.add_anchors({-1}, {0, 0, 0}).message(), "anchor -1 is not a vertex (n = " + std::to_string(m.num_vertices()) + ")");
+  // A failed call changes nothing: 3 can still be added.
+  EXPECT_TRUE(rec.add_anchors({3}, coefficients(m, {3})).ok());
+  EXPECT_EQ(rec.num_anchors(), 3);
+}
+
+TEST(GreedyAnchorsTest, ErrorFallsAndAnchorsAreDistinct) {
+  const Mesh m = bumpy_sphere(3);
+  const EdgeGraph g = build_edge_graph(m);
+  GreedyOptions options;
+  options.weight = 10.0;
+  options.initial = 6;
+  options.max_anchors = 60;
+  std::vector<int32_t> anchors;
+  std::vector<GreedyStep> curve;
+  ASSERT_TRUE(select_anchors_greedy(m, g, options, &anchors, &curve).ok());
+  ASSERT_EQ(anchors.size(), 60u);
+  EXPECT_EQ(curve.front().anchors, 6);
+  EXPECT_EQ(curve.back().anchors, 60);
+  EXPECT_EQ(curve.size(), 55u);
+  std::vector<char> seen(m.num_vertices(), 0);
+  for (int32_t a : anchors) {
+    EXPECT_FALSE(seen[a]);
+    seen[a] = 1;
+  }
+  EXPECT_LT(curve.back().rms_rel, 0.5 * curve.front().rms_rel);
+  EXPECT_LT(curve.back().linf_rel, curve.front().linf_rel);
+  // A target stops early.
+  options.target_rms_rel = curve[20].rms_rel;
+  ASSERT_TRUE(select_anchors_greedy(m, g, options, &anchors, &curve).ok());
+  EXPECT_LE(curve.back().rms_rel, options.target_rms_rel);
+  EXPECT_LE(curve.back().anchors, 26);
+}
+
+}  // namespace
+}  // namespace gab
