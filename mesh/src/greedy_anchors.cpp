@@ -20,6 +20,36 @@ std::vector<double> coefficients_of(const Mesh& mesh, const std::vector<int32_t>
   return c;
 }
 
+// The `count` non-anchored vertices of largest error among the 1-ring local
+// maxima (error at least every neighbour's), largest first, ties to the
+// smaller index. With count == 1 this is the worst non-anchored vertex (the
+// paper's rule), whether or not it is a local maximum. Needs a free vertex.
+std::vector<int32_t> pick_batch(const EdgeGraph& graph, const std::vector<double>& error,
+                                const RelaxedReconstruction& rec, int32_t count) {
+  const int32_t n = graph.num_vertices();
+  std::vector<int32_t> candidates;
+  for (int32_t v = 0; v < n; ++v) {
+    if (rec.is_anchor(v)) continue;
+    bool local_max = true;
+    for (int32_t p = graph.offsets[v]; p < graph.offsets[v + 1] && local_max && count > 1; ++p) {
+      local_max = error[v] >= error[graph.neighbors[p]];
+    }
+    if (local_max) candidates.push_back(v);
+  }
+  auto worse = [&error](int32_t a, int32_t b) { return error[a] > error[b] || (error[a] == error[b] && a < b); };
+  if (candidates.empty()) {
+    // Every free vertex has an anchored neighbour with a larger error: fall
+    // back to the worst free vertex so the loop always makes progress.
+    for (int32_t v = 0; v < n; ++v) {
+      if (!rec.is_anchor(v) && (candidates.empty() || worse(v, candidates[0]))) candidates.assign(1, v);
+    }
+  }
+  const size_t keep = std::min<size_t>(static_cast<size_t>(count), candidates.size());
+  std::partial_sort(candidates.begin(), candidates.begin() + keep, candidates.end(), worse);
+  candidates.resize(keep);
+  return candidates;
+}
+
 }  // namespace
 
 Status select_anchors_greedy(const Mesh& mesh, const EdgeGraph& graph, const GreedyOptions& options,
@@ -37,33 +67,33 @@ Status select_anchors_greedy(const Mesh& mesh, const EdgeGraph& graph, const Gre
   const double diagonal = bounding_box_diagonal(mesh);
   const double scale = diagonal > 0 ? 1.0 / diagonal : 1.0;
   curve->clear();
-  std::vector<double> shape;
+  std::vector<double> shape, error(n);
   while (true) {
     GAB_RETURN_IF_ERROR(rec.reconstruct(&shape));
-    // One scan: the RMS and max over all vertices, and the worst vertex not
-    // anchored yet (ties: the smallest index).
-    double sum2 = 0.0, linf = 0.0, worst = -1.0;
-    int32_t worst_vertex = -1;
+    // One scan: the squared error per vertex, its RMS and max.
+    double sum2 = 0.0, linf = 0.0;
     for (int32_t v = 0; v < n; ++v) {
       double d2 = 0.0;
       for (int k = 0; k < 3; ++k) {
         const double d = shape[3 * static_cast<size_t>(v) + k] - mesh.positions[3 * static_cast<size_t>(v) + k];
         d2 += d * d;
       }
+      error[v] = d2;
       sum2 += d2;
       linf = std::max(linf, d2);
-      if (!rec.is_anchor(v) && d2 > worst) {
-        worst = d2;
-        worst_vertex = v;
-      }
     }
     const double rms_rel = std::sqrt(sum2 / std::max(n, 1)) * scale;
     curve->push_back({rec.num_anchors(), rms_rel, std::sqrt(linf) * scale});
-    if (rec.num_anchors() >= options.max_anchors || worst_vertex < 0 ||
+    if (rec.num_anchors() >= options.max_anchors || rec.num_anchors() >= n ||
         (options.target_rms_rel > 0 && rms_rel <= options.target_rms_rel)) {
       break;
     }
-    const std::vector<int32_t> next = {worst_vertex};
+    const int64_t wanted = options.batch_fraction > 0
+                               ? static_cast<int64_t>(std::ceil(options.batch_fraction * rec.num_anchors()))
+                               : 1;
+    const int32_t room = options.max_anchors - rec.num_anchors();
+    const std::vector<int32_t> next =
+        pick_batch(graph, error, rec, static_cast<int32_t>(std::min<int64_t>(std::max<int64_t>(wanted, 1), room)));
     GAB_RETURN_IF_ERROR(rec.add_anchors(next, coefficients_of(mesh, next)));
   }
   *anchors = rec.anchors();

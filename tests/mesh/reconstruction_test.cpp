@@ -128,3 +128,44 @@ TEST(GreedyAnchorsTest, ErrorFallsAndAnchorsAreDistinct) {
 
 }  // namespace
 }  // namespace gab
+
+namespace gab {
+namespace {
+
+TEST(GreedyAnchorsTest, BatchedReachesTheCountInFewerStepsAtComparableError) {
+  const Mesh m = bumpy_sphere(3);
+  const EdgeGraph g = build_edge_graph(m);
+  GreedyOptions options;
+  options.weight = 10.0;
+  options.initial = 10;
+  options.max_anchors = 80;
+  std::vector<int32_t> single, batched;
+  std::vector<GreedyStep> curve_single, curve_batched;
+  ASSERT_TRUE(select_anchors_greedy(m, g, options, &single, &curve_single).ok());
+  options.batch_fraction = 0.1;
+  ASSERT_TRUE(select_anchors_greedy(m, g, options, &batched, &curve_batched).ok());
+  EXPECT_EQ(batched.size(), 80u);  // the last batch is cut to the limit
+  EXPECT_EQ(curve_batched.back().anchors, 80);
+  EXPECT_LT(curve_batched.size(), curve_single.size() / 3);
+  EXPECT_LT(curve_batched.back().rms_rel, 1.3 * curve_single.back().rms_rel);
+  std::vector<char> seen(m.num_vertices(), 0);
+  for (int32_t a : batched) {
+    EXPECT_FALSE(seen[a]);
+    seen[a] = 1;
+  }
+}
+
+TEST(GreedyAnchorsTest, EveryVertexAnchoredStops) {
+  const Mesh m = bumpy_sphere(1);
+  const EdgeGraph g = build_edge_graph(m);
+  GreedyOptions options;
+  options.max_anchors = 1000;  // more than the vertices
+  options.batch_fraction = 0.5;
+  std::vector<int32_t> anchors;
+  std::vector<GreedyStep> curve;
+  ASSERT_TRUE(select_anchors_greedy(m, g, options, &anchors, &curve).ok());
+  EXPECT_EQ(static_cast<int32_t>(anchors.size()), m.num_vertices());
+}
+
+}  // namespace
+}  // namespace gab

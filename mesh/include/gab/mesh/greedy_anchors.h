@@ -19,6 +19,11 @@ struct GreedyOptions {
                               // raised to one per connected component
   int32_t max_anchors = 100;  // stop when this many anchors are chosen
   double target_rms_rel = 0;  // or when the relative vertex RMS is at most this (0: off)
+  // 0: one anchor per step (the paper). Otherwise each step anchors up to
+  // max(1, ceil(batch_fraction * anchors so far)) vertices: the largest-error
+  // vertices among those whose error is a maximum over their 1-ring (so a
+  // batch never piles anchors onto one bump).
+  double batch_fraction = 0.0;
 };
 
 // One point of the error curve: after `anchors` anchors, the vertex RMS and
@@ -32,7 +37,8 @@ struct GreedyStep {
 // Chooses anchors (initial set first, then in selection order) with their
 // exact original positions as coefficients (quantization belongs to the
 // codec). `curve` gets one entry per reconstruction. Cost per step: one
-// three-right-hand-side solve, one factor update, an O(n) error scan.
+// three-right-hand-side solve, one (batched) factor update, an O(V + E)
+// error scan.
 Status select_anchors_greedy(const Mesh& mesh, const EdgeGraph& graph, const GreedyOptions& options,
                              std::vector<int32_t>* anchors, std::vector<GreedyStep>* curve);
 
