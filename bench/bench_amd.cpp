@@ -21,6 +21,9 @@
 #include <utility>
 #include <vector>
 
+#include "gab/mesh/edge_graph.h"
+#include "gab/mesh/mesh_io.h"
+#include "gab/mesh/normal_matrix.h"
 #include "gab/sparse/amd.h"
 
 #ifdef GAB_HAVE_SUITESPARSE_AMD
@@ -30,67 +33,6 @@
 namespace {
 
 using gab::CscMatrix;
-
-// Edge graph of an ASCII OFF mesh; empty if the file is missing or malformed.
-std::vector<std::vector<int32_t>> read_off_edge_graph(const std::string& path) {
-  std::ifstream in(path);
-  std::string magic;
-  int64_t nv = 0, nf = 0, ne = 0;
-  if (!(in >> magic >> nv >> nf >> ne) || magic != "OFF" || nv <= 0 || nv > (1 << 26)) return {};
-  double coord;
-  for (int64_t k = 0; k < 3 * nv; ++k) {
-    if (!(in >> coord)) return {};
-  }
-  std::vector<std::vector<int32_t>> adj(static_cast<size_t>(nv));
-  std::vector<int32_t> face;
-  for (int64_t f = 0; f < nf; ++f) {
-    int32_t count = 0;
-    if (!(in >> count) || count < 0 || count > 64) return {};
-    face.resize(static_cast<size_t>(count));
-    for (int32_t& v : face) {
-      if (!(in >> v) || v < 0 || v >= nv) return {};
-    }
-    for (int32_t k = 0; k < count; ++k) {
-      const int32_t a = face[k], b = face[(k + 1) % count];
-      if (a != b) {
-        adj[a].push_back(b);
-        adj[b].push_back(a);
-      }
-    }
-  }
-  for (auto& list : adj) {
-    std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
-  }
-  return adj;
-}
-
-// Lower triangle (incl. diagonal) of the pattern "edge distance <= 2".
-CscMatrix distance2_lower(const std::vector<std::vector<int32_t>>& adj) {
-  const int32_t n = static_cast<int32_t>(adj.size());
-  CscMatrix a;
-  a.nrows = a.ncols = n;
-  a.colptr.assign(static_cast<size_t>(n) + 1, 0);
-  std::vector<int32_t> mark(static_cast<size_t>(n), -1), rows;
-  for (int32_t j = 0; j < n; ++j) {
-    rows.clear();
-    auto add = [&](int32_t v) {
-      if (v >= j && mark[v] != j) {
-        mark[v] = j;
-        rows.push_back(v);
-      }
-    };
-    add(j);
-    for (int32_t u : adj[j]) {
-      add(u);
-      for (int32_t w : adj[u]) add(w);
-    }
-    std::sort(rows.begin(), rows.end());
-    a.rowind.insert(a.rowind.end(), rows.begin(), rows.end());
-    a.colptr[j + 1] = static_cast<int32_t>(a.rowind.size());
-  }
-  return a;
-}
 
 // Lower triangle (incl. diagonal) of the 5-point (2D, nz == 1) or 7-point grid graph.
 CscMatrix grid_lower(int32_t nx, int32_t ny, int32_t nz) {
@@ -121,12 +63,12 @@ const CscMatrix* mesh_matrix(const std::string& name) {
   std::vector<std::string> dirs = {GAB_SHARED_MESHES};
   if (const char* extra = std::getenv("GAB_EXTRA_MESHES")) dirs.push_back(extra);
   CscMatrix a;
+  // The benchmark system of DESIGN.md section 6, through the mesh layer.
   for (const std::string& dir : dirs) {
-    const auto adj = read_off_edge_graph(dir + "/" + name + ".off");
-    if (!adj.empty()) {
-      a = distance2_lower(adj);
-      break;
-    }
+    gab::Mesh mesh;
+    if (!gab::read_mesh(dir + "/" + name + ".off", &mesh).ok()) continue;
+    const gab::EdgeGraph graph = gab::build_edge_graph(mesh);
+    if (gab::assemble_normal_matrix(graph, gab::benchmark_anchors(graph, 100), 1.0, &a).ok()) break;
   }
   CscMatrix& slot = cache[name];
   slot = std::move(a);

@@ -1,6 +1,5 @@
 // `gab diff` (DESIGN.md section 6), by running the gab binary.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -8,39 +7,13 @@
 #include <fstream>
 #include <string>
 
+#include "run_gab.h"
+
 namespace {
 
-struct CommandResult {
-  int exit_code;
-  std::string out;
-  std::string err;
-};
-
-CommandResult run_gab(const std::string& args) {
-  // Unique per process and call: ctest runs these tests in parallel.
-  static int calls = 0;
-  const std::string err_path = ::testing::TempDir() + "/gab_diff_stderr_" + std::to_string(getpid()) + "_" +
-                               std::to_string(++calls) + ".txt";
-  const std::string cmd = std::string(GAB_BINARY) + " " + args + " 2>" + err_path;
-  CommandResult r{-1, "", ""};
-  FILE* p = popen(cmd.c_str(), "r");
-  if (p == nullptr) return r;
-  char buf[4096];
-  size_t got;
-  while ((got = fread(buf, 1, sizeof(buf), p)) > 0) r.out.append(buf, got);
-  const int status = pclose(p);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream e(err_path);
-  r.err.assign(std::istreambuf_iterator<char>(e), std::istreambuf_iterator<char>());
-  std::remove(err_path.c_str());
-  return r;
-}
-
-std::string write_temp(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + "/" + std::to_string(getpid()) + "_diff_" + name;
-  std::ofstream(path, std::ios::binary) << text;
-  return path;
-}
+using gab_test::CommandResult;
+using gab_test::run_gab;
+using gab_test::write_temp;
 
 // The value of "key" in a one-line JSON object; NaN if absent or null.
 double json_number(const std::string& json, const std::string& key) {

@@ -14,13 +14,7 @@ namespace {
 
 using testing_util::random_spd;
 
-std::vector<SimdLevel> supported_levels() {
-  std::vector<SimdLevel> levels;
-  for (SimdLevel l : {SimdLevel::kScalar, SimdLevel::kAvx2, SimdLevel::kAvx512}) {
-    if (dense_kernels(l).level == l) levels.push_back(l);
-  }
-  return levels;
-}
+using testing_util::supported_levels;
 
 // Max |L_supernodal - L_oracle| over the whole factor, relative to max |L|.
 double factor_difference(const Cholesky& chol, const CscMatrix& lower) {

@@ -7,9 +7,19 @@
 #include <vector>
 
 #include "gab/sparse/csc.h"
+#include "gab/sparse/dense_kernels.h"
 
 namespace gab {
 namespace testing_util {
+
+// The SIMD levels this machine runs (every test compares them all).
+inline std::vector<SimdLevel> supported_levels() {
+  std::vector<SimdLevel> levels;
+  for (SimdLevel l : {SimdLevel::kScalar, SimdLevel::kAvx2, SimdLevel::kAvx512}) {
+    if (dense_kernels(l).level == l) levels.push_back(l);
+  }
+  return levels;
+}
 
 // Random symmetric pattern with about `density` off-diagonal entries per
 // column, values making it strictly diagonally dominant (hence SPD). Extra

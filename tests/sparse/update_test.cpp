@@ -14,13 +14,7 @@ namespace {
 
 using testing_util::random_spd;
 
-std::vector<SimdLevel> supported_levels() {
-  std::vector<SimdLevel> levels;
-  for (SimdLevel l : {SimdLevel::kScalar, SimdLevel::kAvx2, SimdLevel::kAvx512}) {
-    if (dense_kernels(l).level == l) levels.push_back(l);
-  }
-  return levels;
-}
+using testing_util::supported_levels;
 
 // Adds w to the diagonal entry (j, j) of a lower-triangle CSC (which has it).
 void add_to_diagonal(CscMatrix* a, int32_t j, double w) {

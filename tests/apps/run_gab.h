@@ -1,0 +1,49 @@
+// Running the gab binary from a test: exit code, stdout and stderr apart.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+namespace gab_test {
+
+struct CommandResult {
+  int exit_code;
+  std::string out;
+  std::string err;
+};
+
+// Runs `gab ARGS`. stderr goes through a file unique per process and call
+// (ctest runs the tests in parallel).
+inline CommandResult run_gab(const std::string& args) {
+  static int calls = 0;
+  const std::string err_path = ::testing::TempDir() + "/gab_stderr_" + std::to_string(getpid()) + "_" +
+                               std::to_string(++calls) + ".txt";
+  const std::string cmd = std::string(GAB_BINARY) + " " + args + " 2>" + err_path;
+  CommandResult r{-1, "", ""};
+  FILE* p = popen(cmd.c_str(), "r");
+  if (p == nullptr) return r;
+  char buf[4096];
+  size_t got;
+  while ((got = fread(buf, 1, sizeof(buf), p)) > 0) r.out.append(buf, got);
+  const int status = pclose(p);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream e(err_path);
+  r.err.assign(std::istreambuf_iterator<char>(e), std::istreambuf_iterator<char>());
+  std::remove(err_path.c_str());
+  return r;
+}
+
+// Writes `text` to a file in the test temp dir, unique per process; returns its path.
+inline std::string write_temp(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + "/" + std::to_string(getpid()) + "_" + name;
+  std::ofstream(path, std::ios::binary) << text;
+  return path;
+}
+
+}  // namespace gab_test
