@@ -11,23 +11,9 @@
 // descendant.
 #include "gab/sparse/column_counts.h"
 
+#include "disjoint_set.h"
+
 namespace gab {
-
-namespace {
-
-// Root of j in the disjoint-set forest `ancestor`, compressing the path.
-int32_t find_root(std::vector<int32_t>* ancestor, int32_t j) {
-  int32_t root = j;
-  while ((*ancestor)[root] != root) root = (*ancestor)[root];
-  while ((*ancestor)[j] != root) {
-    const int32_t next = (*ancestor)[j];
-    (*ancestor)[j] = root;
-    j = next;
-  }
-  return root;
-}
-
-}  // namespace
 
 std::vector<int32_t> column_counts(const CscMatrix& lower, const EliminationTree& tree) {
   return column_counts_of_graph(symmetric_graph(lower), nullptr, nullptr, tree);
@@ -61,7 +47,7 @@ std::vector<int32_t> column_counts_of_graph(const CscMatrix& graph, const int32_
       const int32_t jprev = prevleaf[i];
       prevleaf[i] = j;
       ++delta[j];
-      if (jprev != -1) --delta[find_root(&ancestor, jprev)];  // lca(jprev, j)
+      if (jprev != -1) --delta[find_set_root(&ancestor, jprev)];  // lca(jprev, j)
     }
     if (parent[j] != -1) ancestor[j] = parent[j];
   }

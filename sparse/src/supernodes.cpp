@@ -1,6 +1,8 @@
 // Fundamental supernodes and relaxed amalgamation.
 #include "gab/sparse/supernodes.h"
 
+#include "disjoint_set.h"
+
 namespace gab {
 
 std::vector<int32_t> fundamental_supernodes(const std::vector<int32_t>& parent,
@@ -19,21 +21,6 @@ std::vector<int32_t> fundamental_supernodes(const std::vector<int32_t>& parent,
   first.push_back(n);
   return first;
 }
-
-namespace {
-
-int32_t find_leader(std::vector<int32_t>* link, int32_t s) {
-  int32_t root = s;
-  while ((*link)[root] != root) root = (*link)[root];
-  while ((*link)[s] != root) {
-    const int32_t next = (*link)[s];
-    (*link)[s] = root;
-    s = next;
-  }
-  return root;
-}
-
-}  // namespace
 
 std::vector<int32_t> relax_supernodes(const std::vector<int32_t>& first_col,
                                       const std::vector<int32_t>& parent,
@@ -59,7 +46,7 @@ std::vector<int32_t> relax_supernodes(const std::vector<int32_t>& first_col,
   for (int32_t s = ns - 2; s >= 0; --s) {
     const int32_t last = first_col[s + 1] - 1;
     if (parent[last] == -1) continue;
-    const int32_t g = find_leader(&link, super_of[parent[last]]);
+    const int32_t g = find_set_root(&link, super_of[parent[last]]);
     if (g != s + 1) continue;  // not contiguous: s is not its parent's last child
     const int64_t k = cols[s] + cols[g];
     const int64_t m = cols[s] + rows[g];
@@ -77,7 +64,7 @@ std::vector<int32_t> relax_supernodes(const std::vector<int32_t>& first_col,
   }
   std::vector<int32_t> merged;
   for (int32_t s = 0; s < ns; ++s) {
-    if (find_leader(&link, s) == s) merged.push_back(first_col[s]);
+    if (find_set_root(&link, s) == s) merged.push_back(first_col[s]);
   }
   merged.push_back(n);
   return merged;
