@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 
 namespace gab {
 namespace cli {
@@ -155,24 +154,6 @@ std::string extension(const std::string& path) {
   std::string ext = path.substr(dot + 1);
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return ext;
-}
-
-bool write_file_atomically(const std::string& path, const std::string& content,
-                           std::string* error) {
-  const std::string temp = path + ".tmp-" + std::to_string(static_cast<long long>(now_seconds() * 1e9));
-  std::FILE* f = std::fopen(temp.c_str(), "wb");
-  if (f == nullptr) {
-    *error = path + ": cannot write: " + std::strerror(errno);
-    return false;
-  }
-  const bool wrote = std::fwrite(content.data(), 1, content.size(), f) == content.size();
-  const bool closed = std::fclose(f) == 0;
-  if (!wrote || !closed || std::rename(temp.c_str(), path.c_str()) != 0) {
-    *error = path + ": cannot write: " + std::strerror(errno);
-    std::remove(temp.c_str());
-    return false;
-  }
-  return true;
 }
 
 }  // namespace cli

@@ -69,10 +69,6 @@ double median(std::vector<double> values);
 // Lower-cased extension of a path without the dot ("" if none).
 std::string extension(const std::string& path);
 
-// Writes `content` to `path` atomically: a temporary file beside it, then a
-// rename; on failure nothing is left behind and the message names the path.
-bool write_file_atomically(const std::string& path, const std::string& content,
-                           std::string* error);
 
 }  // namespace cli
 }  // namespace gab

@@ -8,11 +8,13 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "benchmark_system.h"
 #include "cli.h"
 #include "commands.h"
+#include "gab/mesh/file_io.h"
 #include "gab/sparse/cholesky.h"
 #include "svg_plot.h"
 
@@ -313,9 +315,12 @@ int run_study(int argc, char** argv) {
     std::fflush(stdout);
     results.push_back(std::move(r));
   }
-  std::string error;
-  if (args.has("--csv") && !write_file_atomically(args.get("--csv"), csv(results), &error)) return fail(error);
-  if (args.has("--svg") && !write_file_atomically(args.get("--svg"), svg(results), &error)) return fail(error);
+  for (const auto& [option, text] : {std::pair<const char*, std::string>("--csv", csv(results)),
+                                     std::pair<const char*, std::string>("--svg", svg(results))}) {
+    if (!args.has(option)) continue;
+    const Status written = write_file_atomically(args.get(option), text);
+    if (!written.ok()) return fail(written.message());
+  }
   return kExitOk;
 }
 

@@ -14,6 +14,16 @@ const char* kHelp =
     "usage: gab <command> [options]\n"
     "\n"
     "commands:\n"
+    "  compress -i IN -o OUT.gab [--anchors K | --error E | --linf E] [--bits Q] [--weight W]\n"
+    "           [--geometry-only] [--json]\n"
+    "      compress a mesh's geometry with geometry-aware anchors (default --error 0.001: relative\n"
+    "      vertex RMS over the bounding-box diagonal; q picked from the target, 12 for --anchors)\n"
+    "  decompress -i IN.gab -o OUT [--anchors K] [--connectivity MESH] [--json]\n"
+    "      decode a .gab file (its first K anchors only: a coarser level of detail)\n"
+    "  info IN.gab [--json]\n"
+    "      what a .gab file holds (checksums verified, nothing decoded)\n"
+    "  demo\n"
+    "      compress a real mesh at several anchor counts, print a table, write the meshes\n"
     "  factor IN [--ordering amd|natural] [--anchors K] [--repeat R] [--json]\n"
     "      order, analyze, factor and solve the least-squares matrix of a mesh (.obj .off .ply)\n"
     "      or a Matrix Market file (.mtx); report sizes and median phase times\n"
@@ -42,6 +52,10 @@ int main(int argc, char** argv) {
   if (!std::strcmp(command, "factor")) return gab::cli::run_factor(argc - 2, argv + 2);
   if (!std::strcmp(command, "study")) return gab::cli::run_study(argc - 2, argv + 2);
   if (!std::strcmp(command, "diff")) return gab::cli::run_diff(argc - 2, argv + 2);
+  if (!std::strcmp(command, "compress")) return gab::cli::run_compress(argc - 2, argv + 2);
+  if (!std::strcmp(command, "decompress")) return gab::cli::run_decompress(argc - 2, argv + 2);
+  if (!std::strcmp(command, "info")) return gab::cli::run_info(argc - 2, argv + 2);
+  if (!std::strcmp(command, "demo")) return gab::cli::run_demo(argc - 2, argv + 2);
   std::fprintf(stderr, "gab: unknown command '%s' (try 'gab help')\n", command);
   return gab::cli::kExitUsage;
 }

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # One command from a fresh Debian machine: install what is missing, build
 # gab (Release, tests included), fetch a real mesh from Debian's libcgal-demo,
-# and run the main job on it.
+# and run the main job on it (gab demo: compress / decompress).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -27,6 +27,6 @@ fi
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DGAB_BUILD_TESTS=ON
 cmake --build build -j2
 
-# The main job (until the codec lands): factor and solve the camel's
-# least-squares system.
-./build/apps/gab factor data/meshes/camel.off
+# The main job: compress the camel at several anchor counts, decode every
+# file again, print the table, write the meshes to gab-demo/.
+./build/apps/gab demo

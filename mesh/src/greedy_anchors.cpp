@@ -20,12 +20,10 @@ std::vector<double> coefficients_of(const Mesh& mesh, const std::vector<int32_t>
   return c;
 }
 
-// The `count` non-anchored vertices of largest error among the 1-ring local
-// maxima (error at least every neighbour's), largest first, ties to the
-// smaller index. With count == 1 this is the worst non-anchored vertex (the
-// paper's rule), whether or not it is a local maximum. Needs a free vertex.
-std::vector<int32_t> pick_batch(const EdgeGraph& graph, const std::vector<double>& error,
-                                const RelaxedReconstruction& rec, int32_t count) {
+}  // namespace
+
+std::vector<int32_t> pick_error_maxima(const EdgeGraph& graph, const std::vector<double>& error,
+                                       const RelaxedReconstruction& rec, int32_t count) {
   const int32_t n = graph.num_vertices();
   std::vector<int32_t> candidates;
   for (int32_t v = 0; v < n; ++v) {
@@ -49,8 +47,6 @@ std::vector<int32_t> pick_batch(const EdgeGraph& graph, const std::vector<double
   candidates.resize(keep);
   return candidates;
 }
-
-}  // namespace
 
 Status select_anchors_greedy(const Mesh& mesh, const EdgeGraph& graph, const GreedyOptions& options,
                              std::vector<int32_t>* anchors, std::vector<GreedyStep>* curve) {
@@ -93,7 +89,7 @@ Status select_anchors_greedy(const Mesh& mesh, const EdgeGraph& graph, const Gre
                                : 1;
     const int32_t room = options.max_anchors - rec.num_anchors();
     const std::vector<int32_t> next =
-        pick_batch(graph, error, rec, static_cast<int32_t>(std::min<int64_t>(std::max<int64_t>(wanted, 1), room)));
+        pick_error_maxima(graph, error, rec, static_cast<int32_t>(std::min<int64_t>(std::max<int64_t>(wanted, 1), room)));
     GAB_RETURN_IF_ERROR(rec.add_anchors(next, coefficients_of(mesh, next)));
   }
   *anchors = rec.anchors();

@@ -12,20 +12,10 @@
 namespace {
 
 using gab_test::CommandResult;
+using gab_test::json_null;
+using gab_test::json_number;
 using gab_test::run_gab;
 using gab_test::write_temp;
-
-// The value of "key" in a one-line JSON object; NaN if absent or null.
-double json_number(const std::string& json, const std::string& key) {
-  const size_t at = json.find("\"" + key + "\": ");
-  if (at == std::string::npos) return std::nan("");
-  const std::string rest = json.substr(at + key.size() + 4);
-  if (rest.rfind("null", 0) == 0) return std::nan("");
-  return std::stod(rest);
-}
-bool json_null(const std::string& json, const std::string& key) {
-  return json.find("\"" + key + "\": null") != std::string::npos;
-}
 
 // The unit square (two triangles) at height z, as OFF; and as OBJ.
 std::string square_off(double z) {

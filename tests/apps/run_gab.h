@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
@@ -18,13 +19,14 @@ struct CommandResult {
   std::string err;
 };
 
-// Runs `gab ARGS`. stderr goes through a file unique per process and call
+// Runs `gab ARGS`, after the shell text `prefix` (e.g. "VAR=value" or
+// "cd DIR &&"). stderr goes through a file unique per process and call
 // (ctest runs the tests in parallel).
-inline CommandResult run_gab(const std::string& args) {
+inline CommandResult run_gab(const std::string& args, const std::string& prefix = "") {
   static int calls = 0;
   const std::string err_path = ::testing::TempDir() + "/gab_stderr_" + std::to_string(getpid()) + "_" +
                                std::to_string(++calls) + ".txt";
-  const std::string cmd = std::string(GAB_BINARY) + " " + args + " 2>" + err_path;
+  const std::string cmd = (prefix.empty() ? "" : prefix + " ") + std::string(GAB_BINARY) + " " + args + " 2>" + err_path;
   CommandResult r{-1, "", ""};
   FILE* p = popen(cmd.c_str(), "r");
   if (p == nullptr) return r;
@@ -44,6 +46,18 @@ inline std::string write_temp(const std::string& name, const std::string& text) 
   const std::string path = ::testing::TempDir() + "/" + std::to_string(getpid()) + "_" + name;
   std::ofstream(path, std::ios::binary) << text;
   return path;
+}
+
+// The value of "key" in a one-line JSON object; NaN if absent or null.
+inline double json_number(const std::string& json, const std::string& key) {
+  const size_t at = json.find("\"" + key + "\": ");
+  if (at == std::string::npos) return std::nan("");
+  const std::string rest = json.substr(at + key.size() + 4);
+  if (rest.rfind("null", 0) == 0) return std::nan("");
+  return std::stod(rest);
+}
+inline bool json_null(const std::string& json, const std::string& key) {
+  return json.find("\"" + key + "\": null") != std::string::npos;
 }
 
 }  // namespace gab_test

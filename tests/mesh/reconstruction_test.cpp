@@ -52,6 +52,47 @@ TEST(RelaxedReconstructionTest, UpdatedEqualsFreshFactorization) {
   EXPECT_EQ(updated.num_anchors(), 16);
 }
 
+TEST(RelaxedReconstructionTest, RefactoringAndCheapestAgreeWithUpdates) {
+  const Mesh m = bumpy_sphere(3);
+  const EdgeGraph g = build_edge_graph(m);
+  const std::vector<int32_t> first = {0, 1, 2, 3, 4, 5}, more = {10, 50, 77, 120, 200, 31, 9, 150, 8, 99};
+  RelaxedReconstruction updated, refactored, cheapest;
+  for (RelaxedReconstruction* r : {&updated, &refactored, &cheapest}) {
+    ASSERT_TRUE(r->init(g, 3.0, first, coefficients(m, first)).ok());
+  }
+  ASSERT_TRUE(updated.add_anchors(more, coefficients(m, more)).ok());
+  ASSERT_TRUE(refactored.add_anchors_refactoring(more, coefficients(m, more)).ok());
+  ASSERT_TRUE(cheapest.add_anchors_cheapest(more, coefficients(m, more)).ok());
+  std::vector<double> a, b, c;
+  ASSERT_TRUE(updated.reconstruct(&a).ok());
+  ASSERT_TRUE(refactored.reconstruct(&b).ok());
+  ASSERT_TRUE(cheapest.reconstruct(&c).ok());
+  for (size_t i = 0; i < a.size(); ++i) {
+    EXPECT_NEAR(a[i], b[i], 1e-11);
+    EXPECT_NEAR(a[i], c[i], 1e-11);
+  }
+  EXPECT_EQ(refactored.num_anchors(), 16);
+  EXPECT_TRUE(refactored.is_anchor(150));
+  // Refactoring refuses what updates refuse.
+  EXPECT_EQ(refactored.add_anchors_refactoring({150}, coefficients(m, {150})).message(),
+            "vertex 150 is already an anchor");
+}
+
+TEST(RelaxedReconstructionTest, UpdateCostRatioGrowsWithTheAnchors) {
+  const Mesh m = bumpy_sphere(4);
+  const EdgeGraph g = build_edge_graph(m);
+  RelaxedReconstruction r;
+  const std::vector<int32_t> first = {0, 1, 2, 3, 4, 5};
+  ASSERT_TRUE(r.init(g, 3.0, first, coefficients(m, first)).ok());
+  std::vector<int32_t> few = {100}, many;
+  for (int32_t v = 6; v < m.num_vertices(); v += 2) many.push_back(v);
+  const double one = r.update_cost_ratio(few), all = r.update_cost_ratio(many);
+  EXPECT_GT(one, 0.0);
+  EXPECT_LT(one, 1.0);   // one anchor: update
+  EXPECT_GT(all, 1.0);   // half the vertices: refactor
+  EXPECT_NEAR(r.update_cost_ratio({100, 100}), 2 * one, 1e-12 * one);
+}
+
 TEST(RelaxedReconstructionTest, ZeroCoordinateStaysExactlyZero) {
   // Every anchor has z = 0, so the minimizer's z is exactly 0 everywhere.
   Mesh m = bumpy_sphere(2);

@@ -9,6 +9,7 @@
 
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/mesh.h"
+#include "gab/mesh/relaxed_reconstruction.h"
 #include "gab/sparse/status.h"
 
 namespace gab {
@@ -41,5 +42,14 @@ struct GreedyStep {
 // error scan.
 Status select_anchors_greedy(const Mesh& mesh, const EdgeGraph& graph, const GreedyOptions& options,
                              std::vector<int32_t>* anchors, std::vector<GreedyStep>* curve);
+
+// The `count` vertices not anchored in `rec` of largest error among the
+// 1-ring local maxima of `error` (at least every neighbour's), largest first,
+// ties to the smaller index. With count == 1 this is the worst free vertex
+// (the paper's rule), local maximum or not; if no free vertex is a local
+// maximum, the worst free vertex, so a greedy loop always progresses. Needs
+// a free vertex. O(V + E + c log c), c the local maxima.
+std::vector<int32_t> pick_error_maxima(const EdgeGraph& graph, const std::vector<double>& error,
+                                       const RelaxedReconstruction& rec, int32_t count);
 
 }  // namespace gab

@@ -21,6 +21,7 @@ class RelaxedReconstruction {
   // coefficients are `coefficients` (3 per anchor: x y z). Anchors must be
   // distinct vertices and every connected component needs one (otherwise
   // the system is singular: the error names a vertex of such a component).
+  // `graph` must outlive this object (refactorizations reassemble from it).
   // Cost: one AMD ordering, analysis and factorization.
   Status init(const EdgeGraph& graph, double weight, const std::vector<int32_t>& anchors,
               const std::vector<double>& coefficients);
@@ -29,6 +30,25 @@ class RelaxedReconstruction {
   // rank-one updates of the factor. Cost: the factor's entries on each
   // anchor's elimination-tree path (batched 8 at a time).
   Status add_anchors(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
+
+  // Same result as add_anchors up to rounding, by a fresh numeric
+  // factorization of the whole matrix (the analysis is reused: anchors only
+  // change the diagonal). Cost: one assembly and factorization, whatever
+  // the number of anchors.
+  Status add_anchors_refactoring(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
+
+  // add_anchors or add_anchors_refactoring, whichever the cost model says
+  // is cheaper for these anchors (update_cost_ratio). Deterministic: the
+  // choice depends on the structure only, never on timings.
+  Status add_anchors_cheapest(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
+
+  // Estimated time of updating the factor with these anchors over the time
+  // of refactoring it: the factor entries on each anchor's elimination-tree
+  // path (what an update streams through) against the factorization's flops,
+  // weighted by the rates measured on this engine (an entry of a batched
+  // update costs about as much as 6 flops of the factorization). O(path
+  // length in supernodes) per anchor.
+  double update_cost_ratio(const std::vector<int32_t>& anchors) const;
 
   // The current shape, 3 coordinates per vertex (x0 y0 z0 x1 ...). Cost: one
   // solve with three right-hand sides.
@@ -45,6 +65,7 @@ class RelaxedReconstruction {
   Status check_new(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
   void add_to_rhs(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
 
+  const EdgeGraph* graph_ = nullptr;  // the graph given to init (must outlive this object)
   int32_t n_ = 0;
   double weight_ = 0.0;
   Cholesky chol_;

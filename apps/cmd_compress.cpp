@@ -1,0 +1,109 @@
+// gab compress -i IN -o OUT.gab [--anchors K | --error E | --linf E] [--bits Q]
+//              [--weight W] [--geometry-only] [--json]
+// Greedy geometry-aware anchors, quantized and range coded (DESIGN.md
+// sections 5 and 6). Without a stopping rule: --error 0.001.
+#include <cstdio>
+#include <string>
+#include <unistd.h>
+
+#include "cli.h"
+#include "commands.h"
+#include "gab/codec/encoder.h"
+#include "gab/codec/gab_format.h"
+#include "gab/mesh/file_io.h"
+#include "gab/mesh/mesh_io.h"
+
+namespace gab {
+namespace cli {
+
+namespace {
+
+const char* kUsage =
+    "gab compress -i IN -o OUT.gab [--anchors K | --error E | --linf E] [--bits Q] [--weight W]\n"
+    "             [--geometry-only] [--json]";
+
+constexpr double kDefaultError = 1e-3;
+
+}  // namespace
+
+int run_compress(int argc, char** argv) {
+  Args args;
+  if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--error", "--linf", "--bits", "--weight", "--batch", "--chunk-growth"},
+                  {"--json", "--geometry-only"})) {
+    return usage_error("compress", args.error(), kUsage);
+  }
+  if (!args.positionals().empty()) return usage_error("compress", "unexpected argument " + args.positionals()[0], kUsage);
+  if (!args.has("-i") || !args.has("-o")) return usage_error("compress", "need -i IN and -o OUT.gab", kUsage);
+  const int rules = args.has("--anchors") + args.has("--error") + args.has("--linf");
+  if (rules > 1) return usage_error("compress", "give at most one of --anchors, --error, --linf", kUsage);
+  EncodeOptions options;
+  int64_t anchors = 0, bits = options.bits;
+  double error = rules == 0 ? kDefaultError : 0.0, linf = 0.0;
+  if (!args.get_int("--anchors", 1, 0x7FFFFFFF, &anchors) || !args.get_double("--error", 1e-12, 1.0, &error) ||
+      !args.get_double("--linf", 1e-12, 1.0, &linf) || !args.get_int("--bits", kGabMinBits, kGabMaxBits, &bits) ||
+      !args.get_double("--weight", 1e-6, 1e6, &options.weight) ||
+      !args.get_double("--batch", 0.0, 1.0, &options.batch_fraction) ||
+      !args.get_double("--chunk-growth", 1.01, 1e9, &options.chunk_growth)) {
+    return usage_error("compress", args.error(), kUsage);
+  }
+  options.max_anchors = static_cast<int32_t>(anchors);
+  options.target_rms_rel = error;
+  options.target_linf_rel = linf;
+  options.bits = static_cast<int>(bits);
+  options.geometry_only = args.has("--geometry-only");
+  const bool json = args.has("--json");
+  const std::string in = args.get("-i"), out = args.get("-o");
+
+  Mesh mesh;
+  Status status = read_mesh(in, &mesh);
+  if (!status.ok()) return fail(status.message());
+  const bool tty = isatty(fileno(stderr)) != 0;
+  if (tty) {
+    options.progress = [](int32_t k, double rms) {
+      std::fprintf(stderr, "\rgab compress: %d anchors, rms %.3g of the diagonal   ", k, rms);
+    };
+  }
+  std::vector<uint8_t> file;
+  EncodeStats stats;
+  status = encode_mesh(mesh, options, &file, &stats);
+  if (tty) std::fprintf(stderr, "\n");
+  if (!status.ok()) return fail(in + ": " + status.message());
+  status = write_file_atomically(out, std::string_view(reinterpret_cast<const char*>(file.data()), file.size()));
+  if (!status.ok()) return fail(status.message());
+  if (!stats.target_met) {
+    std::fprintf(stderr,
+                 "gab compress: warning: the error target is out of reach at %d bits: every vertex is an anchor "
+                 "(rms %.3g, max %.3g of the diagonal); use more --bits\n",
+                 stats.bits, stats.rms_rel, stats.linf_rel);
+  }
+  const double bpv = 8.0 * static_cast<double>(stats.geometry_bytes) / stats.num_vertices;
+  if (json) {
+    JsonObject o;
+    o.add("n", static_cast<int64_t>(stats.num_vertices));
+    o.add("faces", static_cast<int64_t>(stats.num_triangles));
+    o.add("anchors", static_cast<int64_t>(stats.anchors));
+    o.add("bits", static_cast<int64_t>(stats.bits));
+    o.add("bytes", static_cast<int64_t>(stats.bytes));
+    o.add("geometry_bytes", static_cast<int64_t>(stats.geometry_bytes));
+    o.add("connectivity_bytes", static_cast<int64_t>(stats.connectivity_bytes));
+    o.add("bpv_geometry", bpv);
+    o.add("linf_rel", stats.linf_rel);
+    o.add("rms_rel", stats.rms_rel);
+    o.add("encode_s", stats.encode_s);
+    o.add("chunks", static_cast<int64_t>(stats.chunks));
+    o.add("weight", options.weight);
+    o.add("target_met", std::string(stats.target_met ? "yes" : "no"));
+    std::printf("%s\n", o.str().c_str());
+    return kExitOk;
+  }
+  std::printf("%s -> %s: %d vertices, %d triangles, %d anchors in %d chunks, q = %d\n", in.c_str(), out.c_str(),
+              stats.num_vertices, stats.num_triangles, stats.anchors, stats.chunks, stats.bits);
+  std::printf("%zu bytes (geometry %zu = %.3f bits/vertex, connectivity %zu); error rms %.3g, max %.3g of the "
+              "bounding-box diagonal; %.2f s\n",
+              stats.bytes, stats.geometry_bytes, bpv, stats.connectivity_bytes, stats.rms_rel, stats.linf_rel,
+              stats.encode_s);
+  return kExitOk;
+}
+
+}  // namespace cli
+}  // namespace gab

@@ -1,0 +1,85 @@
+// gab decompress -i IN.gab -o OUT [--anchors K] [--connectivity MESH] [--json]
+// Decodes a .gab file (or its first K anchors: a coarser level of detail)
+// and writes the mesh (.obj .off .ply by extension), vertex order kept.
+#include <cstdio>
+#include <string>
+
+#include "cli.h"
+#include "commands.h"
+#include "gab/codec/decoder.h"
+#include "gab/mesh/file_io.h"
+#include "gab/mesh/mesh_io.h"
+
+namespace gab {
+namespace cli {
+
+namespace {
+
+const char* kUsage = "gab decompress -i IN.gab -o OUT [--anchors K] [--connectivity MESH] [--json]";
+
+}  // namespace
+
+int run_decompress(int argc, char** argv) {
+  Args args;
+  if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--connectivity"}, {"--json"})) {
+    return usage_error("decompress", args.error(), kUsage);
+  }
+  if (!args.positionals().empty()) {
+    return usage_error("decompress", "unexpected argument " + args.positionals()[0], kUsage);
+  }
+  if (!args.has("-i") || !args.has("-o")) return usage_error("decompress", "need -i IN.gab and -o OUT", kUsage);
+  int64_t anchors = -1;
+  if (!args.get_int("--anchors", 0, 0x7FFFFFFF, &anchors)) return usage_error("decompress", args.error(), kUsage);
+  const std::string in = args.get("-i"), out = args.get("-o");
+  const std::string ext = extension(out);
+  if (ext != "obj" && ext != "off" && ext != "ply") {
+    return usage_error("decompress", "output must be .obj, .off or .ply: " + out, kUsage);
+  }
+
+  std::string bytes;
+  Status status = read_file(in, &bytes);
+  if (!status.ok()) return fail(status.message());
+  Mesh connectivity;
+  DecodeOptions options;
+  options.max_anchors = static_cast<int32_t>(anchors);
+  if (args.has("--connectivity")) {
+    status = read_mesh(args.get("--connectivity"), &connectivity);
+    if (!status.ok()) return fail(status.message());
+    options.connectivity = &connectivity;
+  }
+  Mesh mesh;
+  DecodeStats stats;
+  status = decode_mesh(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size(), options, &mesh, &stats);
+  if (!status.ok()) return fail(in + ": " + status.message());
+  status = write_mesh(out, mesh);
+  if (!status.ok()) return fail(status.message());
+  if (stats.truncated) {
+    std::fprintf(stderr, "gab decompress: warning: %s is truncated: decoded %d of %d chunks (%d of %d anchors)\n",
+                 in.c_str(), stats.chunks, stats.chunks_in_file, stats.anchors, stats.anchors_in_file);
+  }
+  if (args.has("--json")) {
+    JsonObject o;
+    o.add("n", static_cast<int64_t>(stats.num_vertices));
+    o.add("anchors", static_cast<int64_t>(stats.anchors));
+    o.add("decode_s", stats.decode_s);
+    o.add("factor_s", stats.factor_s);
+    o.add("solve_s", stats.solve_s);
+    o.add("update_s", stats.update_s);
+    o.add("faces", static_cast<int64_t>(stats.num_triangles));
+    o.add("anchors_in_file", static_cast<int64_t>(stats.anchors_in_file));
+    o.add("chunks", static_cast<int64_t>(stats.chunks));
+    o.add("chunks_in_file", static_cast<int64_t>(stats.chunks_in_file));
+    o.add("truncated", std::string(stats.truncated ? "yes" : "no"));
+    o.add("refactorizations", static_cast<int64_t>(stats.refactorizations));
+    std::printf("%s\n", o.str().c_str());
+    return kExitOk;
+  }
+  std::printf("%s -> %s: %d vertices, %d triangles, %d of %d anchors (%d of %d chunks); %.3f s "
+              "(factor %.3f, updates %.3f, solves %.3f)\n",
+              in.c_str(), out.c_str(), stats.num_vertices, stats.num_triangles, stats.anchors, stats.anchors_in_file,
+              stats.chunks, stats.chunks_in_file, stats.decode_s, stats.factor_s, stats.update_s, stats.solve_s);
+  return kExitOk;
+}
+
+}  // namespace cli
+}  // namespace gab

@@ -1,0 +1,63 @@
+// gab info IN.gab [--json]
+// What a .gab file holds, from its header and chunk frames (checksums
+// verified), without decoding it.
+#include <cstdio>
+#include <string>
+
+#include "cli.h"
+#include "commands.h"
+#include "gab/codec/decoder.h"
+#include "gab/mesh/file_io.h"
+
+namespace gab {
+namespace cli {
+
+namespace {
+
+const char* kUsage = "gab info IN.gab [--json]";
+
+}  // namespace
+
+int run_info(int argc, char** argv) {
+  Args args;
+  if (!args.parse(argc, argv, {}, {"--json"})) return usage_error("info", args.error(), kUsage);
+  if (args.positionals().size() != 1) return usage_error("info", "expected one .gab file", kUsage);
+  const std::string in = args.positionals()[0];
+  std::string bytes;
+  Status status = read_file(in, &bytes);
+  if (!status.ok()) return fail(status.message());
+  GabFileInfo info;
+  status = read_gab_info(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size(), &info);
+  if (!status.ok()) return fail(in + ": " + status.message());
+  const double bpv = 8.0 * static_cast<double>(info.geometry_bytes) / info.num_vertices;
+  if (args.has("--json")) {
+    JsonObject o;
+    o.add("version", static_cast<int64_t>(info.version));
+    o.add("n", static_cast<int64_t>(info.num_vertices));
+    o.add("faces", static_cast<int64_t>(info.num_triangles));
+    o.add("anchors", static_cast<int64_t>(info.anchors));
+    o.add("chunks", static_cast<int64_t>(info.chunks));
+    o.add("chunks_present", static_cast<int64_t>(info.chunks_present));
+    o.add("truncated", std::string(info.truncated ? "yes" : "no"));
+    o.add("bits", static_cast<int64_t>(info.bits));
+    o.add("weight", info.weight);
+    o.add("geometry_only", std::string(info.geometry_only ? "yes" : "no"));
+    o.add("bytes", static_cast<int64_t>(info.bytes));
+    o.add("geometry_bytes", static_cast<int64_t>(info.geometry_bytes));
+    o.add("connectivity_bytes", static_cast<int64_t>(info.connectivity_bytes));
+    o.add("bpv_geometry", bpv);
+    std::printf("%s\n", o.str().c_str());
+    return kExitOk;
+  }
+  std::printf("%s: .gab version %d, %d vertices, %d triangles%s\n", in.c_str(), info.version, info.num_vertices,
+              info.num_triangles, info.geometry_only ? " (geometry only: decode with --connectivity MESH)" : "");
+  std::printf("%d anchors in %d chunks%s; q = %d bits, w = %g\n", info.anchors, info.chunks,
+              info.truncated ? (" (truncated: " + std::to_string(info.chunks_present) + " complete)").c_str() : "",
+              info.bits, info.weight);
+  std::printf("%zu bytes: geometry %zu (%.3f bits/vertex), connectivity %zu\n", info.bytes, info.geometry_bytes, bpv,
+              info.connectivity_bytes);
+  return kExitOk;
+}
+
+}  // namespace cli
+}  // namespace gab

@@ -1,0 +1,65 @@
+// Decompression of a .gab file (DESIGN.md section 5), and a look inside one
+// without decoding it.
+//
+// Contract on untrusted input: every malformed, corrupted or forged file
+// gets a kParseError naming what is wrong (header field, connectivity block,
+// chunk number); nothing is read outside the buffer; allocations are bounded
+// by the file's size and DecodeOptions' limits. A file cut short decodes to
+// the shape of its complete chunks and says so (DecodeStats::truncated).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "gab/mesh/mesh.h"
+#include "gab/sparse/status.h"
+
+namespace gab {
+
+struct DecodeOptions {
+  int32_t max_anchors = -1;            // decode only the first K anchors (level of detail); -1: all
+  const Mesh* connectivity = nullptr;  // the mesh whose triangles a geometry-only file refers to
+  // Refuse connectivity whose least-squares matrix (the 2-ring pattern)
+  // would have more entries than this, or whose factor would: what keeps a
+  // forged fan of triangles from asking for gigabytes.
+  int64_t max_matrix_entries = int64_t{1} << 31;
+  int64_t max_factor_entries = int64_t{3} << 30;
+};
+
+struct DecodeStats {
+  int32_t num_vertices = 0, num_triangles = 0;
+  int32_t anchors = 0, anchors_in_file = 0;
+  int32_t chunks = 0, chunks_in_file = 0;
+  bool truncated = false;  // the file ended inside a chunk: the shape is of the complete ones
+  int bits = 0;
+  double weight = 0;
+  bool geometry_only = false;
+  double decode_s = 0, factor_s = 0, solve_s = 0, update_s = 0;
+  int32_t refactorizations = 0;  // chunks added by refactoring rather than updates
+};
+
+// Decodes `data` into `mesh` (positions and triangles).
+Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& options, Mesh* mesh, DecodeStats* stats);
+
+struct GabFileInfo {
+  int version = 0;
+  int32_t num_vertices = 0, num_triangles = 0;
+  int bits = 0;
+  double weight = 0;
+  bool geometry_only = false;
+  double box_min[3] = {0, 0, 0};
+  double step = 0;
+  int32_t anchors = 0, chunks = 0;  // as the header declares
+  int32_t chunks_present = 0;       // complete chunks with a valid checksum
+  bool truncated = false;
+  size_t bytes = 0, connectivity_bytes = 0, geometry_bytes = 0;
+  std::vector<size_t> chunk_bytes;  // framed size of each complete chunk
+};
+
+// Reads the header and walks the chunk frames, checking every checksum,
+// without decoding anything. O(file size).
+Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info);
+
+}  // namespace gab

@@ -1,0 +1,71 @@
+// The .gab container (DESIGN.md section 5), version 1. All integers
+// little-endian; a chunk or block is framed as  u32 length, u32 CRC-32 of the
+// payload, payload.
+//
+//   magic      8 bytes  89 'G' 'A' 'B' 0D 0A 1A 0A (binary-safe, like PNG's)
+//   version    u8 (1), flags u8 (bit 0: geometry only), bits q u8, 0 u8
+//   n, faces   u32, u32   vertex and triangle counts
+//   weight     f64        anchor weight w of the relaxed basis
+//   box min    3 x f64    quantization grid origin
+//   step       f64        grid spacing (quantizer.h)
+//   anchors    u32        anchors in the file, over all chunks
+//   chunks     u32        chunks in the file
+//   crc        u32        CRC-32 of the 68 bytes above
+//   connectivity: framed block (connectivity_coder.h), or in geometry-only
+//              mode the u64 connectivity_hash of the mesh the decoder must
+//              be given
+//   chunks:    framed payloads: varint anchor count b, then one range-coded
+//              stream (anchor_chunk.h): the b anchors as a sorted subset of
+//              the vertices not anchored by earlier chunks, then their
+//              quantized positions as residuals from the reconstruction of
+//              the earlier chunks (chunk 0: from the grid's centre).
+//              Adaptive statistics carry over from chunk to chunk.
+// Any prefix of whole chunks is a valid coarser approximation.
+#pragma once
+
+#include <cstdint>
+
+#include "gab/codec/byte_io.h"
+#include "gab/codec/quantizer.h"
+#include "gab/sparse/status.h"
+
+namespace gab {
+
+constexpr uint8_t kGabMagic[8] = {0x89, 'G', 'A', 'B', 0x0D, 0x0A, 0x1A, 0x0A};
+constexpr uint8_t kGabVersion = 1;
+constexpr uint8_t kGabFlagGeometryOnly = 1;
+constexpr int kGabMinBits = 2;
+constexpr int kGabMaxBits = 24;
+constexpr size_t kGabHeaderBytes = 72;
+
+struct GabHeader {
+  uint8_t version = kGabVersion;
+  uint8_t flags = 0;
+  int bits = 12;
+  int32_t num_vertices = 0;
+  int32_t num_triangles = 0;
+  double weight = 1.0;
+  Quantizer quantizer;  // min and step from the file, max_index from bits
+  int32_t anchors = 0;
+  int32_t chunks = 0;
+
+  bool geometry_only() const { return (flags & kGabFlagGeometryOnly) != 0; }
+};
+
+void write_gab_header(const GabHeader& header, ByteWriter* out);
+
+// Reads and checks the header: magic, version, CRC, flags, every field's
+// range, and that the counts are plausible for a file of `file_size` bytes
+// (so a forged header cannot make a decoder allocate without bound).
+// kParseError with a message naming the field otherwise.
+Status read_gab_header(ByteReader* in, size_t file_size, GabHeader* header);
+
+// Frames `payload` (u32 length, u32 CRC, bytes).
+void write_framed(const uint8_t* payload, size_t size, ByteWriter* out);
+
+enum class FrameRead { kOk, kTruncated, kCorrupt };
+// Reads one frame; kTruncated when the file ends inside it, kCorrupt when
+// the CRC does not match.
+FrameRead read_framed(ByteReader* in, const uint8_t** payload, size_t* size);
+
+}  // namespace gab

@@ -1,0 +1,214 @@
+#include "gab/codec/encoder.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "anchor_chunk.h"
+#include "gab/codec/connectivity_coder.h"
+#include "gab/codec/gab_format.h"
+#include "gab/mesh/edge_graph.h"
+#include "gab/mesh/graph_distance.h"
+#include "gab/mesh/relaxed_reconstruction.h"
+
+namespace gab {
+
+namespace {
+
+Status check_options(const EncodeOptions& o) {
+  auto bad = [](const std::string& m) { return Status::Error(StatusCode::kInvalidArgument, m); };
+  if (o.max_anchors <= 0 && !(o.target_rms_rel > 0) && !(o.target_linf_rel > 0)) {
+    return bad("set a stopping rule: an anchor count, an RMS or an L-inf target");
+  }
+  if (o.max_anchors < 0) return bad("anchor count must be positive");
+  if (o.target_rms_rel < 0 || o.target_linf_rel < 0 || !std::isfinite(o.target_rms_rel) ||
+      !std::isfinite(o.target_linf_rel)) {
+    return bad("error targets must be finite and non-negative");
+  }
+  if (o.bits != 0 && (o.bits < kGabMinBits || o.bits > kGabMaxBits)) {
+    return bad("bits must be in " + std::to_string(kGabMinBits) + ".." + std::to_string(kGabMaxBits));
+  }
+  if (!(o.weight > 0) || !std::isfinite(o.weight)) return bad("anchor weight must be positive and finite");
+  if (!(o.batch_fraction >= 0) || o.batch_fraction > 1) return bad("batch fraction must be in [0, 1]");
+  if (!(o.chunk_growth > 1) || !std::isfinite(o.chunk_growth)) return bad("chunk growth must be above 1");
+  return Status::Ok();
+}
+
+// The relative RMS and max of the 3D error; error2[v] = squared distance.
+void measure_error(const Mesh& mesh, const std::vector<double>& shape, double scale, std::vector<double>* error2,
+                   double* rms_rel, double* linf_rel) {
+  const int32_t n = mesh.num_vertices();
+  double sum2 = 0.0, max2 = 0.0;
+  for (int32_t v = 0; v < n; ++v) {
+    double d2 = 0.0;
+    for (int c = 0; c < 3; ++c) {
+      const double d = shape[3 * static_cast<size_t>(v) + c] - mesh.positions[3 * static_cast<size_t>(v) + c];
+      d2 += d * d;
+    }
+    (*error2)[v] = d2;
+    sum2 += d2;
+    max2 = std::max(max2, d2);
+  }
+  *rms_rel = std::sqrt(sum2 / n) * scale;
+  *linf_rel = std::sqrt(max2) * scale;
+}
+
+// Anchors to add in the next greedy step: the batch fraction of those so
+// far, but near an RMS target only as many as the error curve's last two
+// points (rms ~ k^-alpha) say are still needed.
+int32_t next_batch(const EncodeOptions& o, const std::vector<GreedyStep>& curve, int32_t cap) {
+  const int32_t k = curve.back().anchors;
+  int64_t wanted = o.batch_fraction > 0 ? static_cast<int64_t>(std::ceil(o.batch_fraction * k)) : 1;
+  if (o.target_rms_rel > 0 && curve.size() >= 2) {
+    const GreedyStep& a = curve[curve.size() - 2];
+    const GreedyStep& b = curve.back();
+    if (b.anchors > a.anchors && a.rms_rel > b.rms_rel && b.rms_rel > o.target_rms_rel) {
+      const double alpha = std::log(a.rms_rel / b.rms_rel) / std::log(static_cast<double>(b.anchors) / a.anchors);
+      const double needed = b.anchors * std::pow(b.rms_rel / o.target_rms_rel, 1.0 / alpha) - b.anchors;
+      if (std::isfinite(needed)) wanted = std::min<int64_t>(wanted, static_cast<int64_t>(std::ceil(needed)));
+    }
+  }
+  return static_cast<int32_t>(std::min<int64_t>(std::max<int64_t>(wanted, 1), cap - k));
+}
+
+}  // namespace
+
+int default_bits(double extent_over_diagonal, double target_rms_rel, double target_linf_rel) {
+  if (!(target_rms_rel > 0) && !(target_linf_rel > 0)) return 12;
+  for (int q = kGabMinBits; q < kGabMaxBits; ++q) {
+    const double step = extent_over_diagonal / static_cast<double>((int64_t{1} << q) - 1);
+    const bool rms_ok = !(target_rms_rel > 0) || step / 2 <= 0.65 * target_rms_rel;
+    const bool linf_ok = !(target_linf_rel > 0) || step * std::sqrt(3.0) / 2 <= 0.5 * target_linf_rel;
+    if (rms_ok && linf_ok) return q;
+  }
+  return kGabMaxBits;
+}
+
+Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* file, EncodeStats* stats) {
+  const auto start = std::chrono::steady_clock::now();
+  GAB_RETURN_IF_ERROR(check_options(options));
+  GAB_RETURN_IF_ERROR(validate_mesh(mesh, "mesh"));
+  const int32_t n = mesh.num_vertices();
+  *stats = EncodeStats();
+  stats->num_vertices = n;
+  stats->num_triangles = mesh.num_triangles();
+
+  // The grid, and every vertex's quantized position: what an anchor sends.
+  double lo[3], hi[3];
+  for (int c = 0; c < 3; ++c) lo[c] = hi[c] = mesh.positions[c];
+  for (int32_t v = 0; v < n; ++v) {
+    for (int c = 0; c < 3; ++c) {
+      lo[c] = std::min(lo[c], mesh.positions[3 * static_cast<size_t>(v) + c]);
+      hi[c] = std::max(hi[c], mesh.positions[3 * static_cast<size_t>(v) + c]);
+    }
+  }
+  double extent = 0.0, diagonal2 = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    extent = std::max(extent, hi[c] - lo[c]);
+    diagonal2 += (hi[c] - lo[c]) * (hi[c] - lo[c]);
+  }
+  const int bits = options.bits != 0 ? options.bits
+                                     : default_bits(diagonal2 > 0 ? extent / std::sqrt(diagonal2) : 1.0,
+                                                    options.target_rms_rel, options.target_linf_rel);
+  stats->bits = bits;
+  const Quantizer quantizer = Quantizer::for_box(lo, hi, bits);
+  std::vector<int32_t> grid(static_cast<size_t>(n) * 3);
+  for (int32_t v = 0; v < n; ++v) {
+    for (int c = 0; c < 3; ++c) grid[3 * static_cast<size_t>(v) + c] = quantizer.quantize(mesh.positions[3 * static_cast<size_t>(v) + c], c);
+  }
+  auto coefficients_of = [&](const std::vector<int32_t>& anchors) {
+    std::vector<double> coefficients(anchors.size() * 3);
+    for (size_t i = 0; i < anchors.size(); ++i) {
+      for (int c = 0; c < 3; ++c) {
+        coefficients[3 * i + c] = quantizer.dequantize(grid[3 * static_cast<size_t>(anchors[i]) + c], c);
+      }
+    }
+    return coefficients;
+  };
+
+  EdgeGraph graph = build_edge_graph(mesh);
+  int32_t components = 0;
+  connected_components(graph, &components);
+  const int32_t cap = options.max_anchors > 0 ? std::min(options.max_anchors, n) : n;
+  int32_t initial = options.initial_anchors > 0 ? options.initial_anchors : std::max(1, n / 1000);
+  initial = std::min(std::max(initial, components), std::max(cap, components));
+  std::vector<int32_t> chosen;
+  GAB_RETURN_IF_ERROR(farthest_point_sampling(graph, initial, {}, &chosen));
+
+  RelaxedReconstruction rec;
+  GAB_RETURN_IF_ERROR(rec.init(graph, options.weight, chosen, coefficients_of(chosen)));
+
+  AnchorModels models;
+  AnchorChunkCoder coder(quantizer, &models);
+  std::vector<char> coded(n, 0);  // anchored by the chunks written so far
+  std::vector<std::vector<uint8_t>> chunks;
+  auto close_chunk = [&](std::vector<int32_t> anchors, const double* prediction) {
+    std::sort(anchors.begin(), anchors.end());
+    chunks.push_back(coder.encode(anchors, coded, grid, prediction));
+    for (int32_t v : anchors) coded[v] = 1;
+    stats->chunk_anchors.push_back(static_cast<int32_t>(anchors.size()));
+  };
+  close_chunk(chosen, nullptr);
+
+  const double scale = diagonal2 > 0 ? 1.0 / std::sqrt(diagonal2) : 1.0;
+  std::vector<double> shape, prediction, error2(n);
+  std::vector<int32_t> open;  // anchors of the chunk being gathered
+  int32_t chunk_opened_at = rec.num_anchors();
+  double rms_rel = 0, linf_rel = 0;
+  while (true) {
+    GAB_RETURN_IF_ERROR(rec.reconstruct(&shape));
+    measure_error(mesh, shape, scale, &error2, &rms_rel, &linf_rel);
+    stats->curve.push_back({rec.num_anchors(), rms_rel, linf_rel});
+    if (options.progress) options.progress(rec.num_anchors(), rms_rel);
+    if (open.empty()) prediction = shape;  // what the decoder will hold when the next chunk starts
+    const bool rms_met = options.target_rms_rel > 0 && rms_rel <= options.target_rms_rel;
+    const bool linf_met = options.target_linf_rel > 0 && linf_rel <= options.target_linf_rel;
+    if (rms_met || linf_met || rec.num_anchors() >= cap) break;
+    const std::vector<int32_t> next = pick_error_maxima(graph, error2, rec, next_batch(options, stats->curve, cap));
+    GAB_RETURN_IF_ERROR(rec.add_anchors_cheapest(next, coefficients_of(next)));
+    open.insert(open.end(), next.begin(), next.end());
+    if (rec.num_anchors() >= options.chunk_growth * chunk_opened_at) {
+      close_chunk(open, prediction.data());
+      open.clear();
+      chunk_opened_at = rec.num_anchors();
+    }
+  }
+  if (!open.empty()) close_chunk(open, prediction.data());
+  stats->target_met = (options.target_rms_rel <= 0 || rms_rel <= options.target_rms_rel) &&
+                      (options.target_linf_rel <= 0 || linf_rel <= options.target_linf_rel);
+  if (options.max_anchors > 0 && options.target_rms_rel <= 0 && options.target_linf_rel <= 0) stats->target_met = true;
+
+  // Assemble the file.
+  GabHeader header;
+  header.flags = options.geometry_only ? kGabFlagGeometryOnly : 0;
+  header.bits = bits;
+  header.num_vertices = n;
+  header.num_triangles = mesh.num_triangles();
+  header.weight = options.weight;
+  header.quantizer = quantizer;
+  header.anchors = rec.num_anchors();
+  header.chunks = static_cast<int32_t>(chunks.size());
+  ByteWriter out;
+  write_gab_header(header, &out);
+  const size_t before_connectivity = out.size();
+  if (options.geometry_only) {
+    out.u64(connectivity_hash(n, mesh.triangles));
+  } else {
+    const std::vector<uint8_t> block = encode_connectivity(n, mesh.triangles);
+    write_framed(block.data(), block.size(), &out);
+  }
+  stats->connectivity_bytes = out.size() - before_connectivity;
+  for (const std::vector<uint8_t>& chunk : chunks) write_framed(chunk.data(), chunk.size(), &out);
+  stats->bytes = out.size();
+  stats->geometry_bytes = stats->bytes - stats->connectivity_bytes;
+  stats->anchors = rec.num_anchors();
+  stats->chunks = header.chunks;
+  stats->rms_rel = rms_rel;
+  stats->linf_rel = linf_rel;
+  *file = out.take();
+  stats->encode_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return Status::Ok();
+}
+
+}  // namespace gab

@@ -1,0 +1,193 @@
+// `gab compress / decompress / info / demo` (DESIGN.md section 6), by running
+// the gab binary.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "run_gab.h"
+
+namespace {
+
+using gab_test::CommandResult;
+using gab_test::json_number;
+using gab_test::run_gab;
+using gab_test::write_temp;
+
+// A bumpy torus as OFF text (n x m vertices).
+std::string torus_off(int n, int m) {
+  const double kPi = 3.14159265358979323846;
+  std::ostringstream s;
+  s.precision(17);
+  s << "OFF\n" << n * m << " " << 2 * n * m << " 0\n";
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < m; ++j) {
+      const double u = 2 * kPi * i / n, v = 2 * kPi * j / m;
+      const double r = 0.3 * (1 + 0.2 * std::sin(3 * u + 1) * std::cos(2 * v));
+      s << (1 + r * std::cos(v)) * std::cos(u) << " " << (1 + r * std::cos(v)) * std::sin(u) << " "
+        << r * std::sin(v) << "\n";
+    }
+  }
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < m; ++j) {
+      const int a = i * m + j, b = ((i + 1) % n) * m + j, c = ((i + 1) % n) * m + (j + 1) % m, d = i * m + (j + 1) % m;
+      s << "3 " << a << " " << b << " " << c << "\n3 " << a << " " << c << " " << d << "\n";
+    }
+  }
+  return s.str();
+}
+
+std::string read_all(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+}
+
+bool is_one_json_line(const std::string& out) {
+  return !out.empty() && out.front() == '{' && out.find('\n') == out.size() - 1 && out[out.size() - 2] == '}';
+}
+
+TEST(CodecCliTest, CompressDecompressInfoRoundTrip) {
+  const std::string in = write_temp("rt.off", torus_off(40, 20));
+  const std::string gab = write_temp("rt.gab", "");
+  const std::string out = write_temp("rt-out.ply", "");
+  CommandResult c = run_gab("compress -i " + in + " -o " + gab + " --anchors 60 --json");
+  ASSERT_EQ(c.exit_code, 0) << c.err;
+  ASSERT_TRUE(is_one_json_line(c.out)) << c.out;
+  for (const char* key : {"n", "faces", "anchors", "bits", "bytes", "geometry_bytes", "connectivity_bytes",
+                          "bpv_geometry", "linf_rel", "rms_rel", "encode_s"}) {
+    EXPECT_FALSE(std::isnan(json_number(c.out, key))) << key;
+  }
+  EXPECT_EQ(json_number(c.out, "n"), 800);
+  EXPECT_EQ(json_number(c.out, "faces"), 1600);
+  EXPECT_EQ(json_number(c.out, "anchors"), 60);
+  EXPECT_EQ(json_number(c.out, "bytes"), static_cast<double>(read_all(gab).size()));
+  EXPECT_EQ(json_number(c.out, "geometry_bytes") + json_number(c.out, "connectivity_bytes"),
+            json_number(c.out, "bytes"));
+  EXPECT_NEAR(json_number(c.out, "bpv_geometry"), 8 * json_number(c.out, "geometry_bytes") / 800, 1e-6);
+
+  CommandResult d = run_gab("decompress -i " + gab + " -o " + out + " --json");
+  ASSERT_EQ(d.exit_code, 0) << d.err;
+  ASSERT_TRUE(is_one_json_line(d.out)) << d.out;
+  for (const char* key : {"n", "anchors", "decode_s", "factor_s", "solve_s", "update_s"}) {
+    EXPECT_FALSE(std::isnan(json_number(d.out, key))) << key;
+  }
+  EXPECT_EQ(json_number(d.out, "anchors"), 60);
+  // The decoded mesh is what the encoder reported, in the same vertex order.
+  CommandResult diff = run_gab("diff " + in + " " + out + " --json --samples 0");
+  ASSERT_EQ(diff.exit_code, 0) << diff.err;
+  EXPECT_NEAR(json_number(diff.out, "rms_rel"), json_number(c.out, "rms_rel"), 1e-9);
+  EXPECT_NEAR(json_number(diff.out, "linf_rel"), json_number(c.out, "linf_rel"), 1e-9);
+
+  CommandResult i = run_gab("info " + gab + " --json");
+  ASSERT_EQ(i.exit_code, 0) << i.err;
+  EXPECT_EQ(json_number(i.out, "anchors"), 60);
+  EXPECT_EQ(json_number(i.out, "bytes"), json_number(c.out, "bytes"));
+  EXPECT_EQ(json_number(i.out, "connectivity_bytes"), json_number(c.out, "connectivity_bytes"));
+  EXPECT_EQ(json_number(i.out, "version"), 1);
+}
+
+TEST(CodecCliTest, LevelOfDetailFromOneFile) {
+  const std::string in = write_temp("lod.off", torus_off(40, 20));
+  const std::string gab = write_temp("lod.gab", "");
+  ASSERT_EQ(run_gab("compress -i " + in + " -o " + gab + " --anchors 150").exit_code, 0);
+  double previous = 1.0;
+  for (int k : {20, 60, 150}) {
+    const std::string out = write_temp("lod-" + std::to_string(k) + ".off", "");
+    CommandResult d = run_gab("decompress -i " + gab + " -o " + out + " --anchors " + std::to_string(k) + " --json");
+    ASSERT_EQ(d.exit_code, 0) << d.err;
+    EXPECT_EQ(json_number(d.out, "anchors"), k);
+    CommandResult diff = run_gab("diff " + in + " " + out + " --json --samples 0");
+    const double rms = json_number(diff.out, "rms_rel");
+    EXPECT_LT(rms, previous) << k;
+    previous = rms;
+  }
+}
+
+TEST(CodecCliTest, DecodingAtAnotherSimdLevelGivesTheSameAnchors) {
+  // Predictions are rounded with a guard band, so a decoder whose floating
+  // point differs (scalar kernels here) still decodes the same coefficients:
+  // the shapes agree to rounding, not just to the quantization step.
+  const std::string in = write_temp("simd.off", torus_off(60, 30));
+  const std::string gab = write_temp("simd.gab", "");
+  const std::string a = write_temp("simd-a.off", ""), b = write_temp("simd-b.off", "");
+  ASSERT_EQ(run_gab("compress -i " + in + " -o " + gab + " --error 0.002").exit_code, 0);
+  ASSERT_EQ(run_gab("decompress -i " + gab + " -o " + a).exit_code, 0);
+  ASSERT_EQ(run_gab("decompress -i " + gab + " -o " + b, "GAB_SIMD=scalar").exit_code, 0);
+  CommandResult diff = run_gab("diff " + a + " " + b + " --json --samples 0");
+  ASSERT_EQ(diff.exit_code, 0) << diff.err;
+  EXPECT_LT(json_number(diff.out, "linf_rel"), 1e-9);
+}
+
+TEST(CodecCliTest, TruncatedFileDecodesItsCompleteChunksWithAWarning) {
+  const std::string in = write_temp("cut.off", torus_off(40, 20));
+  const std::string gab = write_temp("cut.gab", "");
+  ASSERT_EQ(run_gab("compress -i " + in + " -o " + gab + " --anchors 100").exit_code, 0);
+  const std::string bytes = read_all(gab);
+  const std::string cut = write_temp("cut-short.gab", bytes.substr(0, bytes.size() - 10));
+  const std::string out = write_temp("cut-out.off", "");
+  CommandResult d = run_gab("decompress -i " + cut + " -o " + out + " --json");
+  ASSERT_EQ(d.exit_code, 0) << d.err;
+  EXPECT_LT(json_number(d.out, "anchors"), 100);
+  EXPECT_NE(d.err.find("gab decompress: warning: " + cut + " is truncated: decoded "), std::string::npos) << d.err;
+  CommandResult i = run_gab("info " + cut + " --json");
+  EXPECT_EQ(i.exit_code, 0) << i.err;
+  EXPECT_NE(i.out.find("\"truncated\": \"yes\""), std::string::npos);
+}
+
+TEST(CodecCliTest, GeometryOnlyFilesNeedTheirConnectivity) {
+  const std::string in = write_temp("geo.off", torus_off(30, 12));
+  const std::string other = write_temp("geo-other.off", torus_off(12, 30));
+  const std::string gab = write_temp("geo.gab", "");
+  const std::string out = write_temp("geo-out.obj", "");
+  ASSERT_EQ(run_gab("compress -i " + in + " -o " + gab + " --anchors 30 --geometry-only").exit_code, 0);
+  CommandResult d = run_gab("decompress -i " + gab + " -o " + out);
+  EXPECT_EQ(d.exit_code, 1);
+  EXPECT_EQ(d.err, "gab: error: " + gab +
+                       ": this file holds geometry only: give the mesh it was made from (--connectivity MESH)\n");
+  d = run_gab("decompress -i " + gab + " -o " + out + " --connectivity " + other);
+  EXPECT_EQ(d.exit_code, 1);
+  EXPECT_NE(d.err.find("the connectivity mesh is not the one this file was made from"), std::string::npos) << d.err;
+  d = run_gab("decompress -i " + gab + " -o " + out + " --connectivity " + in);
+  EXPECT_EQ(d.exit_code, 0) << d.err;
+}
+
+TEST(CodecCliTest, UsageAndInputErrors) {
+  const std::string in = write_temp("err.off", torus_off(10, 6));
+  const std::string gab = write_temp("err.gab", "");
+  CommandResult r = run_gab("compress -i " + in + " -o " + gab + " --anchors 5 --error 0.01");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("give at most one of --anchors, --error, --linf"), std::string::npos);
+  EXPECT_EQ(run_gab("compress -i " + in).exit_code, 2);
+  EXPECT_EQ(run_gab("compress -i " + in + " -o " + gab + " --bits 40").exit_code, 2);
+  EXPECT_EQ(run_gab("decompress -i " + gab + " -o x.txt").exit_code, 2);
+  EXPECT_EQ(run_gab("info").exit_code, 2);
+  // Bad input: exit 1, one line, and no output file left behind.
+  const std::string missing = write_temp("missing-out.gab", "");
+  std::remove(missing.c_str());
+  r = run_gab("compress -i /nonexistent/mesh.off -o " + missing);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err.rfind("gab: error: ", 0), 0u);
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1);
+  EXPECT_FALSE(std::ifstream(missing).good());
+  const std::string not_gab = write_temp("not.gab", "hello, world, this is not a gab file at all........");
+  r = run_gab("info " + not_gab);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "gab: error: " + not_gab + ": not a .gab file (bad magic)\n");
+}
+
+TEST(CodecCliTest, DemoRunsOnAGivenMeshAndWritesItsFiles) {
+  const std::string dir = ::testing::TempDir() + "/gab_demo_" + std::to_string(getpid());
+  const std::string mesh = write_temp("demo.off", torus_off(40, 20));
+  CommandResult r = run_gab("demo", "mkdir -p " + dir + " && cd " + dir + " && GAB_DEMO_MESH=" + mesh);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("anchors"), std::string::npos);
+  EXPECT_NE(r.out.find("800 vertices, 1600 triangles"), std::string::npos) << r.out;
+  EXPECT_TRUE(std::ifstream(dir + "/gab-demo/original.off").good());
+  EXPECT_TRUE(std::ifstream(dir + "/gab-demo/anchors-40.gab").good());
+  EXPECT_TRUE(std::ifstream(dir + "/gab-demo/anchors-40.off").good());
+}
+
+}  // namespace

@@ -1,0 +1,148 @@
+// Untrusted .gab files: every single-byte corruption and every truncation of
+// a small file gives a clear error or a valid (possibly coarser) mesh, never
+// a crash, a hang or a huge allocation (ASan/UBSan builds run this too).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "gab/codec/decoder.h"
+#include "gab/codec/encoder.h"
+#include "gab/codec/gab_format.h"
+#include "gab_file_test_util.h"
+
+namespace gab {
+namespace {
+
+std::vector<uint8_t> small_file(bool geometry_only) {
+  EncodeOptions options;
+  options.max_anchors = 24;
+  options.initial_anchors = 4;
+  options.chunk_growth = 1.6;
+  options.geometry_only = geometry_only;
+  EncodeStats es;
+  return testing_util::encode_or_die(testing_util::bumpy_torus(10, 6), options, &es);
+}
+
+// A decode result is acceptable if it failed with a message, or produced a
+// mesh of the declared size with finite coordinates.
+void expect_clean(const std::vector<uint8_t>& bytes, const DecodeOptions& options, const std::string& what) {
+  Mesh out;
+  DecodeStats ds;
+  const Status s = decode_mesh(bytes.data(), bytes.size(), options, &out, &ds);
+  if (!s.ok()) {
+    EXPECT_FALSE(s.message().empty()) << what;
+    return;
+  }
+  ASSERT_EQ(out.positions.size(), 3 * static_cast<size_t>(ds.num_vertices)) << what;
+  for (double x : out.positions) ASSERT_TRUE(std::isfinite(x)) << what;
+  for (int32_t i : out.triangles) ASSERT_TRUE(i >= 0 && i < ds.num_vertices) << what;
+  GabFileInfo info;
+  read_gab_info(bytes.data(), bytes.size(), &info);  // must not crash either
+}
+
+TEST(FileSafety, EveryByteFlipIsAnErrorOrAValidMesh) {
+  const Mesh connectivity = testing_util::bumpy_torus(10, 6);
+  for (bool geometry_only : {false, true}) {
+    const std::vector<uint8_t> file = small_file(geometry_only);
+    DecodeOptions options;
+    options.connectivity = geometry_only ? &connectivity : nullptr;
+    int errors = 0;
+    for (size_t i = 0; i < file.size(); ++i) {
+      for (uint8_t mask : {0x01, 0x80, 0xFF}) {
+        std::vector<uint8_t> bad = file;
+        bad[i] ^= mask;
+        Mesh out;
+        DecodeStats ds;
+        if (decode_mesh(bad.data(), bad.size(), options, &out, &ds).ok()) {
+          // Checksums cover every byte but the frame lengths; a length
+          // grown past the end reads as a truncated file, never as a
+          // complete one.
+          EXPECT_TRUE(ds.truncated) << "byte " << i << " ^ " << int{mask};
+        } else {
+          ++errors;
+        }
+        expect_clean(bad, options, "byte " + std::to_string(i) + " ^ " + std::to_string(mask));
+      }
+    }
+    EXPECT_GT(errors, static_cast<int>(2 * file.size()));
+  }
+}
+
+TEST(FileSafety, EveryTruncationIsAnErrorOrTheCompleteChunks) {
+  const std::vector<uint8_t> file = small_file(false);
+  GabFileInfo full;
+  ASSERT_TRUE(read_gab_info(file.data(), file.size(), &full).ok());
+  ASSERT_GE(full.chunks, 3);
+  const size_t chunk0_end = file.size() - [&] {
+    size_t rest = 0;
+    for (size_t c = 1; c < full.chunk_bytes.size(); ++c) rest += full.chunk_bytes[c];
+    return rest;
+  }();
+  for (size_t length = 0; length < file.size(); ++length) {
+    const std::vector<uint8_t> cut(file.begin(), file.begin() + length);
+    Mesh out;
+    DecodeStats ds;
+    const Status s = decode_mesh(cut.data(), cut.size(), DecodeOptions(), &out, &ds);
+    if (length < chunk0_end) {
+      EXPECT_FALSE(s.ok()) << length;
+    } else {
+      ASSERT_TRUE(s.ok()) << length << ": " << s.message();
+      EXPECT_TRUE(ds.truncated);
+      EXPECT_LT(ds.chunks, full.chunks);
+      EXPECT_EQ(out.num_vertices(), full.num_vertices);
+    }
+    expect_clean(cut, DecodeOptions(), "length " + std::to_string(length));
+  }
+}
+
+TEST(FileSafety, HeaderErrorsNameTheProblem) {
+  std::vector<uint8_t> file = small_file(false);
+  Mesh out;
+  DecodeStats ds;
+  auto message = [&](std::vector<uint8_t> bytes) {
+    return decode_mesh(bytes.data(), bytes.size(), DecodeOptions(), &out, &ds).message();
+  };
+  std::vector<uint8_t> bad = file;
+  bad[1] = 'X';
+  EXPECT_EQ(message(bad), "not a .gab file (bad magic)");
+  bad = file;
+  bad[8] = 9;
+  EXPECT_EQ(message(bad), "unsupported .gab version 9 (this build reads version 1)");
+  bad = file;
+  bad[20] ^= 1;  // inside the weight
+  EXPECT_EQ(message(bad), "bad .gab header: checksum mismatch (the header is corrupt)");
+  EXPECT_EQ(message(std::vector<uint8_t>(file.begin(), file.begin() + 30)),
+            "bad .gab header: file ends inside the header");
+  bad = file;
+  bad[kGabHeaderBytes + 9] ^= 4;  // inside the connectivity block
+  EXPECT_EQ(message(bad), "connectivity block is corrupt (checksum mismatch)");
+  bad = file;
+  bad[bad.size() - 1] ^= 4;  // inside the last chunk
+  GabFileInfo info;
+  ASSERT_TRUE(read_gab_info(file.data(), file.size(), &info).ok());
+  EXPECT_EQ(message(bad), "chunk " + std::to_string(info.chunks - 1) + " is corrupt (checksum mismatch)");
+  bad = file;
+  bad.push_back(0);
+  EXPECT_EQ(message(bad), "trailing bytes after the last chunk");
+}
+
+TEST(FileSafety, ForgedCountsCannotForceHugeAllocations) {
+  std::vector<uint8_t> file = small_file(false);
+  // n = 2^31 - 1 with a valid checksum: refused from the file size alone.
+  ByteWriter w;
+  GabHeader h;
+  h.num_vertices = 0x7FFFFFFF;
+  h.num_triangles = 1;
+  h.anchors = 1;
+  h.chunks = 1;
+  write_gab_header(h, &w);
+  std::vector<uint8_t> forged = w.take();
+  Mesh out;
+  DecodeStats ds;
+  EXPECT_EQ(decode_mesh(forged.data(), forged.size(), DecodeOptions(), &out, &ds).message(),
+            "bad .gab header: vertex count is implausible for a file of this size");
+}
+
+}  // namespace
+}  // namespace gab

@@ -1,0 +1,106 @@
+// Golden .gab files pin the format: the fuzzer seeds in tests/fuzz/corpus/gab
+// (a leading options byte, then a version-1 file made by `gab compress` from
+// gab_fuzz::seed_torus) must keep decoding to the same shapes, and a fresh
+// encoding must keep writing the same header. A deliberate format change
+// bumps kGabVersion and regenerates the seeds (see tests/fuzz/CMakeLists.txt).
+#include <dirent.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "fuzz/gab_fuzz_mesh.h"
+#include "gab/codec/decoder.h"
+#include "gab/codec/encoder.h"
+#include "gab/codec/gab_format.h"
+#include "gab/mesh/file_io.h"
+#include "gab_file_test_util.h"
+
+namespace gab {
+namespace {
+
+const std::string kCorpus = [] {
+  const std::string here = __FILE__;  // .../tests/codec/golden_file_test.cpp
+  return here.substr(0, here.rfind("/codec/")) + "/fuzz/corpus/gab";
+}();
+
+std::vector<uint8_t> seed(const std::string& name) {
+  std::string bytes;
+  EXPECT_TRUE(read_file(kCorpus + "/" + name, &bytes).ok()) << name;
+  return std::vector<uint8_t>(bytes.begin() + (bytes.empty() ? 0 : 1), bytes.end());
+}
+
+struct Golden {
+  const char* name;
+  bool geometry_only;
+  int bits, anchors, chunks;
+  double rms_rel;  // of the decoded shape against seed_torus
+};
+
+TEST(GoldenFiles, SeedsDecodeToTheirPinnedShapes) {
+  const Mesh torus = gab_fuzz::seed_torus();
+  const Golden goldens[] = {
+      {"torus-full", false, 12, 20, 8, 0.0226},
+      {"torus-geometry-only", true, 8, 12, 5, 0.0355},
+      {"torus-coarse", false, 6, 37, 7, 0.00989},
+  };
+  for (const Golden& g : goldens) {
+    const std::vector<uint8_t> file = seed(g.name);
+    ASSERT_GE(file.size(), kGabHeaderBytes) << g.name;
+    EXPECT_TRUE(std::equal(kGabMagic, kGabMagic + 8, file.begin())) << g.name;
+    EXPECT_EQ(file[8], 1) << g.name << ": format version";
+    DecodeOptions options;
+    options.connectivity = g.geometry_only ? &torus : nullptr;
+    Mesh out;
+    DecodeStats ds;
+    const Status s = decode_mesh(file.data(), file.size(), options, &out, &ds);
+    ASSERT_TRUE(s.ok()) << g.name << ": " << s.message();
+    EXPECT_EQ(out.triangles, torus.triangles) << g.name;
+    EXPECT_EQ(ds.bits, g.bits) << g.name;
+    EXPECT_EQ(ds.anchors, g.anchors) << g.name;
+    EXPECT_EQ(ds.chunks, g.chunks) << g.name;
+    EXPECT_NEAR(testing_util::relative_rms(torus, out), g.rms_rel, 5e-5) << g.name;
+  }
+}
+
+TEST(GoldenFiles, EncoderWritesThePinnedHeader) {
+  EncodeOptions options;
+  options.max_anchors = 20;
+  options.chunk_growth = 1.5;
+  EncodeStats es;
+  const std::vector<uint8_t> fresh = testing_util::encode_or_die(gab_fuzz::seed_torus(), options, &es);
+  const std::vector<uint8_t> golden = seed("torus-full");
+  ASSERT_GE(fresh.size(), kGabHeaderBytes);
+  ASSERT_GE(golden.size(), kGabHeaderBytes);
+  EXPECT_EQ(std::vector<uint8_t>(fresh.begin(), fresh.begin() + kGabHeaderBytes),
+            std::vector<uint8_t>(golden.begin(), golden.begin() + kGabHeaderBytes));
+}
+
+// Every seed, with and without each option bit, through the fuzzer's checks.
+TEST(GoldenFiles, SeedsPassTheFuzzersChecks) {
+  const Mesh torus = gab_fuzz::seed_torus();
+  DIR* d = opendir(kCorpus.c_str());
+  ASSERT_NE(d, nullptr);
+  int seen = 0;
+  while (dirent* e = readdir(d)) {
+    if (e->d_name[0] == '.') continue;
+    ++seen;
+    std::string bytes;
+    ASSERT_TRUE(read_file(kCorpus + "/" + e->d_name, &bytes).ok());
+    const std::vector<uint8_t> file(bytes.begin() + 1, bytes.end());
+    DecodeOptions options;
+    options.connectivity = (bytes[0] & 1) ? &torus : nullptr;
+    options.max_anchors = (bytes[0] & 2) ? static_cast<uint8_t>(bytes[0]) >> 2 : -1;
+    Mesh out;
+    DecodeStats ds;
+    const Status s = decode_mesh(file.data(), file.size(), options, &out, &ds);
+    ASSERT_TRUE(s.ok()) << e->d_name << ": " << s.message();
+    for (double x : out.positions) ASSERT_TRUE(std::isfinite(x)) << e->d_name;
+  }
+  closedir(d);
+  EXPECT_GE(seen, 4);
+}
+
+}  // namespace
+}  // namespace gab

@@ -1,0 +1,44 @@
+// libFuzzer target: the .gab decoder on untrusted bytes. The first input
+// byte picks the decoder's options (bit 0: supply the connectivity a
+// geometry-only seed was made from; bit 1: decode only a prefix of the
+// anchors); the rest is the file. Checks beyond "no crash": a failure is a
+// one-line message; a success is a mesh of the declared size with finite
+// coordinates and valid triangles; read_gab_info agrees on the counts (and, for a full decode, on validity).
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "fuzz_check.h"
+#include "gab/codec/decoder.h"
+#include "gab_fuzz_mesh.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  if (size < 1) return 0;
+  static const gab::Mesh connectivity = gab_fuzz::seed_torus();
+  gab::DecodeOptions options;
+  options.connectivity = (data[0] & 1) ? &connectivity : nullptr;
+  options.max_anchors = (data[0] & 2) ? data[0] >> 2 : -1;
+  // Keep forged connectivity within the fuzzer's memory limit.
+  options.max_matrix_entries = 1 << 20;
+  options.max_factor_entries = 1 << 22;
+  gab::Mesh mesh;
+  gab::DecodeStats stats;
+  const gab::Status status = gab::decode_mesh(data + 1, size - 1, options, &mesh, &stats);
+  gab::GabFileInfo info;
+  const gab::Status info_status = gab::read_gab_info(data + 1, size - 1, &info);
+  if (!status.ok()) {
+    gab_fuzz::require(!status.message().empty(), "empty error message");
+    gab_fuzz::require(status.message().find('\n') == std::string::npos, "error message spans lines");
+    return 0;
+  }
+  // A prefix decode never looks at the later chunks; a full one has
+  // checked everything info checks.
+  if (options.max_anchors < 0) gab_fuzz::require(info_status.ok(), "decodes but info fails");
+  gab_fuzz::require(!info_status.ok() || (info.num_vertices == stats.num_vertices &&
+                                           info.anchors == stats.anchors_in_file),
+                    "info and decoder disagree");
+  gab_fuzz::require(mesh.positions.size() == 3 * static_cast<size_t>(stats.num_vertices), "wrong vertex count");
+  for (double x : mesh.positions) gab_fuzz::require(std::isfinite(x), "non-finite coordinate");
+  gab_fuzz::require(gab::validate_mesh(mesh, "decoded").ok(), "decoded mesh is invalid");
+  return 0;
+}
