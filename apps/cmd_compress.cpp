@@ -20,7 +20,7 @@ namespace {
 
 const char* kUsage =
     "gab compress -i IN -o OUT.gab [--anchors K | --error E | --linf E] [--bits Q] [--weight W]\n"
-    "             [--geometry-only] [--json]";
+    "             [--geometry-only] [--json]   (tuning: --batch F --chunk-growth G --initial K)";
 
 constexpr double kDefaultError = 1e-3;
 
@@ -28,7 +28,8 @@ constexpr double kDefaultError = 1e-3;
 
 int run_compress(int argc, char** argv) {
   Args args;
-  if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--error", "--linf", "--bits", "--weight", "--batch", "--chunk-growth"},
+  if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--error", "--linf", "--bits", "--weight", "--batch", "--chunk-growth",
+                   "--initial"},
                   {"--json", "--geometry-only"})) {
     return usage_error("compress", args.error(), kUsage);
   }
@@ -37,16 +38,18 @@ int run_compress(int argc, char** argv) {
   const int rules = args.has("--anchors") + args.has("--error") + args.has("--linf");
   if (rules > 1) return usage_error("compress", "give at most one of --anchors, --error, --linf", kUsage);
   EncodeOptions options;
-  int64_t anchors = 0, bits = options.bits;
+  int64_t anchors = 0, bits = options.bits, initial = 0;
   double error = rules == 0 ? kDefaultError : 0.0, linf = 0.0;
   if (!args.get_int("--anchors", 1, 0x7FFFFFFF, &anchors) || !args.get_double("--error", 1e-12, 1.0, &error) ||
       !args.get_double("--linf", 1e-12, 1.0, &linf) || !args.get_int("--bits", kGabMinBits, kGabMaxBits, &bits) ||
       !args.get_double("--weight", 1e-6, 1e6, &options.weight) ||
       !args.get_double("--batch", 0.0, 1.0, &options.batch_fraction) ||
-      !args.get_double("--chunk-growth", 1.01, 1e9, &options.chunk_growth)) {
+      !args.get_double("--chunk-growth", 1.01, 1e9, &options.chunk_growth) ||
+      !args.get_int("--initial", 1, 0x7FFFFFFF, &initial)) {
     return usage_error("compress", args.error(), kUsage);
   }
   options.max_anchors = static_cast<int32_t>(anchors);
+  options.initial_anchors = static_cast<int32_t>(initial);
   options.target_rms_rel = error;
   options.target_linf_rel = linf;
   options.bits = static_cast<int>(bits);

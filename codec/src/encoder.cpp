@@ -30,7 +30,7 @@ Status check_options(const EncodeOptions& o) {
     return bad("bits must be in " + std::to_string(kGabMinBits) + ".." + std::to_string(kGabMaxBits));
   }
   if (!(o.weight > 0) || !std::isfinite(o.weight)) return bad("anchor weight must be positive and finite");
-  if (!(o.batch_fraction >= 0) || o.batch_fraction > 1) return bad("batch fraction must be in [0, 1]");
+  if (!(o.batch_fraction <= 1)) return bad("batch fraction must be at most 1");
   if (!(o.chunk_growth > 1) || !std::isfinite(o.chunk_growth)) return bad("chunk growth must be above 1");
   return Status::Ok();
 }
@@ -57,9 +57,9 @@ void measure_error(const Mesh& mesh, const std::vector<double>& shape, double sc
 // Anchors to add in the next greedy step: the batch fraction of those so
 // far, but near an RMS target only as many as the error curve's last two
 // points (rms ~ k^-alpha) say are still needed.
-int32_t next_batch(const EncodeOptions& o, const std::vector<GreedyStep>& curve, int32_t cap) {
+int32_t next_batch(const EncodeOptions& o, double fraction, const std::vector<GreedyStep>& curve, int32_t cap) {
   const int32_t k = curve.back().anchors;
-  int64_t wanted = o.batch_fraction > 0 ? static_cast<int64_t>(std::ceil(o.batch_fraction * k)) : 1;
+  int64_t wanted = fraction > 0 ? static_cast<int64_t>(std::ceil(fraction * k)) : 1;
   if (o.target_rms_rel > 0 && curve.size() >= 2) {
     const GreedyStep& a = curve[curve.size() - 2];
     const GreedyStep& b = curve.back();
@@ -74,11 +74,20 @@ int32_t next_batch(const EncodeOptions& o, const std::vector<GreedyStep>& curve,
 
 }  // namespace
 
+int32_t default_initial_anchors(int32_t n) {
+  const double scale = std::max(1.0, static_cast<double>(n) / 50000.0);
+  return static_cast<int32_t>(std::max(1.0, std::min(n / 1000.0 * scale * scale, n / 100.0)));
+}
+
+double default_batch_fraction(double flops) {
+  return std::min(0.5, 0.05 * std::pow(std::max(1.0, flops / 2e9), 0.8));
+}
+
 int default_bits(double extent_over_diagonal, double target_rms_rel, double target_linf_rel) {
   if (!(target_rms_rel > 0) && !(target_linf_rel > 0)) return 12;
   for (int q = kGabMinBits; q < kGabMaxBits; ++q) {
     const double step = extent_over_diagonal / static_cast<double>((int64_t{1} << q) - 1);
-    const bool rms_ok = !(target_rms_rel > 0) || step / 2 <= 0.65 * target_rms_rel;
+    const bool rms_ok = !(target_rms_rel > 0) || step / 2 <= 0.8 * target_rms_rel;
     const bool linf_ok = !(target_linf_rel > 0) || step * std::sqrt(3.0) / 2 <= 0.5 * target_linf_rel;
     if (rms_ok && linf_ok) return q;
   }
@@ -131,13 +140,15 @@ Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<u
   int32_t components = 0;
   connected_components(graph, &components);
   const int32_t cap = options.max_anchors > 0 ? std::min(options.max_anchors, n) : n;
-  int32_t initial = options.initial_anchors > 0 ? options.initial_anchors : std::max(1, n / 1000);
+  int32_t initial = options.initial_anchors > 0 ? options.initial_anchors : default_initial_anchors(n);
   initial = std::min(std::max(initial, components), std::max(cap, components));
   std::vector<int32_t> chosen;
   GAB_RETURN_IF_ERROR(farthest_point_sampling(graph, initial, {}, &chosen));
 
   RelaxedReconstruction rec;
   GAB_RETURN_IF_ERROR(rec.init(graph, options.weight, chosen, coefficients_of(chosen)));
+  const double fraction = options.batch_fraction >= 0 ? options.batch_fraction
+                                                      : default_batch_fraction(rec.cholesky().symbolic().flops);
 
   AnchorModels models;
   AnchorChunkCoder coder(quantizer, &models);
@@ -165,7 +176,7 @@ Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<u
     const bool rms_met = options.target_rms_rel > 0 && rms_rel <= options.target_rms_rel;
     const bool linf_met = options.target_linf_rel > 0 && linf_rel <= options.target_linf_rel;
     if (rms_met || linf_met || rec.num_anchors() >= cap) break;
-    const std::vector<int32_t> next = pick_error_maxima(graph, error2, rec, next_batch(options, stats->curve, cap));
+    const std::vector<int32_t> next = pick_error_maxima(graph, error2, rec, next_batch(options, fraction, stats->curve, cap));
     GAB_RETURN_IF_ERROR(rec.add_anchors_cheapest(next, coefficients_of(next)));
     open.insert(open.end(), next.begin(), next.end());
     if (rec.num_anchors() >= options.chunk_growth * chunk_opened_at) {

@@ -21,8 +21,8 @@ constexpr int kAdaptiveMantissaBits = 2;
 
 }  // namespace
 
-UIntCoder::UIntCoder(int contexts)
-    : models_(static_cast<size_t>(std::max(contexts, 1)) * kModelsPerContext),
+UIntCoder::UIntCoder(int contexts, int adapt_shift)
+    : models_(static_cast<size_t>(std::max(contexts, 1)) * kModelsPerContext, BitModel(adapt_shift)),
       contexts_(std::max(contexts, 1)) {}
 
 int UIntCoder::contexts() const { return contexts_; }
@@ -90,10 +90,10 @@ uint32_t UIntCoder::decode(RangeDecoder* dec, int context) {
   return value;
 }
 
-SIntCoder::SIntCoder(int contexts)
-    : zero_(static_cast<size_t>(std::max(contexts, 1))),
-      sign_(static_cast<size_t>(std::max(contexts, 1))),
-      magnitude_(contexts) {}
+SIntCoder::SIntCoder(int contexts, int adapt_shift)
+    : zero_(static_cast<size_t>(std::max(contexts, 1)), BitModel(adapt_shift)),
+      sign_(static_cast<size_t>(std::max(contexts, 1)), BitModel(adapt_shift)),
+      magnitude_(contexts, adapt_shift) {}
 
 int SIntCoder::clamp(int context) const {
   return std::min(std::max(context, 0), static_cast<int>(zero_.size()) - 1);

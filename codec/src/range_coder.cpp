@@ -12,9 +12,9 @@ constexpr uint32_t kTop = 1u << 24;  // renormalize below this range
 inline void adapt(BitModel* model, int bit) {
   const uint32_t p0 = model->p0;
   if (bit == 0) {
-    model->p0 = static_cast<uint16_t>(p0 + ((BitModel::kMax - p0) >> BitModel::kAdaptShift));
+    model->p0 = static_cast<uint16_t>(p0 + ((BitModel::kMax - p0) >> model->shift));
   } else {
-    model->p0 = static_cast<uint16_t>(p0 - ((p0 - BitModel::kMin) >> BitModel::kAdaptShift));
+    model->p0 = static_cast<uint16_t>(p0 - ((p0 - BitModel::kMin) >> model->shift));
   }
 }
 

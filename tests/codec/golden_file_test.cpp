@@ -2,7 +2,7 @@
 // (a leading options byte, then a version-1 file made by `gab compress` from
 // gab_fuzz::seed_torus) must keep decoding to the same shapes, and a fresh
 // encoding must keep writing the same header. A deliberate format change
-// bumps kGabVersion and regenerates the seeds (see tests/fuzz/CMakeLists.txt).
+// bumps kGabVersion and regenerates the seeds (tests/fuzz/make_gab_seeds.sh).
 #include <dirent.h>
 #include <gtest/gtest.h>
 

@@ -25,15 +25,19 @@ struct EncodeOptions {
   int bits = 0;
   double weight = 100;          // anchor weight w of the relaxed basis
   bool geometry_only = false;   // store a connectivity hash instead of the triangles
-  int32_t initial_anchors = 0;  // spread set size; 0: n / 1000 (at least one per component)
+  int32_t initial_anchors = 0;  // spread set size; 0: default_initial_anchors (at least one per component)
   // Greedy batch: up to ceil(batch_fraction * anchors so far) local maxima
-  // of the error per step (0: one anchor per step, the paper's rule). Near
-  // an RMS target the batch shrinks to the anchors the error curve's recent
+  // of the error per step (0: one anchor per step, the paper's rule;
+  // negative: default_batch_fraction of the factorization's cost). Near an
+  // RMS target the batch shrinks to the anchors the error curve's recent
   // slope says are still needed, so the file does not overshoot.
-  double batch_fraction = 0.05;
+  double batch_fraction = -1;
   // A chunk closes when the anchor count has grown by this factor since it
-  // opened: fewer chunks decode faster, more predict better.
-  double chunk_growth = 2.0;
+  // opened: fewer chunks decode faster (each costs the decoder a solve and
+  // an update or refactorization), more predict better. Measured at 1e-3 on
+  // camel-head and horse, growth 2, 3, 4, 8 gave 1.71/1.65/1.69/1.76 and
+  // 1.78/1.76/1.74/1.76 bits per vertex: 4 costs nothing and decodes faster.
+  double chunk_growth = 4.0;
   // Called after every reconstruction (anchors so far, relative RMS).
   std::function<void(int32_t, double)> progress;
 };
@@ -54,10 +58,25 @@ struct EncodeStats {
 
 // The q the encoder picks for an error target on a mesh whose longest box
 // side over its diagonal is `extent_over_diagonal`: the smallest q whose
-// grid alone errs (RMS s/2, max s sqrt(3)/2 for step s) by at most 0.65 of
-// an RMS target or 0.5 of an L-inf one. Measured on the shared meshes at
-// 1e-3: q = 9 or 10 beats 12 by 15-30% in rate at the same error.
+// grid alone errs (RMS s/2, max s sqrt(3)/2 for step s) by at most 0.8 of
+// an RMS target or 0.5 of an L-inf one; 12 (the paper's) without a target.
+// Measured on camel-head and horse, the best q for RMS targets 3e-3, 1e-3
+// and 3e-4 was 8, 9 and 11: what this rule gives; q = 12 costs 15-30% more.
 int default_bits(double extent_over_diagonal, double target_rms_rel, double target_linf_rel);
+
+// The farthest-point spread set the greedy loop starts from: n / 1000 up to
+// 50,000 vertices, growing as n^2 / 5e7 beyond (at most n / 100), so large
+// meshes take fewer, costlier greedy steps (igea: 967 anchors; encode 4.5 s
+// instead of 6.6 s at 1e-3, and 1.20 instead of 1.23 bits per vertex; on
+// camel-head and feline n / 100 would cost 5% in rate).
+int32_t default_initial_anchors(int32_t n);
+
+// The greedy batch fraction for a system whose factorization costs `flops`:
+// 5% (what the reference quality needs; measured 1.78 bits per vertex on
+// horse at 1e-3 against 1.86 / 1.96 / 2.13 at 10 / 20 / 35%) while a
+// refactorization is cheap, growing as (flops / 2e9)^0.8 up to 50% so that
+// large meshes need a bounded number of steps (igea: ~33%).
+double default_batch_fraction(double flops);
 
 // Compresses `mesh` (valid per validate_mesh) into `file`.
 Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* file, EncodeStats* stats);

@@ -19,9 +19,10 @@ namespace gab {
 // Unsigned 32-bit values. `contexts` (>= 1) independent sets of statistics;
 // the caller picks one per value (for instance from a neighbour's
 // magnitude). A context out of [0, contexts) is clamped into it.
+// `adapt_shift`: how fast the models adapt (BitModel::shift).
 class UIntCoder {
  public:
-  explicit UIntCoder(int contexts = 1);
+  explicit UIntCoder(int contexts = 1, int adapt_shift = BitModel::kAdaptShift);
   void encode(RangeEncoder* enc, uint32_t value, int context = 0);
   // Any input decodes to some uint32 (garbage in, garbage out, no UB).
   uint32_t decode(RangeDecoder* dec, int context = 0);
@@ -42,7 +43,7 @@ class UIntCoder {
 // beyond the int32 range decodes saturated to INT32_MAX / INT32_MIN.
 class SIntCoder {
  public:
-  explicit SIntCoder(int contexts = 1);
+  explicit SIntCoder(int contexts = 1, int adapt_shift = BitModel::kAdaptShift);
   void encode(RangeEncoder* enc, int32_t value, int context = 0);
   int32_t decode(RangeDecoder* dec, int context = 0);
 

@@ -21,7 +21,6 @@ class RelaxedReconstruction {
   // coefficients are `coefficients` (3 per anchor: x y z). Anchors must be
   // distinct vertices and every connected component needs one (otherwise
   // the system is singular: the error names a vertex of such a component).
-  // `graph` must outlive this object (refactorizations reassemble from it).
   // Cost: one AMD ordering, analysis and factorization.
   Status init(const EdgeGraph& graph, double weight, const std::vector<int32_t>& anchors,
               const std::vector<double>& coefficients);
@@ -32,9 +31,9 @@ class RelaxedReconstruction {
   Status add_anchors(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
 
   // Same result as add_anchors up to rounding, by a fresh numeric
-  // factorization of the whole matrix (the analysis is reused: anchors only
-  // change the diagonal). Cost: one assembly and factorization, whatever
-  // the number of anchors.
+  // factorization of the whole matrix (the analysis and the assembled matrix
+  // are reused: anchors only change its diagonal). Cost: one numeric
+  // factorization, whatever the number of anchors.
   Status add_anchors_refactoring(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
 
   // add_anchors or add_anchors_refactoring, whichever the cost model says
@@ -64,11 +63,12 @@ class RelaxedReconstruction {
  private:
   Status check_new(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
   void add_to_rhs(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
+  void add_to_matrix(const std::vector<int32_t>& anchors);
 
-  const EdgeGraph* graph_ = nullptr;  // the graph given to init (must outlive this object)
   int32_t n_ = 0;
   double weight_ = 0.0;
   Cholesky chol_;
+  CscMatrix matrix_;  // lower triangle of L^T L + w^2 E^T E for the anchors so far
   std::vector<int32_t> anchors_;
   std::vector<char> anchored_;
   std::vector<double> rhs_;  // w^2 E^T c: n x 3 column-major

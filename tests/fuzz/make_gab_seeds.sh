@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Regenerates tests/fuzz/corpus/gab (the .gab fuzzer's seeds and the golden
+# files of tests/codec/golden_file_test.cpp) with the gab binary given as $1:
+#   bash tests/fuzz/make_gab_seeds.sh build/apps/gab
+# Each seed is one options byte (see gab_fuzzer.cpp) then a file made from
+# the 10 x 6 torus of gab_fuzz_mesh.h. Only for a deliberate format change
+# (bump kGabVersion too) — then update the pinned numbers in the golden test.
+set -euo pipefail
+gab="$1"
+here="$(cd "$(dirname "$0")" && pwd)"
+out="$here/corpus/gab"
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+python3 - "$tmp/torus.off" <<'PY'
+import math, sys
+n, m = 10, 6
+with open(sys.argv[1], "w") as f:
+    f.write("OFF\n%d %d 0\n" % (n * m, 2 * n * m))
+    for i in range(n):
+        for j in range(m):
+            u, v = 2 * math.pi * i / n, 2 * math.pi * j / m
+            f.write("%.17g %.17g %.17g\n" % ((1 + 0.3 * math.cos(v)) * math.cos(u),
+                                            (1 + 0.3 * math.cos(v)) * math.sin(u), 0.3 * math.sin(v)))
+    for i in range(n):
+        for j in range(m):
+            a, b = i * m + j, ((i + 1) % n) * m + j
+            c, d = ((i + 1) % n) * m + (j + 1) % m, i * m + (j + 1) % m
+            f.write("3 %d %d %d\n3 %d %d %d\n" % (a, b, c, a, c, d))
+PY
+"$gab" compress -i "$tmp/torus.off" -o "$tmp/full.gab" --anchors 20 --chunk-growth 1.5
+"$gab" compress -i "$tmp/torus.off" -o "$tmp/geo.gab" --anchors 12 --geometry-only --bits 8 --chunk-growth 2
+"$gab" compress -i "$tmp/torus.off" -o "$tmp/coarse.gab" --error 0.01 --bits 6 --chunk-growth 2
+mkdir -p "$out"
+{ printf '\x00'; cat "$tmp/full.gab"; } > "$out/torus-full"
+{ printf '\x01'; cat "$tmp/geo.gab"; } > "$out/torus-geometry-only"
+{ printf '\x16'; cat "$tmp/full.gab"; } > "$out/torus-prefix-5"
+{ printf '\x00'; cat "$tmp/coarse.gab"; } > "$out/torus-coarse"
