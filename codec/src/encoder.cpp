@@ -31,7 +31,8 @@ Status check_options(const EncodeOptions& o) {
   }
   if (!(o.weight > 0) || !std::isfinite(o.weight)) return bad("anchor weight must be positive and finite");
   if (!(o.batch_fraction <= 1)) return bad("batch fraction must be at most 1");
-  if (!(o.chunk_growth > 1) || !std::isfinite(o.chunk_growth)) return bad("chunk growth must be above 1");
+  if (o.chunk_growth > 0 && !(o.chunk_growth > 1)) return bad("chunk growth must be above 1");
+  if (!std::isfinite(o.chunk_growth)) return bad("chunk growth must be finite");
   return Status::Ok();
 }
 
@@ -82,6 +83,8 @@ int32_t default_initial_anchors(int32_t n) {
 double default_batch_fraction(double flops) {
   return std::min(0.5, 0.05 * std::pow(std::max(1.0, flops / 2e9), 0.8));
 }
+
+double default_chunk_growth(double flops) { return 4.0 * std::pow(std::max(1.0, flops / 2e9), 0.6); }
 
 int default_bits(double extent_over_diagonal, double target_rms_rel, double target_linf_rel) {
   if (!(target_rms_rel > 0) && !(target_linf_rel > 0)) return 12;
@@ -149,6 +152,8 @@ Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<u
   GAB_RETURN_IF_ERROR(rec.init(graph, options.weight, chosen, coefficients_of(chosen)));
   const double fraction = options.batch_fraction >= 0 ? options.batch_fraction
                                                       : default_batch_fraction(rec.cholesky().symbolic().flops);
+  const double growth = options.chunk_growth > 0 ? options.chunk_growth
+                                                 : default_chunk_growth(rec.cholesky().symbolic().flops);
 
   AnchorModels models;
   AnchorChunkCoder coder(quantizer, &models);
@@ -179,7 +184,7 @@ Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<u
     const std::vector<int32_t> next = pick_error_maxima(graph, error2, rec, next_batch(options, fraction, stats->curve, cap));
     GAB_RETURN_IF_ERROR(rec.add_anchors_cheapest(next, coefficients_of(next)));
     open.insert(open.end(), next.begin(), next.end());
-    if (rec.num_anchors() >= options.chunk_growth * chunk_opened_at) {
+    if (rec.num_anchors() >= growth * chunk_opened_at) {
       close_chunk(open, prediction.data());
       open.clear();
       chunk_opened_at = rec.num_anchors();

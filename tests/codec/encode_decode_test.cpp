@@ -6,6 +6,7 @@
 
 #include "gab/codec/decoder.h"
 #include "gab/codec/encoder.h"
+#include "gab/codec/gab_format.h"
 #include "gab_file_test_util.h"
 
 namespace gab {
@@ -203,6 +204,25 @@ TEST(EncodeDecode, OptionErrors) {
   EXPECT_EQ(encode_mesh(mesh, weight, &file, &es).message(), "anchor weight must be positive and finite");
   Mesh empty;
   EXPECT_FALSE(encode_mesh(empty, bits, &file, &es).ok());
+}
+
+TEST(EncodeDecode, DefaultsFollowTheMeasuredRules) {
+  // q: the best measured at 3e-3 / 1e-3 / 3e-4 on camel-head and horse.
+  EXPECT_EQ(default_bits(0.75, 3e-3, 0), 8);
+  EXPECT_EQ(default_bits(0.75, 1e-3, 0), 9);
+  EXPECT_EQ(default_bits(0.75, 3e-4, 0), 11);
+  EXPECT_EQ(default_bits(0.75, 0, 0), 12);
+  EXPECT_GE(default_bits(0.75, 0, 1e-3), default_bits(0.75, 1e-3, 0));  // L-inf wants the finer grid
+  EXPECT_EQ(default_bits(0.75, 1e-12, 0), kGabMaxBits);
+  // Batches, chunks and the spread set grow only for costly systems.
+  EXPECT_DOUBLE_EQ(default_batch_fraction(1e9), 0.05);
+  EXPECT_NEAR(default_batch_fraction(2.16e10), 0.33, 0.01);
+  EXPECT_DOUBLE_EQ(default_batch_fraction(1e15), 0.5);
+  EXPECT_DOUBLE_EQ(default_chunk_growth(1e9), 4.0);
+  EXPECT_NEAR(default_chunk_growth(2.16e10), 16.7, 0.1);
+  EXPECT_EQ(default_initial_anchors(11381), 11);
+  EXPECT_EQ(default_initial_anchors(134345), 969);
+  EXPECT_EQ(default_initial_anchors(5), 1);
 }
 
 TEST(EncodeDecode, FinerGridsCostMoreBitsAndErrLess) {

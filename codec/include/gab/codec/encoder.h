@@ -34,10 +34,9 @@ struct EncodeOptions {
   double batch_fraction = -1;
   // A chunk closes when the anchor count has grown by this factor since it
   // opened: fewer chunks decode faster (each costs the decoder a solve and
-  // an update or refactorization), more predict better. Measured at 1e-3 on
-  // camel-head and horse, growth 2, 3, 4, 8 gave 1.71/1.65/1.69/1.76 and
-  // 1.78/1.76/1.74/1.76 bits per vertex: 4 costs nothing and decodes faster.
-  double chunk_growth = 4.0;
+  // an update or refactorization), more predict better. Non-positive:
+  // default_chunk_growth of the factorization's cost.
+  double chunk_growth = -1;
   // Called after every reconstruction (anchors so far, relative RMS).
   std::function<void(int32_t, double)> progress;
 };
@@ -77,6 +76,15 @@ int32_t default_initial_anchors(int32_t n);
 // refactorization is cheap, growing as (flops / 2e9)^0.8 up to 50% so that
 // large meshes need a bounded number of steps (igea: ~33%).
 double default_batch_fraction(double flops);
+
+// Chunk growth for a system whose factorization costs `flops`: 4 while a
+// refactorization is cheap (measured at 1e-3 on camel-head and horse:
+// growth 2, 3, 4, 8 gave 1.71/1.65/1.69/1.76 and 1.78/1.76/1.74/1.76 bits
+// per vertex, and fewer chunks decode faster), growing as (flops / 2e9)^0.6
+// beyond, since each chunk costs the decoder a refactorization (igea: ~17,
+// i.e. two chunks: 1.17 bits per vertex and a 1.4 s decode against 1.20 and
+// 1.8 s with growth 4).
+double default_chunk_growth(double flops);
 
 // Compresses `mesh` (valid per validate_mesh) into `file`.
 Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* file, EncodeStats* stats);
