@@ -53,6 +53,7 @@ void RelaxedReconstruction::add_to_rhs(const std::vector<int32_t>& anchors,
     }
     anchored_[anchors[i]] = 1;
     anchors_.push_back(anchors[i]);
+    coefficients_.insert(coefficients_.end(), &coefficients[3 * i], &coefficients[3 * i] + 3);
   }
 }
 
@@ -65,6 +66,7 @@ Status RelaxedReconstruction::init(const EdgeGraph& graph, double weight,
   n_ = graph.num_vertices();
   weight_ = weight;
   anchors_.clear();
+  coefficients_.clear();
   anchored_.assign(n_, 0);
   rhs_.assign(static_cast<size_t>(n_) * 3, 0.0);
   GAB_RETURN_IF_ERROR(check_new(anchors, coefficients));
@@ -138,6 +140,29 @@ Status RelaxedReconstruction::add_anchors_cheapest(const std::vector<int32_t>& a
   if (!chol_.factorized()) return Status::Error(StatusCode::kInvalidArgument, "add_anchors before init");
   return update_cost_ratio(anchors) > 1.0 ? add_anchors_refactoring(anchors, coefficients)
                                           : add_anchors(anchors, coefficients);
+}
+
+Status RelaxedReconstruction::set_coefficients(int32_t first, const std::vector<double>& coefficients) {
+  if (first < 0 || first > num_anchors() || coefficients.size() != 3 * static_cast<size_t>(num_anchors() - first)) {
+    return Status::Error(StatusCode::kInvalidArgument, "set_coefficients: need 3 coefficients per anchor from " +
+                                                           std::to_string(first) + " on");
+  }
+  for (double c : coefficients) {
+    if (!std::isfinite(c)) return Status::Error(StatusCode::kInvalidArgument, "anchor coefficient is not finite");
+  }
+  const double w2 = weight_ * weight_;
+  for (size_t i = 0; i < coefficients.size(); ++i) {
+    const size_t slot = 3 * static_cast<size_t>(first) + i;
+    const int32_t a = anchors_[slot / 3];
+    rhs_[a + (slot % 3) * static_cast<size_t>(n_)] = w2 * coefficients[i];  // the only anchor at row a
+    coefficients_[slot] = coefficients[i];
+  }
+  return Status::Ok();
+}
+
+Status RelaxedReconstruction::solve_system(double* b) {
+  if (!chol_.factorized()) return Status::Error(StatusCode::kInvalidArgument, "solve before init");
+  return chol_.solve(b, 3, n_);
 }
 
 Status RelaxedReconstruction::reconstruct(std::vector<double>* positions) {

@@ -78,6 +78,24 @@ TEST(RelaxedReconstructionTest, RefactoringAndCheapestAgreeWithUpdates) {
             "vertex 150 is already an anchor");
 }
 
+TEST(RelaxedReconstructionTest, SetCoefficientsEqualsAFreshStart) {
+  const Mesh m = bumpy_sphere(3);
+  const EdgeGraph g = build_edge_graph(m);
+  const std::vector<int32_t> anchors = {0, 1, 2, 3, 4, 5, 60, 90};
+  std::vector<double> c = coefficients(m, anchors), moved = c;
+  for (size_t i = 9; i < moved.size(); ++i) moved[i] += 0.01 * static_cast<double>(i);
+  RelaxedReconstruction changed, fresh;
+  ASSERT_TRUE(changed.init(g, 3.0, anchors, c).ok());
+  ASSERT_TRUE(changed.set_coefficients(3, std::vector<double>(moved.begin() + 9, moved.end())).ok());
+  ASSERT_TRUE(fresh.init(g, 3.0, anchors, moved).ok());
+  EXPECT_EQ(changed.coefficients(), moved);
+  std::vector<double> a, b;
+  ASSERT_TRUE(changed.reconstruct(&a).ok());
+  ASSERT_TRUE(fresh.reconstruct(&b).ok());
+  for (size_t i = 0; i < a.size(); ++i) EXPECT_NEAR(a[i], b[i], 1e-12);
+  EXPECT_EQ(changed.set_coefficients(9, {}).message(), "set_coefficients: need 3 coefficients per anchor from 9 on");
+}
+
 TEST(RelaxedReconstructionTest, UpdateCostRatioGrowsWithTheAnchors) {
   const Mesh m = bumpy_sphere(4);
   const EdgeGraph g = build_edge_graph(m);

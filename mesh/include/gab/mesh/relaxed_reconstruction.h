@@ -49,10 +49,21 @@ class RelaxedReconstruction {
   // length in supernodes) per anchor.
   double update_cost_ratio(const std::vector<int32_t>& anchors) const;
 
+  // Replaces the coefficients of anchors first.. (in anchors() order) by
+  // `coefficients` (3 per anchor). Only the right-hand side changes. O(k).
+  Status set_coefficients(int32_t first, const std::vector<double>& coefficients);
+  // The coefficients, 3 per anchor in anchors() order.
+  const std::vector<double>& coefficients() const { return coefficients_; }
+
   // The current shape, 3 coordinates per vertex (x0 y0 z0 x1 ...). Cost: one
   // solve with three right-hand sides.
   Status reconstruct(std::vector<double>* positions);
 
+  // Solves M X = B in place for the current matrix M (b: n x 3
+  // column-major, one column per coordinate). Cost: one solve.
+  Status solve_system(double* b);
+
+  double weight() const { return weight_; }
   int32_t num_vertices() const { return n_; }
   int32_t num_anchors() const { return static_cast<int32_t>(anchors_.size()); }
   // Anchors in the order they were given.
@@ -70,6 +81,7 @@ class RelaxedReconstruction {
   Cholesky chol_;
   CscMatrix matrix_;  // lower triangle of L^T L + w^2 E^T E for the anchors so far
   std::vector<int32_t> anchors_;
+  std::vector<double> coefficients_;  // 3 per anchor
   std::vector<char> anchored_;
   std::vector<double> rhs_;  // w^2 E^T c: n x 3 column-major
 };
