@@ -8,18 +8,12 @@
 #include <cmath>
 #include <string>
 
+#include "anchor_checks.h"
 namespace gab {
 
 Status InterpolatoryReconstruction::check_new(const std::vector<int32_t>& anchors,
                                               const std::vector<double>& coefficients) {
-  if (coefficients.size() != 3 * anchors.size()) {
-    return Status::Error(StatusCode::kInvalidArgument,
-                         "need 3 coefficients per anchor: got " + std::to_string(coefficients.size()) +
-                             " for " + std::to_string(anchors.size()) + " anchors");
-  }
-  for (double c : coefficients) {
-    if (!std::isfinite(c)) return Status::Error(StatusCode::kInvalidArgument, "anchor coefficient is not finite");
-  }
+  GAB_RETURN_IF_ERROR(check_anchor_coefficients(anchors.size(), coefficients));
   // Mark the new anchors kChecking while checking, then restore them.
   const int32_t n = num_vertices();
   Status status;
