@@ -90,7 +90,7 @@ Status select_anchors_greedy(const Mesh& mesh, const EdgeGraph& graph, const Gre
     const int32_t room = options.max_anchors - rec.num_anchors();
     const std::vector<int32_t> next =
         pick_error_maxima(graph, error, rec, static_cast<int32_t>(std::min<int64_t>(std::max<int64_t>(wanted, 1), room)));
-    GAB_RETURN_IF_ERROR(rec.add_anchors(next, coefficients_of(mesh, next)));
+    GAB_RETURN_IF_ERROR(rec.add_anchors_cheapest(next, coefficients_of(mesh, next)));
   }
   *anchors = rec.anchors();
   return Status::Ok();
