@@ -77,7 +77,7 @@ int32_t next_batch(const EncodeOptions& o, double fraction, const std::vector<Gr
 
 int32_t default_initial_anchors(int32_t n) {
   const double scale = std::max(1.0, static_cast<double>(n) / 50000.0);
-  return static_cast<int32_t>(std::max(1.0, std::min(n / 1000.0 * scale * scale, n / 100.0)));
+  return static_cast<int32_t>(std::max(1.0, std::min(n / 1000.0 * scale * scale * scale, n / 50.0)));
 }
 
 double default_batch_fraction(double flops) {

@@ -221,7 +221,8 @@ TEST(EncodeDecode, DefaultsFollowTheMeasuredRules) {
   EXPECT_DOUBLE_EQ(default_chunk_growth(1e9), 4.0);
   EXPECT_NEAR(default_chunk_growth(2.16e10), 16.7, 0.1);
   EXPECT_EQ(default_initial_anchors(11381), 11);
-  EXPECT_EQ(default_initial_anchors(134345), 969);
+  EXPECT_EQ(default_initial_anchors(134345), 2606);
+  EXPECT_EQ(default_initial_anchors(1000000), 20000);  // the n / 50 cap
   EXPECT_EQ(default_initial_anchors(5), 1);
 }
 

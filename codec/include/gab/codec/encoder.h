@@ -64,10 +64,12 @@ struct EncodeStats {
 int default_bits(double extent_over_diagonal, double target_rms_rel, double target_linf_rel);
 
 // The farthest-point spread set the greedy loop starts from: n / 1000 up to
-// 50,000 vertices, growing as n^2 / 5e7 beyond (at most n / 100), so large
-// meshes take fewer, costlier greedy steps (igea: 967 anchors; encode 4.5 s
-// instead of 6.6 s at 1e-3, and 1.20 instead of 1.23 bits per vertex; on
-// camel-head and feline n / 100 would cost 5% in rate).
+// 50,000 vertices, growing as n^4 / 1.25e17 beyond (at most n / 50), so
+// large meshes take fewer, costlier greedy steps. igea at 1e-3 (median of
+// runs on this machine): 2,606 anchors, encode 3.2-3.5 s at 1.27 bits per
+// vertex, against 969 anchors: 4.9-5.9 s at 1.17 (each greedy step there
+// is a refactorization). Below 50,000 vertices a larger set costs rate
+// (n / 100 on camel-head and feline: +5%).
 int32_t default_initial_anchors(int32_t n);
 
 // The greedy batch fraction for a system whose factorization costs `flops`:
