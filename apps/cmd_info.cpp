@@ -56,6 +56,12 @@ int run_info(int argc, char** argv) {
               info.bits, info.weight);
   std::printf("%zu bytes: geometry %zu (%.3f bits/vertex), connectivity %zu\n", info.bytes, info.geometry_bytes, bpv,
               info.connectivity_bytes);
+  int64_t anchors = 0;
+  for (size_t c = 0; c < info.chunk_bytes.size(); ++c) {
+    anchors += info.chunk_anchors[c];
+    std::printf("  chunk %zu: %d anchors (%lld in all), %zu bytes\n", c, info.chunk_anchors[c],
+                static_cast<long long>(anchors), info.chunk_bytes[c]);
+  }
   return kExitOk;
 }
 

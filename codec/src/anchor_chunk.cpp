@@ -56,13 +56,15 @@ std::vector<uint8_t> AnchorChunkCoder::encode(const std::vector<int32_t>& anchor
   encode_subset(&enc, ranks_of(anchors, anchored), free_count);
   const bool flat = !(q_.step > 0);
   const int32_t centre = (q_.max_index + 1) / 2;
+  int32_t previous[3] = {centre, centre, centre};  // chunk 0: the previous anchor's position
   int32_t previous_max = 0;
   for (int32_t v : anchors) {
     int32_t r[3] = {0, 0, 0};
     for (int c = 0; c < 3 && !flat; ++c) {
       const int32_t target = grid[3 * static_cast<size_t>(v) + c];
       if (!prediction) {
-        models_->initial_.encode(&enc, target - centre, c);
+        models_->initial_.encode(&enc, target - previous[c], c);
+        previous[c] = target;
         continue;
       }
       const double s = q_.scaled(prediction[3 * static_cast<size_t>(v) + c], c);
@@ -119,6 +121,7 @@ Status AnchorChunkCoder::decode(const uint8_t* payload, size_t size, const std::
 
   const bool flat = !(q_.step > 0);
   const int32_t centre = (q_.max_index + 1) / 2;
+  int32_t previous[3] = {centre, centre, centre};
   grid->assign(anchors->size() * 3, 0);
   int32_t previous_max = 0;
   for (size_t a = 0; a < anchors->size(); ++a) {
@@ -127,7 +130,7 @@ Status AnchorChunkCoder::decode(const uint8_t* payload, size_t size, const std::
     for (int c = 0; c < 3 && !flat; ++c) {
       int64_t value = 0;
       if (!prediction) {
-        value = int64_t{centre} + models_->initial_.decode(&dec, c);
+        value = int64_t{previous[c]} + models_->initial_.decode(&dec, c);
       } else {
         const double s = q_.scaled(prediction[3 * static_cast<size_t>(v) + c], c);
         const bool near = dec.decode(&models_->near_tie_[c]) != 0;
@@ -139,6 +142,7 @@ Status AnchorChunkCoder::decode(const uint8_t* payload, size_t size, const std::
         return Status::Error(StatusCode::kParseError, "anchor " + std::to_string(v) + " lies off the grid");
       }
       (*grid)[3 * a + c] = static_cast<int32_t>(value);
+      previous[c] = static_cast<int32_t>(value);
     }
     if (dec.overrun()) return Status::Error(StatusCode::kParseError, "anchor positions are cut short");
     previous_max = std::max({std::abs(r[0]), std::abs(r[1]), std::abs(r[2])});

@@ -2,7 +2,9 @@
 // rules on both sides: the anchors as a sorted subset of the vertices not
 // anchored before the chunk (about log2 C(free, b) bits), then per anchor
 // and axis the quantized position as a residual from the rounded prediction
-// (the reconstruction from the earlier chunks; chunk 0: the grid's centre).
+// (the reconstruction from the earlier chunks; in chunk 0, which has none,
+// the previous anchor's position: vertex order tends to follow the surface,
+// so this saved 13% of chunk 0 on igea against the grid's centre).
 // Internal to the codec.
 #pragma once
 

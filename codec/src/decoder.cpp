@@ -201,7 +201,13 @@ Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
       break;
     }
     if (frame == FrameRead::kCorrupt) return corrupt("chunk " + std::to_string(chunk) + " is corrupt (checksum mismatch)");
+    ByteReader chunk_in(payload, payload_size);
+    uint64_t count = 0;
+    if (!chunk_in.varint(&count) || count < 1 || count > static_cast<uint64_t>(header.anchors)) {
+      return corrupt("chunk " + std::to_string(chunk) + ": anchor count out of range");
+    }
     info->chunk_bytes.push_back(in.offset() - at);
+    info->chunk_anchors.push_back(static_cast<int32_t>(count));
     info->chunks_present = chunk + 1;
   }
   if (!info->truncated && in.remaining() != 0) return corrupt("trailing bytes after the last chunk");

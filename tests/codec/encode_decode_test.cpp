@@ -42,6 +42,11 @@ TEST(EncodeDecode, RoundTripKeepsConnectivityAndMatchesTheEncodersShape) {
   EXPECT_FALSE(ds.truncated);
   EXPECT_NEAR(relative_rms(mesh, out), es.rms_rel, 1e-12);
   EXPECT_LT(es.rms_rel, es.curve.front().rms_rel);  // the greedy steps helped
+  GabFileInfo info;
+  ASSERT_TRUE(read_gab_info(file.data(), file.size(), &info).ok());
+  EXPECT_EQ(info.chunk_anchors, es.chunk_anchors);
+  EXPECT_EQ(info.connectivity_bytes, es.connectivity_bytes);
+  EXPECT_EQ(info.chunks_present, es.chunks);
 }
 
 TEST(EncodeDecode, EveryChunkPrefixIsTheEncodersShapeAtThatAnchorCount) {

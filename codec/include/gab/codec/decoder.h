@@ -55,7 +55,8 @@ struct GabFileInfo {
   int32_t chunks_present = 0;       // complete chunks with a valid checksum
   bool truncated = false;
   size_t bytes = 0, connectivity_bytes = 0, geometry_bytes = 0;
-  std::vector<size_t> chunk_bytes;  // framed size of each complete chunk
+  std::vector<size_t> chunk_bytes;     // framed size of each complete chunk
+  std::vector<int32_t> chunk_anchors;  // anchors each complete chunk declares
 };
 
 // Reads the header and walks the chunk frames, checking every checksum,

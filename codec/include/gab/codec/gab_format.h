@@ -18,7 +18,8 @@
 //              stream (anchor_chunk.h): the b anchors as a sorted subset of
 //              the vertices not anchored by earlier chunks, then their
 //              quantized positions as residuals from the reconstruction of
-//              the earlier chunks (chunk 0: from the grid's centre).
+//              the earlier chunks (chunk 0: from the previous anchor's,
+//              the first from the grid's centre).
 //              Adaptive statistics carry over from chunk to chunk.
 // Any prefix of whole chunks is a valid coarser approximation.
 #pragma once
