@@ -73,6 +73,49 @@ int32_t next_batch(const EncodeOptions& o, double fraction, const std::vector<Gr
   return static_cast<int32_t>(std::min<int64_t>(std::max<int64_t>(wanted, 1), cap - k));
 }
 
+// Header, connectivity block (or its hash), chunks; sets the byte counts.
+std::vector<uint8_t> assemble_file(const GabHeader& header, const Mesh& mesh,
+                                   const std::vector<std::vector<uint8_t>>& chunks, EncodeStats* stats) {
+  ByteWriter out;
+  write_gab_header(header, &out);
+  const size_t before_connectivity = out.size();
+  if (header.geometry_only()) {
+    out.u64(connectivity_hash(mesh.num_vertices(), mesh.triangles));
+  } else {
+    const std::vector<uint8_t> block = encode_connectivity(mesh.num_vertices(), mesh.triangles);
+    write_framed(block.data(), block.size(), &out);
+  }
+  stats->connectivity_bytes = out.size() - before_connectivity;
+  for (const std::vector<uint8_t>& chunk : chunks) write_framed(chunk.data(), chunk.size(), &out);
+  stats->bytes = out.size();
+  stats->geometry_bytes = stats->bytes - stats->connectivity_bytes;
+  return out.take();
+}
+
+// The mesh's box: its low and high corners, longest side and diagonal.
+struct Box {
+  double lo[3], hi[3];
+  double extent = 0.0, diagonal = 0.0;
+};
+
+Box box_of(const Mesh& mesh) {
+  Box b;
+  for (int c = 0; c < 3; ++c) b.lo[c] = b.hi[c] = mesh.positions[c];
+  for (int32_t v = 0; v < mesh.num_vertices(); ++v) {
+    for (int c = 0; c < 3; ++c) {
+      b.lo[c] = std::min(b.lo[c], mesh.positions[3 * static_cast<size_t>(v) + c]);
+      b.hi[c] = std::max(b.hi[c], mesh.positions[3 * static_cast<size_t>(v) + c]);
+    }
+  }
+  double d2 = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    b.extent = std::max(b.extent, b.hi[c] - b.lo[c]);
+    d2 += (b.hi[c] - b.lo[c]) * (b.hi[c] - b.lo[c]);
+  }
+  b.diagonal = std::sqrt(d2);
+  return b;
+}
+
 }  // namespace
 
 int32_t default_initial_anchors(int32_t n) {
@@ -107,24 +150,12 @@ Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<u
   stats->num_triangles = mesh.num_triangles();
 
   // The grid, and every vertex's quantized position: what an anchor sends.
-  double lo[3], hi[3];
-  for (int c = 0; c < 3; ++c) lo[c] = hi[c] = mesh.positions[c];
-  for (int32_t v = 0; v < n; ++v) {
-    for (int c = 0; c < 3; ++c) {
-      lo[c] = std::min(lo[c], mesh.positions[3 * static_cast<size_t>(v) + c]);
-      hi[c] = std::max(hi[c], mesh.positions[3 * static_cast<size_t>(v) + c]);
-    }
-  }
-  double extent = 0.0, diagonal2 = 0.0;
-  for (int c = 0; c < 3; ++c) {
-    extent = std::max(extent, hi[c] - lo[c]);
-    diagonal2 += (hi[c] - lo[c]) * (hi[c] - lo[c]);
-  }
+  const Box box = box_of(mesh);
   const int bits = options.bits != 0 ? options.bits
-                                     : default_bits(diagonal2 > 0 ? extent / std::sqrt(diagonal2) : 1.0,
+                                     : default_bits(box.diagonal > 0 ? box.extent / box.diagonal : 1.0,
                                                     options.target_rms_rel, options.target_linf_rel);
   stats->bits = bits;
-  const Quantizer quantizer = Quantizer::for_box(lo, hi, bits);
+  const Quantizer quantizer = Quantizer::for_box(box.lo, box.hi, bits);
   std::vector<int32_t> grid(static_cast<size_t>(n) * 3);
   for (int32_t v = 0; v < n; ++v) {
     for (int c = 0; c < 3; ++c) grid[3 * static_cast<size_t>(v) + c] = quantizer.quantize(mesh.positions[3 * static_cast<size_t>(v) + c], c);
@@ -167,7 +198,7 @@ Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<u
   };
   close_chunk(chosen, nullptr);
 
-  const double scale = diagonal2 > 0 ? 1.0 / std::sqrt(diagonal2) : 1.0;
+  const double scale = box.diagonal > 0 ? 1.0 / box.diagonal : 1.0;
   std::vector<double> shape, prediction, error2(n);
   std::vector<int32_t> open;  // anchors of the chunk being gathered
   int32_t chunk_opened_at = rec.num_anchors();
@@ -195,7 +226,6 @@ Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<u
                       (options.target_linf_rel <= 0 || linf_rel <= options.target_linf_rel);
   if (options.max_anchors > 0 && options.target_rms_rel <= 0 && options.target_linf_rel <= 0) stats->target_met = true;
 
-  // Assemble the file.
   GabHeader header;
   header.flags = options.geometry_only ? kGabFlagGeometryOnly : 0;
   header.bits = bits;
@@ -205,24 +235,11 @@ Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<u
   header.quantizer = quantizer;
   header.anchors = rec.num_anchors();
   header.chunks = static_cast<int32_t>(chunks.size());
-  ByteWriter out;
-  write_gab_header(header, &out);
-  const size_t before_connectivity = out.size();
-  if (options.geometry_only) {
-    out.u64(connectivity_hash(n, mesh.triangles));
-  } else {
-    const std::vector<uint8_t> block = encode_connectivity(n, mesh.triangles);
-    write_framed(block.data(), block.size(), &out);
-  }
-  stats->connectivity_bytes = out.size() - before_connectivity;
-  for (const std::vector<uint8_t>& chunk : chunks) write_framed(chunk.data(), chunk.size(), &out);
-  stats->bytes = out.size();
-  stats->geometry_bytes = stats->bytes - stats->connectivity_bytes;
+  *file = assemble_file(header, mesh, chunks, stats);
   stats->anchors = rec.num_anchors();
   stats->chunks = header.chunks;
   stats->rms_rel = rms_rel;
   stats->linf_rel = linf_rel;
-  *file = out.take();
   stats->encode_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return Status::Ok();
 }
