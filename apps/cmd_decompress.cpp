@@ -1,6 +1,8 @@
 // gab decompress -i IN.gab -o OUT [--anchors K] [--connectivity MESH] [--json]
 // Decodes a .gab file (or its first K anchors: a coarser level of detail)
 // and writes the mesh (.obj .off .ply by extension), vertex order kept.
+#include <unistd.h>
+
 #include <cstdio>
 #include <string>
 
@@ -47,9 +49,16 @@ int run_decompress(int argc, char** argv) {
     if (!status.ok()) return fail(status.message());
     options.connectivity = &connectivity;
   }
+  const bool tty = isatty(fileno(stderr)) != 0;
+  if (tty) {
+    options.progress = [](int32_t chunk, int32_t chunks) {
+      std::fprintf(stderr, "\rgab decompress: chunk %d of %d   ", chunk + 1, chunks);
+    };
+  }
   Mesh mesh;
   DecodeStats stats;
   status = decode_mesh(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size(), options, &mesh, &stats);
+  if (tty) std::fprintf(stderr, "\n");
   if (!status.ok()) return fail(in + ": " + status.message());
   status = write_mesh(out, mesh);
   if (!status.ok()) return fail(status.message());

@@ -103,6 +103,7 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
   const int32_t wanted = options.max_anchors >= 0 ? std::min(options.max_anchors, header.anchors) : header.anchors;
   int32_t decoded = 0;
   for (int32_t chunk = 0; chunk < header.chunks && (chunk == 0 || decoded < wanted); ++chunk) {
+    if (options.progress) options.progress(chunk, header.chunks);
     const uint8_t* payload = nullptr;
     size_t payload_size = 0;
     const FrameRead frame = read_framed(&in, &payload, &payload_size);

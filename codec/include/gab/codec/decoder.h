@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,8 @@ struct DecodeOptions {
   // forged fan of triangles from asking for gigabytes.
   int64_t max_matrix_entries = int64_t{1} << 31;
   int64_t max_factor_entries = int64_t{3} << 30;
+  // Called before each chunk is decoded (chunk index, chunks in the file).
+  std::function<void(int32_t, int32_t)> progress;
 };
 
 struct DecodeStats {
