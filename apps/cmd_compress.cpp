@@ -75,9 +75,10 @@ int run_compress(int argc, char** argv) {
   if (!status.ok()) return fail(status.message());
   if (!stats.target_met) {
     std::fprintf(stderr,
-                 "gab compress: warning: the error target is out of reach at %d bits: every vertex is an anchor "
-                 "(rms %.3g, max %.3g of the diagonal); use more --bits\n",
-                 stats.bits, stats.rms_rel, stats.linf_rel);
+                 "gab compress: warning: the error target is out of reach: every vertex is an anchor and the "
+                 "error is rms %.3g, max %.3g of the diagonal at q = %d, w = %g; use more --bits (or a larger "
+                 "--weight)\n",
+                 stats.rms_rel, stats.linf_rel, stats.bits, options.weight);
   }
   const double bpv = 8.0 * static_cast<double>(stats.geometry_bytes) / stats.num_vertices;
   if (json) {

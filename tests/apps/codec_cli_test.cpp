@@ -178,6 +178,18 @@ TEST(CodecCliTest, UsageAndInputErrors) {
   EXPECT_EQ(r.err, "gab: error: " + not_gab + ": not a .gab file (bad magic)\n");
 }
 
+TEST(CodecCliTest, UnreachableTargetWarnsAndStillWrites) {
+  const std::string in = write_temp("far.off", torus_off(12, 6));
+  const std::string gab = write_temp("far.gab", "");
+  CommandResult r = run_gab("compress -i " + in + " -o " + gab + " --error 1e-9 --bits 6 --json");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(json_number(r.out, "anchors"), 72);  // every vertex
+  EXPECT_NE(r.err.find("gab compress: warning: the error target is out of reach: every vertex is an anchor"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.out.find("\"target_met\": \"no\""), std::string::npos);
+}
+
 TEST(CodecCliTest, DemoRunsOnAGivenMeshAndWritesItsFiles) {
   const std::string dir = ::testing::TempDir() + "/gab_demo_" + std::to_string(getpid());
   const std::string mesh = write_temp("demo.off", torus_off(40, 20));
