@@ -174,7 +174,10 @@ Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<u
   int32_t components = 0;
   connected_components(graph, &components);
   const int32_t cap = options.max_anchors > 0 ? std::min(options.max_anchors, n) : n;
-  int32_t initial = options.initial_anchors > 0 ? options.initial_anchors : default_initial_anchors(n);
+  // By default at most half the anchors are spread ones (measured best on
+  // igea, horse and feline at 1-10% of n): the greedy steps choose the rest.
+  int32_t initial = options.initial_anchors > 0 ? options.initial_anchors
+                                                : std::min(default_initial_anchors(n), std::max(1, cap / 2));
   initial = std::min(std::max(initial, components), std::max(cap, components));
   std::vector<int32_t> chosen;
   GAB_RETURN_IF_ERROR(farthest_point_sampling(graph, initial, {}, &chosen));

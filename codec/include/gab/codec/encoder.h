@@ -25,7 +25,9 @@ struct EncodeOptions {
   int bits = 0;
   double weight = 100;          // anchor weight w of the relaxed basis
   bool geometry_only = false;   // store a connectivity hash instead of the triangles
-  int32_t initial_anchors = 0;  // spread set size; 0: default_initial_anchors (at least one per component)
+  // Spread set size (at least one per component); 0: default_initial_anchors,
+  // at most half of max_anchors.
+  int32_t initial_anchors = 0;
   // Greedy batch: up to ceil(batch_fraction * anchors so far) local maxima
   // of the error per step (0: one anchor per step, the paper's rule;
   // negative: default_batch_fraction of the factorization's cost). Near an
