@@ -10,6 +10,7 @@
 #include "gab/codec/gab_format.h"
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/graph_distance.h"
+#include "gab/mesh/metrics.h"
 #include "gab/mesh/relaxed_reconstruction.h"
 
 namespace gab {
@@ -34,25 +35,6 @@ Status check_options(const EncodeOptions& o) {
   if (o.chunk_growth > 0 && !(o.chunk_growth > 1)) return bad("chunk growth must be above 1");
   if (!std::isfinite(o.chunk_growth)) return bad("chunk growth must be finite");
   return Status::Ok();
-}
-
-// The relative RMS and max of the 3D error; error2[v] = squared distance.
-void measure_error(const Mesh& mesh, const std::vector<double>& shape, double scale, std::vector<double>* error2,
-                   double* rms_rel, double* linf_rel) {
-  const int32_t n = mesh.num_vertices();
-  double sum2 = 0.0, max2 = 0.0;
-  for (int32_t v = 0; v < n; ++v) {
-    double d2 = 0.0;
-    for (int c = 0; c < 3; ++c) {
-      const double d = shape[3 * static_cast<size_t>(v) + c] - mesh.positions[3 * static_cast<size_t>(v) + c];
-      d2 += d * d;
-    }
-    (*error2)[v] = d2;
-    sum2 += d2;
-    max2 = std::max(max2, d2);
-  }
-  *rms_rel = std::sqrt(sum2 / n) * scale;
-  *linf_rel = std::sqrt(max2) * scale;
 }
 
 // Anchors to add in the next greedy step: the batch fraction of those so
@@ -208,7 +190,10 @@ Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<u
   double rms_rel = 0, linf_rel = 0;
   while (true) {
     GAB_RETURN_IF_ERROR(rec.reconstruct(&shape));
-    measure_error(mesh, shape, scale, &error2, &rms_rel, &linf_rel);
+    VertexDistance distance;
+    squared_vertex_errors(mesh, shape, &error2, &distance);
+    rms_rel = distance.rms * scale;
+    linf_rel = distance.linf * scale;
     stats->curve.push_back({rec.num_anchors(), rms_rel, linf_rel});
     if (options.progress) options.progress(rec.num_anchors(), rms_rel);
     if (open.empty()) prediction = shape;  // what the decoder will hold when the next chunk starts

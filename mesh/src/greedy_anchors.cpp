@@ -66,20 +66,10 @@ Status select_anchors_greedy(const Mesh& mesh, const EdgeGraph& graph, const Gre
   std::vector<double> shape, error(n);
   while (true) {
     GAB_RETURN_IF_ERROR(rec.reconstruct(&shape));
-    // One scan: the squared error per vertex, its RMS and max.
-    double sum2 = 0.0, linf = 0.0;
-    for (int32_t v = 0; v < n; ++v) {
-      double d2 = 0.0;
-      for (int k = 0; k < 3; ++k) {
-        const double d = shape[3 * static_cast<size_t>(v) + k] - mesh.positions[3 * static_cast<size_t>(v) + k];
-        d2 += d * d;
-      }
-      error[v] = d2;
-      sum2 += d2;
-      linf = std::max(linf, d2);
-    }
-    const double rms_rel = std::sqrt(sum2 / std::max(n, 1)) * scale;
-    curve->push_back({rec.num_anchors(), rms_rel, std::sqrt(linf) * scale});
+    VertexDistance d;
+    squared_vertex_errors(mesh, shape, &error, &d);
+    const double rms_rel = d.rms * scale;
+    curve->push_back({rec.num_anchors(), rms_rel, d.linf * scale});
     if (rec.num_anchors() >= options.max_anchors || rec.num_anchors() >= n ||
         (options.target_rms_rel > 0 && rms_rel <= options.target_rms_rel)) {
       break;

@@ -24,6 +24,25 @@ double bounding_box_diagonal(const Mesh& mesh) {
                    (hi[2] - lo[2]) * (hi[2] - lo[2]));
 }
 
+void squared_vertex_errors(const Mesh& mesh, const std::vector<double>& shape, std::vector<double>* error2,
+                           VertexDistance* out) {
+  const int32_t n = mesh.num_vertices();
+  error2->resize(n);
+  double sum2 = 0.0, max2 = 0.0;
+  for (int32_t v = 0; v < n; ++v) {
+    double d2 = 0.0;
+    for (int c = 0; c < 3; ++c) {
+      const double d = shape[3 * static_cast<size_t>(v) + c] - mesh.positions[3 * static_cast<size_t>(v) + c];
+      d2 += d * d;
+    }
+    (*error2)[v] = d2;
+    sum2 += d2;
+    max2 = std::max(max2, d2);
+  }
+  out->rms = std::sqrt(sum2 / std::max(n, 1));
+  out->linf = std::sqrt(max2);
+}
+
 Status vertex_distance(const Mesh& a, const Mesh& b, VertexDistance* out) {
   if (a.num_vertices() != b.num_vertices()) {
     return Status::Error(StatusCode::kInvalidArgument, "vertex counts differ (" + std::to_string(a.num_vertices()) +

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "gab/mesh/mesh.h"
 #include "gab/sparse/status.h"
@@ -20,6 +21,13 @@ struct VertexDistance {
 // Distances between corresponding vertices; the meshes must have the same
 // vertex count (kInvalidArgument otherwise). O(V).
 Status vertex_distance(const Mesh& a, const Mesh& b, VertexDistance* out);
+
+// Squared 3D distance per vertex between `shape` (3 per vertex, like
+// Mesh::positions) and the mesh's positions, into error2 (n entries), with
+// their RMS and max (not squared). What a greedy anchor loop scans after
+// every reconstruction. O(V).
+void squared_vertex_errors(const Mesh& mesh, const std::vector<double>& shape, std::vector<double>* error2,
+                           VertexDistance* out);
 
 struct DirectedDistance {
   double mean = 0;     // mean over the area samples of the distance to the other surface
