@@ -20,13 +20,31 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 
 Status corrupt(const std::string& what) { return Status::Error(StatusCode::kParseError, what); }
 
+// The connectivity section, checked but not decoded: the hash of a
+// geometry-only file, or the framed block.
+Status read_connectivity_section(ByteReader* in, const GabHeader& header, uint64_t* hash, const uint8_t** block,
+                                 size_t* size) {
+  if (header.geometry_only()) {
+    if (!in->u64(hash)) return corrupt("file ends inside the connectivity hash");
+    return Status::Ok();
+  }
+  switch (read_framed(in, block, size)) {
+    case FrameRead::kTruncated: return corrupt("file ends inside the connectivity block");
+    case FrameRead::kCorrupt: return corrupt("connectivity block is corrupt (checksum mismatch)");
+    case FrameRead::kOk: break;
+  }
+  return Status::Ok();
+}
+
 // The connectivity: decoded from the block, or taken from the mesh the
 // caller supplies for a geometry-only file (after checking its hash).
 Status read_connectivity(ByteReader* in, const GabHeader& header, const DecodeOptions& options,
                          std::vector<int32_t>* triangles) {
+  uint64_t hash = 0;
+  const uint8_t* block = nullptr;
+  size_t size = 0;
+  GAB_RETURN_IF_ERROR(read_connectivity_section(in, header, &hash, &block, &size));
   if (header.geometry_only()) {
-    uint64_t hash = 0;
-    if (!in->u64(&hash)) return corrupt("file ends inside the connectivity hash");
     if (!options.connectivity) {
       return Status::Error(StatusCode::kInvalidArgument,
                            "this file holds geometry only: give the mesh it was made from (--connectivity MESH)");
@@ -42,13 +60,6 @@ Status read_connectivity(ByteReader* in, const GabHeader& header, const DecodeOp
     }
     *triangles = m.triangles;
     return Status::Ok();
-  }
-  const uint8_t* block = nullptr;
-  size_t size = 0;
-  switch (read_framed(in, &block, &size)) {
-    case FrameRead::kTruncated: return corrupt("file ends inside the connectivity block");
-    case FrameRead::kCorrupt: return corrupt("connectivity block is corrupt (checksum mismatch)");
-    case FrameRead::kOk: break;
   }
   Status s = decode_connectivity(block, size, header.num_vertices, header.num_triangles, triangles);
   if (!s.ok()) return corrupt("connectivity block: " + s.message());
@@ -139,8 +150,8 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
       }
       stats->factor_s += seconds_since(t);
     } else {
-      const bool refactor = rec.update_cost_ratio(anchors) > 1.0;
-      s = refactor ? rec.add_anchors_refactoring(anchors, coefficients) : rec.add_anchors(anchors, coefficients);
+      bool refactor = false;
+      s = rec.add_anchors_cheapest(anchors, coefficients, &refactor);
       if (!s.ok()) return corrupt("chunk " + std::to_string(chunk) + ": " + s.message());
       (refactor ? stats->factor_s : stats->update_s) += seconds_since(t);
       stats->refactorizations += refactor ? 1 : 0;
@@ -179,18 +190,10 @@ Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
   info->chunks = header.chunks;
   info->bytes = size;
   const size_t before = in.offset();
-  if (header.geometry_only()) {
-    uint64_t hash = 0;
-    if (!in.u64(&hash)) return corrupt("file ends inside the connectivity hash");
-  } else {
-    const uint8_t* block = nullptr;
-    size_t block_size = 0;
-    switch (read_framed(&in, &block, &block_size)) {
-      case FrameRead::kTruncated: return corrupt("file ends inside the connectivity block");
-      case FrameRead::kCorrupt: return corrupt("connectivity block is corrupt (checksum mismatch)");
-      case FrameRead::kOk: break;
-    }
-  }
+  uint64_t hash = 0;
+  const uint8_t* block = nullptr;
+  size_t block_size = 0;
+  GAB_RETURN_IF_ERROR(read_connectivity_section(&in, header, &hash, &block, &block_size));
   info->connectivity_bytes = in.offset() - before;
   for (int32_t chunk = 0; chunk < header.chunks; ++chunk) {
     const size_t at = in.offset();

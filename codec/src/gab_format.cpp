@@ -77,10 +77,7 @@ Status read_gab_header(ByteReader* in, size_t file_size, GabHeader* h) {
   h->num_vertices = static_cast<int32_t>(n);
   h->num_triangles = static_cast<int32_t>(faces);
   h->weight = weight;
-  double max[3];
-  for (int c = 0; c < 3; ++c) max[c] = min[c];
-  h->quantizer = Quantizer::for_box(min, max, bits);
-  h->quantizer.step = step;
+  h->quantizer = Quantizer::from_grid(min, step, bits);
   h->anchors = static_cast<int32_t>(anchors);
   h->chunks = static_cast<int32_t>(chunks);
   return Status::Ok();

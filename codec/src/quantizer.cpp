@@ -6,14 +6,17 @@
 namespace gab {
 
 Quantizer Quantizer::for_box(const double min[3], const double max[3], int bits) {
-  Quantizer q;
-  q.max_index = static_cast<int32_t>((int64_t{1} << bits) - 1);
   double extent = 0.0;
-  for (int c = 0; c < 3; ++c) {
-    q.min[c] = min[c];
-    extent = std::max(extent, max[c] - min[c]);
-  }
-  q.step = extent > 0 ? extent / q.max_index : 0.0;
+  for (int c = 0; c < 3; ++c) extent = std::max(extent, max[c] - min[c]);
+  const double levels = static_cast<double>((int64_t{1} << bits) - 1);
+  return from_grid(min, extent > 0 ? extent / levels : 0.0, bits);
+}
+
+Quantizer Quantizer::from_grid(const double min[3], double step, int bits) {
+  Quantizer q;
+  for (int c = 0; c < 3; ++c) q.min[c] = min[c];
+  q.step = step;
+  q.max_index = static_cast<int32_t>((int64_t{1} << bits) - 1);
   return q;
 }
 

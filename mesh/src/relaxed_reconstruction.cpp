@@ -111,10 +111,11 @@ Status RelaxedReconstruction::add_anchors_refactoring(const std::vector<int32_t>
 
 double RelaxedReconstruction::update_cost_ratio(const std::vector<int32_t>& anchors) const {
   const SymbolicFactor& f = chol_.symbolic();
-  // Rates of this engine (gab study --batch 8 and gab factor on the shared
-  // meshes, AVX-512): a batched update streams ~1.5e9 entries/s per anchor
-  // path (4.3e6 entries in 1.67 ms on igea... at 8 paths per sweep), the
-  // factorization runs at ~60 GFLOP/s; so one path entry ~ 6 flops.
+  // Calibrated on this engine (AVX-512) by timing batches of 8, 32 and 128
+  // anchors against a refactorization: the true update/refactor time ratio
+  // over this entry count times 6 flops was ~2.3 on igea, 1.2-1.4 on feline
+  // and 1.0-1.2 on camel-head; 12 flops per entry errs towards refactoring,
+  // which is never badly wrong.
   constexpr double kFlopsPerPathEntry = 12.0;
   double entries = 0.0;
   for (int32_t j : anchors) {
@@ -130,10 +131,11 @@ double RelaxedReconstruction::update_cost_ratio(const std::vector<int32_t>& anch
 }
 
 Status RelaxedReconstruction::add_anchors_cheapest(const std::vector<int32_t>& anchors,
-                                                   const std::vector<double>& coefficients) {
+                                                   const std::vector<double>& coefficients, bool* refactored) {
   if (!chol_.factorized()) return Status::Error(StatusCode::kInvalidArgument, "add_anchors before init");
-  return update_cost_ratio(anchors) > 1.0 ? add_anchors_refactoring(anchors, coefficients)
-                                          : add_anchors(anchors, coefficients);
+  const bool refactor = update_cost_ratio(anchors) > 1.0;
+  if (refactored != nullptr) *refactored = refactor;
+  return refactor ? add_anchors_refactoring(anchors, coefficients) : add_anchors(anchors, coefficients);
 }
 
 Status RelaxedReconstruction::set_coefficients(int32_t first, const std::vector<double>& coefficients) {

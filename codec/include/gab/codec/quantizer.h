@@ -19,6 +19,9 @@ struct Quantizer {
   // The grid for coordinates in [min, max] per axis at q bits (1 <= q <= 30).
   static Quantizer for_box(const double min[3], const double max[3], int bits);
 
+  // The grid a file stores: origin, step and q.
+  static Quantizer from_grid(const double min[3], double step, int bits);
+
   // Nearest grid index of coordinate v on axis c, clamped to [0, max_index].
   int32_t quantize(double v, int c) const;
   // The grid point: min[c] + index * step (exactly this expression on both

@@ -37,15 +37,17 @@ class RelaxedReconstruction {
   Status add_anchors_refactoring(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
 
   // add_anchors or add_anchors_refactoring, whichever the cost model says
-  // is cheaper for these anchors (update_cost_ratio). Deterministic: the
-  // choice depends on the structure only, never on timings.
-  Status add_anchors_cheapest(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
+  // is cheaper for these anchors (update_cost_ratio); *refactored (when
+  // given) says which. Deterministic: the choice depends on the structure
+  // only, never on timings.
+  Status add_anchors_cheapest(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients,
+                              bool* refactored = nullptr);
 
   // Estimated time of updating the factor with these anchors over the time
   // of refactoring it: the factor entries on each anchor's elimination-tree
   // path (what an update streams through) against the factorization's flops,
   // weighted by the rates measured on this engine (an entry of a batched
-  // update costs about as much as 6 flops of the factorization). O(path
+  // update costs about as much as 12 flops of the factorization). O(path
   // length in supernodes) per anchor.
   double update_cost_ratio(const std::vector<int32_t>& anchors) const;
 
