@@ -1,5 +1,6 @@
 #include "gab/mesh/relaxed_reconstruction.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -38,13 +39,8 @@ void RelaxedReconstruction::add_to_matrix(const std::vector<int32_t>& anchors) {
   for (int32_t a : anchors) matrix_.values[matrix_.colptr[a]] += weight_ * weight_;
 }
 
-void RelaxedReconstruction::add_to_rhs(const std::vector<int32_t>& anchors,
-                                       const std::vector<double>& coefficients) {
-  const double w2 = weight_ * weight_;
+void RelaxedReconstruction::record(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients) {
   for (size_t i = 0; i < anchors.size(); ++i) {
-    for (int c = 0; c < 3; ++c) {
-      rhs_[anchors[i] + static_cast<size_t>(c) * n_] += w2 * coefficients[3 * i + c];
-    }
     anchored_[anchors[i]] = 1;
     anchors_.push_back(anchors[i]);
     coefficients_.insert(coefficients_.end(), &coefficients[3 * i], &coefficients[3 * i] + 3);
@@ -62,7 +58,6 @@ Status RelaxedReconstruction::init(const EdgeGraph& graph, double weight,
   anchors_.clear();
   coefficients_.clear();
   anchored_.assign(n_, 0);
-  rhs_.assign(static_cast<size_t>(n_) * 3, 0.0);
   GAB_RETURN_IF_ERROR(check_new(anchors, coefficients));
   // Every component needs an anchor, or L^T L + w^2 E^T E is singular there.
   int32_t ncomp = 0;
@@ -79,7 +74,7 @@ Status RelaxedReconstruction::init(const EdgeGraph& graph, double weight,
   GAB_RETURN_IF_ERROR(assemble_normal_matrix(graph, anchors, weight, &matrix_));
   GAB_RETURN_IF_ERROR(chol_.analyze(matrix_));
   GAB_RETURN_IF_ERROR(chol_.factorize(matrix_));
-  add_to_rhs(anchors, coefficients);
+  record(anchors, coefficients);
   return Status::Ok();
 }
 
@@ -89,7 +84,7 @@ Status RelaxedReconstruction::add_anchors(const std::vector<int32_t>& anchors,
   GAB_RETURN_IF_ERROR(check_new(anchors, coefficients));
   GAB_RETURN_IF_ERROR(chol_.add_anchors(anchors.data(), static_cast<int32_t>(anchors.size()), weight_));
   add_to_matrix(anchors);
-  add_to_rhs(anchors, coefficients);
+  record(anchors, coefficients);
   return Status::Ok();
 }
 
@@ -105,7 +100,7 @@ Status RelaxedReconstruction::add_anchors_refactoring(const std::vector<int32_t>
     for (int32_t a : anchors) matrix_.values[matrix_.colptr[a]] -= weight_ * weight_;
     return s;
   }
-  add_to_rhs(anchors, coefficients);
+  record(anchors, coefficients);
   return Status::Ok();
 }
 
@@ -143,16 +138,8 @@ Status RelaxedReconstruction::set_coefficients(int32_t first, const std::vector<
     return Status::Error(StatusCode::kInvalidArgument, "set_coefficients: need 3 coefficients per anchor from " +
                                                            std::to_string(first) + " on");
   }
-  for (double c : coefficients) {
-    if (!std::isfinite(c)) return Status::Error(StatusCode::kInvalidArgument, "anchor coefficient is not finite");
-  }
-  const double w2 = weight_ * weight_;
-  for (size_t i = 0; i < coefficients.size(); ++i) {
-    const size_t slot = 3 * static_cast<size_t>(first) + i;
-    const int32_t a = anchors_[slot / 3];
-    rhs_[a + (slot % 3) * static_cast<size_t>(n_)] = w2 * coefficients[i];  // the only anchor at row a
-    coefficients_[slot] = coefficients[i];
-  }
+  GAB_RETURN_IF_ERROR(check_anchor_coefficients(coefficients.size() / 3, coefficients));  // finite
+  std::copy(coefficients.begin(), coefficients.end(), coefficients_.begin() + 3 * static_cast<size_t>(first));
   return Status::Ok();
 }
 
@@ -163,7 +150,12 @@ Status RelaxedReconstruction::solve_system(double* b) {
 
 Status RelaxedReconstruction::reconstruct(std::vector<double>* positions) {
   if (!chol_.factorized()) return Status::Error(StatusCode::kInvalidArgument, "reconstruct before init");
-  std::vector<double> x = rhs_;
+  // The right-hand sides w^2 E^T c (n x 3 column-major), from the coefficients.
+  const double w2 = weight_ * weight_;
+  std::vector<double> x(static_cast<size_t>(n_) * 3, 0.0);
+  for (size_t i = 0; i < anchors_.size(); ++i) {
+    for (int c = 0; c < 3; ++c) x[anchors_[i] + static_cast<size_t>(c) * n_] = w2 * coefficients_[3 * i + c];
+  }
   GAB_RETURN_IF_ERROR(chol_.solve(x.data(), 3, n_));
   positions->resize(static_cast<size_t>(n_) * 3);
   for (int32_t v = 0; v < n_; ++v) {

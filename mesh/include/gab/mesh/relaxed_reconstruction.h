@@ -75,7 +75,7 @@ class RelaxedReconstruction {
 
  private:
   Status check_new(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
-  void add_to_rhs(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
+  void record(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
   void add_to_matrix(const std::vector<int32_t>& anchors);
 
   int32_t n_ = 0;
@@ -85,7 +85,6 @@ class RelaxedReconstruction {
   std::vector<int32_t> anchors_;
   std::vector<double> coefficients_;  // 3 per anchor
   std::vector<char> anchored_;
-  std::vector<double> rhs_;  // w^2 E^T c: n x 3 column-major
 };
 
 }  // namespace gab
