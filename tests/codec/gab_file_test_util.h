@@ -9,6 +9,7 @@
 
 #include "gab/codec/decoder.h"
 #include "gab/codec/encoder.h"
+#include "gab/mesh/metrics.h"
 #include "mesh/mesh_test_util.h"
 
 namespace gab {
@@ -33,18 +34,11 @@ inline std::vector<uint8_t> encode_or_die(const Mesh& mesh, const EncodeOptions&
   return file;
 }
 
+// Vertex RMS distance over a's bounding-box diagonal.
 inline double relative_rms(const Mesh& a, const Mesh& b) {
-  double sum = 0, lo[3], hi[3];
-  for (int c = 0; c < 3; ++c) lo[c] = hi[c] = a.positions[c];
-  for (size_t i = 0; i < a.positions.size(); ++i) {
-    const double d = a.positions[i] - b.positions[i];
-    sum += d * d;
-    lo[i % 3] = std::min(lo[i % 3], a.positions[i]);
-    hi[i % 3] = std::max(hi[i % 3], a.positions[i]);
-  }
-  const double diag = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                                (hi[2] - lo[2]) * (hi[2] - lo[2]));
-  return std::sqrt(sum / a.num_vertices()) / diag;
+  VertexDistance d;
+  EXPECT_TRUE(vertex_distance(a, b, &d).ok());
+  return d.rms / bounding_box_diagonal(a);
 }
 
 }  // namespace testing_util
