@@ -20,7 +20,8 @@ namespace {
 
 const char* kUsage =
     "gab compress -i IN -o OUT.gab [--anchors K | --error E | --linf E] [--bits Q] [--weight W]\n"
-    "             [--geometry-only] [--json]   (tuning: --batch F --chunk-growth G --initial K)";
+    "             [--geometry-only] [--json]\n"
+    "             (tuning: --batch F --chunk-growth G --initial K --refine)";
 
 constexpr double kDefaultError = 1e-3;
 
@@ -30,7 +31,7 @@ int run_compress(int argc, char** argv) {
   Args args;
   if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--error", "--linf", "--bits", "--weight", "--batch", "--chunk-growth",
                    "--initial"},
-                  {"--json", "--geometry-only"})) {
+                  {"--json", "--geometry-only", "--refine"})) {
     return usage_error("compress", args.error(), kUsage);
   }
   if (!args.positionals().empty()) return usage_error("compress", "unexpected argument " + args.positionals()[0], kUsage);
@@ -54,6 +55,7 @@ int run_compress(int argc, char** argv) {
   options.target_linf_rel = linf;
   options.bits = static_cast<int>(bits);
   options.geometry_only = args.has("--geometry-only");
+  options.refine = args.has("--refine");
   const bool json = args.has("--json");
   const std::string in = args.get("-i"), out = args.get("-o");
 
@@ -97,11 +99,15 @@ int run_compress(int argc, char** argv) {
     o.add("chunks", static_cast<int64_t>(stats.chunks));
     o.add("weight", options.weight);
     o.add("target_met", std::string(stats.target_met ? "yes" : "no"));
+    o.add("refined", std::string(stats.refined ? "yes" : "no"));
+    o.add("refinement_bytes", static_cast<int64_t>(stats.refinement_bytes));
+    o.add("unrefined_rms_rel", stats.unrefined_rms_rel);
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }
-  std::printf("%s -> %s: %d vertices, %d triangles, %d anchors in %d chunks, q = %d\n", in.c_str(), out.c_str(),
-              stats.num_vertices, stats.num_triangles, stats.anchors, stats.chunks, stats.bits);
+  std::printf("%s -> %s: %d vertices, %d triangles, %d anchors in %d chunks%s, q = %d\n", in.c_str(), out.c_str(),
+              stats.num_vertices, stats.num_triangles, stats.anchors, stats.chunks,
+              stats.refined ? " (the last a least-squares refinement)" : "", stats.bits);
   std::printf("%zu bytes (geometry %zu = %.3f bits/vertex, connectivity %zu); error rms %.3g, max %.3g of the "
               "bounding-box diagonal; %.2f s\n",
               stats.bytes, stats.geometry_bytes, bpv, stats.connectivity_bytes, stats.rms_rel, stats.linf_rel,

@@ -80,6 +80,7 @@ int run_decompress(int argc, char** argv) {
     o.add("chunks_in_file", static_cast<int64_t>(stats.chunks_in_file));
     o.add("truncated", std::string(stats.truncated ? "yes" : "no"));
     o.add("refactorizations", static_cast<int64_t>(stats.refactorizations));
+    o.add("refined", std::string(stats.refined ? "yes" : "no"));
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }

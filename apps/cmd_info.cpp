@@ -46,6 +46,8 @@ int run_info(int argc, char** argv) {
     o.add("geometry_bytes", static_cast<int64_t>(info.geometry_bytes));
     o.add("connectivity_bytes", static_cast<int64_t>(info.connectivity_bytes));
     o.add("bpv_geometry", bpv);
+    o.add("refined", std::string(info.refined ? "yes" : "no"));
+    o.add("refinement_bytes", static_cast<int64_t>(info.refinement_bytes));
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }
@@ -61,6 +63,14 @@ int run_info(int argc, char** argv) {
     anchors += info.chunk_anchors[c];
     std::printf("  chunk %zu: %d anchors (%lld in all), %zu bytes\n", c, info.chunk_anchors[c],
                 static_cast<long long>(anchors), info.chunk_bytes[c]);
+  }
+  if (info.refined) {
+    if (info.refinement_bytes > 0) {
+      std::printf("  chunk %zu: least-squares refinement of all %d anchors, %zu bytes\n", info.chunk_bytes.size(),
+                  info.anchors, info.refinement_bytes);
+    } else {
+      std::printf("  (the least-squares refinement chunk is missing)\n");
+    }
   }
   return kExitOk;
 }

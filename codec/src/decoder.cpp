@@ -5,6 +5,7 @@
 #include <string>
 
 #include "anchor_chunk.h"
+#include "refinement_chunk.h"
 #include "gab/codec/connectivity_coder.h"
 #include "gab/codec/gab_format.h"
 #include "gab/mesh/edge_graph.h"
@@ -112,8 +113,10 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
   RelaxedReconstruction rec;
   std::vector<double> shape;
   const int32_t wanted = options.max_anchors >= 0 ? std::min(options.max_anchors, header.anchors) : header.anchors;
+  const int32_t anchor_chunks = header.anchor_chunks();
+  std::vector<int32_t> file_grid;  // every decoded anchor's grid indices, in file order
   int32_t decoded = 0;
-  for (int32_t chunk = 0; chunk < header.chunks && (chunk == 0 || decoded < wanted); ++chunk) {
+  for (int32_t chunk = 0; chunk < anchor_chunks && (chunk == 0 || decoded < wanted); ++chunk) {
     if (options.progress) options.progress(chunk, header.chunks);
     const uint8_t* payload = nullptr;
     size_t payload_size = 0;
@@ -133,7 +136,7 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
     Status s = coder.decode(payload, payload_size, anchored, chunk == 0 ? nullptr : shape.data(),
                             chunk == 0 ? -1 : wanted - decoded, &anchors, &grid, &in_chunk);
     if (!s.ok()) return corrupt("chunk " + std::to_string(chunk) + ": " + s.message());
-    if (in_chunk > header.anchors - decoded || (chunk + 1 == header.chunks && in_chunk != header.anchors - decoded)) {
+    if (in_chunk > header.anchors - decoded || (chunk + 1 == anchor_chunks && in_chunk != header.anchors - decoded)) {
       return corrupt("chunk " + std::to_string(chunk) + " holds " + std::to_string(in_chunk) +
                      " anchors, which does not add up to the header's " + std::to_string(header.anchors));
     }
@@ -157,12 +160,45 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
       stats->refactorizations += refactor ? 1 : 0;
     }
     for (int32_t v : anchors) anchored[v] = 1;
+    file_grid.insert(file_grid.end(), grid.begin(), grid.end());
     decoded += static_cast<int32_t>(anchors.size());
     stats->chunks = chunk + 1;
-    const auto t_solve = std::chrono::steady_clock::now();
-    GAB_RETURN_IF_ERROR(rec.reconstruct(&shape));
-    stats->solve_s += seconds_since(t_solve);
+    if (chunk + 1 < anchor_chunks && decoded < wanted) {  // the next chunk's prediction
+      const auto t_solve = std::chrono::steady_clock::now();
+      GAB_RETURN_IF_ERROR(rec.reconstruct(&shape));
+      stats->solve_s += seconds_since(t_solve);
+    }
   }
+  // The refinement belongs to the whole anchor set: skipped for a level of
+  // detail; a file cut inside it still gives the unrefined shape.
+  if (header.refined() && !stats->truncated && decoded == header.anchors) {
+    const uint8_t* payload = nullptr;
+    size_t payload_size = 0;
+    const FrameRead frame = read_framed(&in, &payload, &payload_size);
+    const std::string name = "refinement (chunk " + std::to_string(anchor_chunks) + ")";
+    if (frame == FrameRead::kCorrupt) return corrupt(name + " is corrupt (checksum mismatch)");
+    if (frame == FrameRead::kTruncated) {
+      stats->truncated = true;
+    } else {
+      std::vector<int32_t> deltas;
+      Status s = decode_refinement(payload, payload_size, decoded, header.quantizer.max_index, &deltas);
+      if (!s.ok()) return corrupt(name + ": " + s.message());
+      std::vector<double> coefficients(deltas.size());
+      for (size_t i = 0; i < deltas.size(); ++i) {
+        const int64_t value = int64_t{file_grid[i]} + deltas[i];
+        if (value < 0 || value > header.quantizer.max_index) {
+          return corrupt(name + ": anchor #" + std::to_string(i / 3) + " is moved off the grid");
+        }
+        coefficients[i] = header.quantizer.dequantize(static_cast<int32_t>(value), static_cast<int>(i % 3));
+      }
+      GAB_RETURN_IF_ERROR(rec.set_coefficients(0, coefficients));
+      stats->refined = true;
+      stats->chunks = anchor_chunks + 1;
+    }
+  }
+  const auto t_solve = std::chrono::steady_clock::now();
+  GAB_RETURN_IF_ERROR(rec.reconstruct(&shape));
+  stats->solve_s += seconds_since(t_solve);
   if (!stats->truncated && decoded == header.anchors && in.remaining() != 0) {
     return corrupt("trailing bytes after the last chunk");
   }
@@ -184,6 +220,7 @@ Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
   info->bits = header.bits;
   info->weight = header.weight;
   info->geometry_only = header.geometry_only();
+  info->refined = header.refined();
   for (int c = 0; c < 3; ++c) info->box_min[c] = header.quantizer.min[c];
   info->step = header.quantizer.step;
   info->anchors = header.anchors;
@@ -207,8 +244,15 @@ Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
     if (frame == FrameRead::kCorrupt) return corrupt("chunk " + std::to_string(chunk) + " is corrupt (checksum mismatch)");
     ByteReader chunk_in(payload, payload_size);
     uint64_t count = 0;
-    if (!chunk_in.varint(&count) || count < 1 || count > static_cast<uint64_t>(header.anchors)) {
+    const bool refinement = chunk == header.anchor_chunks();
+    if (!chunk_in.varint(&count) || (refinement ? count != static_cast<uint64_t>(header.anchors)
+                                                : count < 1 || count > static_cast<uint64_t>(header.anchors))) {
       return corrupt("chunk " + std::to_string(chunk) + ": anchor count out of range");
+    }
+    if (refinement) {
+      info->refinement_bytes = in.offset() - at;
+      info->chunks_present = chunk + 1;
+      continue;
     }
     info->chunk_bytes.push_back(in.offset() - at);
     info->chunk_anchors.push_back(static_cast<int32_t>(count));

@@ -54,7 +54,7 @@ Status read_gab_header(ByteReader* in, size_t file_size, GabHeader* h) {
   const size_t covered = in->offset();
   if (!in->u32(&crc)) return header_error("file ends inside the header");
   if (crc != crc32(raw, covered)) return header_error("checksum mismatch (the header is corrupt)");
-  if ((flags & ~kGabFlagGeometryOnly) != 0 || zero != 0) return header_error("unknown flags");
+  if ((flags & ~(kGabFlagGeometryOnly | kGabFlagRefined)) != 0 || zero != 0) return header_error("unknown flags");
   if (bits < kGabMinBits || bits > kGabMaxBits) return header_error("bits " + std::to_string(bits) + " out of range");
   if (n < 1 || n > 0x7FFFFFFFu || faces < 1 || faces > 0x7FFFFFFFu / 3) {
     return header_error("vertex or triangle count out of range");
@@ -65,7 +65,8 @@ Status read_gab_header(ByteReader* in, size_t file_size, GabHeader* h) {
   }
   if (!(step >= 0) || !std::isfinite(step)) return header_error("grid step is not finite and non-negative");
   if (anchors < 1 || anchors > n) return header_error("anchor count out of range");
-  if (chunks < 1 || chunks > anchors) return header_error("chunk count out of range");
+  const uint32_t anchor_chunks = chunks - ((flags & kGabFlagRefined) != 0 ? 1 : 0);
+  if (chunks < 1 || anchor_chunks < 1 || anchor_chunks > anchors) return header_error("chunk count out of range");
   // Every vertex is on a triangle or isolated, and an isolated vertex is an
   // anchor of chunk 0 costing bits in the file; real files stay far inside
   // this bound, forged counts do not.

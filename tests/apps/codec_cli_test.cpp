@@ -89,6 +89,31 @@ TEST(CodecCliTest, CompressDecompressInfoRoundTrip) {
   EXPECT_EQ(json_number(i.out, "version"), 1);
 }
 
+TEST(CodecCliTest, RefineAddsALeastSquaresChunkThatDecompressApplies) {
+  const std::string in = write_temp("refine.off", torus_off(40, 20));
+  const std::string plain = write_temp("refine-plain.gab", ""), refined = write_temp("refine.gab", "");
+  const std::string out = write_temp("refine-out.off", "");
+  CommandResult a = run_gab("compress -i " + in + " -o " + plain + " --anchors 60 --json");
+  CommandResult b = run_gab("compress -i " + in + " -o " + refined + " --anchors 60 --refine --json");
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  EXPECT_NE(a.out.find("\"refined\": \"no\""), std::string::npos) << a.out;
+  EXPECT_NE(b.out.find("\"refined\": \"yes\""), std::string::npos) << b.out;
+  EXPECT_LT(json_number(b.out, "rms_rel"), json_number(a.out, "rms_rel"));
+  EXPECT_EQ(json_number(b.out, "unrefined_rms_rel"), json_number(a.out, "rms_rel"));
+  EXPECT_GT(json_number(b.out, "refinement_bytes"), 0);
+  CommandResult d = run_gab("decompress -i " + refined + " -o " + out + " --json");
+  ASSERT_EQ(d.exit_code, 0) << d.err;
+  EXPECT_NE(d.out.find("\"refined\": \"yes\""), std::string::npos) << d.out;
+  CommandResult diff = run_gab("diff " + in + " " + out + " --json --samples 0");
+  EXPECT_NEAR(json_number(diff.out, "rms_rel"), json_number(b.out, "rms_rel"), 1e-9);
+  CommandResult info = run_gab("info " + refined);
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  EXPECT_NE(info.out.find("least-squares refinement of all 60 anchors"), std::string::npos) << info.out;
+  CommandResult json = run_gab("info " + refined + " --json");
+  EXPECT_EQ(json_number(json.out, "refinement_bytes"), json_number(b.out, "refinement_bytes"));
+}
+
 TEST(CodecCliTest, LevelOfDetailFromOneFile) {
   const std::string in = write_temp("lod.off", torus_off(40, 20));
   const std::string gab = write_temp("lod.gab", "");

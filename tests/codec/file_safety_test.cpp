@@ -14,8 +14,9 @@
 namespace gab {
 namespace {
 
-std::vector<uint8_t> small_file(bool geometry_only) {
+std::vector<uint8_t> small_file(bool geometry_only, bool refine = false) {
   EncodeOptions options;
+  options.refine = refine;
   options.max_anchors = 24;
   options.initial_anchors = 4;
   options.chunk_growth = 1.6;
@@ -43,8 +44,9 @@ void expect_clean(const std::vector<uint8_t>& bytes, const DecodeOptions& option
 
 TEST(FileSafety, EveryByteFlipIsAnErrorOrAValidMesh) {
   const Mesh connectivity = testing_util::bumpy_torus(10, 6);
-  for (bool geometry_only : {false, true}) {
-    const std::vector<uint8_t> file = small_file(geometry_only);
+  for (int variant : {0, 1, 2}) {  // plain, geometry only, refined
+    const bool geometry_only = variant == 1;
+    const std::vector<uint8_t> file = small_file(geometry_only, variant == 2);
     DecodeOptions options;
     options.connectivity = geometry_only ? &connectivity : nullptr;
     int errors = 0;
@@ -70,29 +72,32 @@ TEST(FileSafety, EveryByteFlipIsAnErrorOrAValidMesh) {
 }
 
 TEST(FileSafety, EveryTruncationIsAnErrorOrTheCompleteChunks) {
-  const std::vector<uint8_t> file = small_file(false);
-  GabFileInfo full;
-  ASSERT_TRUE(read_gab_info(file.data(), file.size(), &full).ok());
-  ASSERT_GE(full.chunks, 3);
-  const size_t chunk0_end = file.size() - [&] {
-    size_t rest = 0;
-    for (size_t c = 1; c < full.chunk_bytes.size(); ++c) rest += full.chunk_bytes[c];
-    return rest;
-  }();
-  for (size_t length = 0; length < file.size(); ++length) {
-    const std::vector<uint8_t> cut(file.begin(), file.begin() + length);
-    Mesh out;
-    DecodeStats ds;
-    const Status s = decode_mesh(cut.data(), cut.size(), DecodeOptions(), &out, &ds);
-    if (length < chunk0_end) {
-      EXPECT_FALSE(s.ok()) << length;
-    } else {
-      ASSERT_TRUE(s.ok()) << length << ": " << s.message();
-      EXPECT_TRUE(ds.truncated);
-      EXPECT_LT(ds.chunks, full.chunks);
-      EXPECT_EQ(out.num_vertices(), full.num_vertices);
+  for (bool refine : {false, true}) {
+    const std::vector<uint8_t> file = small_file(false, refine);
+    GabFileInfo full;
+    ASSERT_TRUE(read_gab_info(file.data(), file.size(), &full).ok());
+    ASSERT_GE(full.chunks, 3);
+    ASSERT_EQ(full.refined, refine);
+    const size_t chunk0_end = file.size() - [&] {
+      size_t rest = full.refinement_bytes;
+      for (size_t c = 1; c < full.chunk_bytes.size(); ++c) rest += full.chunk_bytes[c];
+      return rest;
+    }();
+    for (size_t length = 0; length < file.size(); ++length) {
+      const std::vector<uint8_t> cut(file.begin(), file.begin() + length);
+      Mesh out;
+      DecodeStats ds;
+      const Status s = decode_mesh(cut.data(), cut.size(), DecodeOptions(), &out, &ds);
+      if (length < chunk0_end) {
+        EXPECT_FALSE(s.ok()) << length;
+      } else {
+        ASSERT_TRUE(s.ok()) << length << ": " << s.message();
+        EXPECT_TRUE(ds.truncated);
+        EXPECT_LT(ds.chunks, full.chunks);
+        EXPECT_EQ(out.num_vertices(), full.num_vertices);
+      }
+      expect_clean(cut, DecodeOptions(), "length " + std::to_string(length));
     }
-    expect_clean(cut, DecodeOptions(), "length " + std::to_string(length));
   }
 }
 

@@ -44,6 +44,7 @@ TEST(GoldenFiles, SeedsDecodeToTheirPinnedShapes) {
       {"torus-full", false, 12, 20, 8, 0.0226},
       {"torus-geometry-only", true, 8, 12, 5, 0.0355},
       {"torus-coarse", false, 6, 37, 7, 0.00989},
+      {"torus-refined", false, 12, 16, 6, 0.0242},  // flag bit 1: the refinement applied
   };
   for (const Golden& g : goldens) {
     const std::vector<uint8_t> file = seed(g.name);

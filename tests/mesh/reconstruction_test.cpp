@@ -226,5 +226,27 @@ TEST(GreedyAnchorsTest, EveryVertexAnchoredStops) {
   EXPECT_EQ(static_cast<int32_t>(anchors.size()), m.num_vertices());
 }
 
+TEST(GreedyAnchorsTest, BatchesRankMaximaByTheirOneRingMassOneAtATimeByThePeak) {
+  const Mesh m = bumpy_sphere(3);
+  const EdgeGraph g = build_edge_graph(m);
+  RelaxedReconstruction rec;
+  ASSERT_TRUE(rec.init(g, 10.0, {0}, coefficients(m, {0})).ok());
+  // A one-vertex spike and, far from it, a lower but broad bump.
+  const int32_t spike = 100, bump = 200;
+  std::vector<double> error(m.num_vertices(), 0.0);
+  error[spike] = 10.0;
+  error[bump] = 8.0;
+  for (int32_t p = g.offsets[bump]; p < g.offsets[bump + 1]; ++p) error[g.neighbors[p]] = 6.0;
+  for (int32_t p = g.offsets[spike]; p < g.offsets[spike + 1]; ++p) ASSERT_EQ(error[g.neighbors[p]], 0.0);
+  EXPECT_EQ(pick_error_maxima(g, error, rec, 1), std::vector<int32_t>({spike}));  // the paper's rule
+  EXPECT_EQ(pick_error_maxima(g, error, rec, 2), std::vector<int32_t>({bump, spike}));
+  // The bump's neighbours are not maxima; anchored vertices are never picked.
+  const std::vector<int32_t> many = pick_error_maxima(g, error, rec, m.num_vertices());
+  for (int32_t v : many) {
+    EXPECT_NE(v, 0);
+    EXPECT_TRUE(v == bump || error[v] != 6.0) << v;
+  }
+}
+
 }  // namespace
 }  // namespace gab

@@ -36,6 +36,7 @@ struct DecodeStats {
   int32_t anchors = 0, anchors_in_file = 0;
   int32_t chunks = 0, chunks_in_file = 0;
   bool truncated = false;  // the file ended inside a chunk: the shape is of the complete ones
+  bool refined = false;    // the refinement chunk was applied (whole anchor set, complete file)
   int bits = 0;
   double weight = 0;
   bool geometry_only = false;
@@ -54,12 +55,14 @@ struct GabFileInfo {
   bool geometry_only = false;
   double box_min[3] = {0, 0, 0};
   double step = 0;
-  int32_t anchors = 0, chunks = 0;  // as the header declares
+  int32_t anchors = 0, chunks = 0;  // as the header declares (chunks: the refinement included)
   int32_t chunks_present = 0;       // complete chunks with a valid checksum
+  bool refined = false;             // the last chunk is a refinement (not counted below)
+  size_t refinement_bytes = 0;      // its framed size when present
   bool truncated = false;
   size_t bytes = 0, connectivity_bytes = 0, geometry_bytes = 0;
-  std::vector<size_t> chunk_bytes;     // framed size of each complete chunk
-  std::vector<int32_t> chunk_anchors;  // anchors each complete chunk declares
+  std::vector<size_t> chunk_bytes;     // framed size of each complete anchor chunk
+  std::vector<int32_t> chunk_anchors;  // anchors each complete anchor chunk declares
 };
 
 // Reads the header and walks the chunk frames, checking every checksum,

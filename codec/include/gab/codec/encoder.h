@@ -39,6 +39,21 @@ struct EncodeOptions {
   // an update or refactorization), more predict better. Non-positive:
   // default_chunk_growth of the factorization's cost.
   double chunk_growth = -1;
+  // Least-squares refinement (Sorkine et al. 2005, sec. IV; DESIGN.md
+  // section 5): a last chunk moving every anchor's coefficient from its
+  // quantized position towards the coefficients whose reconstruction is
+  // closest to the shape. With an anchor count the refined shape is 20-27%
+  // closer (q = 12: camel-head 466 anchors 2.05e-3 -> 1.64e-3 RMS) for
+  // 25-45% more bytes; at equal bytes more anchors do as well, so it is not
+  // the default. With an RMS target the greedy loop stops as soon as the
+  // refined shape meets it; at q = 9 that saved 4% of the bits on horse but
+  // cost 6% on camel-head and 3% on feline (the grid rounds most of the gain
+  // away; the corrections cost ~1.4 bits per coordinate). Kept only where it
+  // lowers the RMS without breaking an L-inf target.
+  bool refine = false;
+  // Conjugate-gradient iterations of the refinement (each two solves):
+  // 4 reach within 1% of the converged error on horse (2: +3.6%).
+  int refine_iterations = 4;
   // Called after every reconstruction (anchors so far, relative RMS).
   std::function<void(int32_t, double)> progress;
 };
@@ -51,6 +66,9 @@ struct EncodeStats {
   size_t connectivity_bytes = 0;  // the connectivity block with its framing (or the hash)
   size_t geometry_bytes = 0;      // everything else: header and anchor chunks
   double rms_rel = 0, linf_rel = 0;  // of the decoded shape against the input
+  bool refined = false;              // the file ends with a refinement chunk
+  double unrefined_rms_rel = 0;      // the shape of the anchor chunks alone
+  size_t refinement_bytes = 0;       // the refinement chunk with its framing
   bool target_met = true;         // false if an error target was out of reach at these bits
   std::vector<GreedyStep> curve;  // after every greedy step
   std::vector<int32_t> chunk_anchors;  // anchors per chunk
@@ -77,8 +95,10 @@ int32_t default_initial_anchors(int32_t n);
 // The greedy batch fraction for a system whose factorization costs `flops`:
 // 5% (what the reference quality needs; measured 1.78 bits per vertex on
 // horse at 1e-3 against 1.86 / 1.96 / 2.13 at 10 / 20 / 35%) while a
-// refactorization is cheap, growing as (flops / 2e9)^0.8 up to 50% so that
-// large meshes need a bounded number of steps (igea: ~33%).
+// refactorization is cheap, growing as (flops / 2e9)^0.8 up to 20% so that
+// large meshes need a bounded number of steps (igea: 20%; at 1e-3 it gave
+// 1.11 bits per vertex in ~3.7 s against 1.16 in ~3.3 s at 33% and 1.08 in
+// 4.1-5.0 s at 15%; 15% is what igea's 13,434-anchor reference quality needs).
 double default_batch_fraction(double flops);
 
 // Chunk growth for a system whose factorization costs `flops`: 4 while a

@@ -3,13 +3,14 @@
 // payload, payload.
 //
 //   magic      8 bytes  89 'G' 'A' 'B' 0D 0A 1A 0A (binary-safe, like PNG's)
-//   version    u8 (1), flags u8 (bit 0: geometry only), bits q u8, 0 u8
+//   version    u8 (1), flags u8 (bit 0: geometry only; bit 1: refined),
+//              bits q u8, 0 u8
 //   n, faces   u32, u32   vertex and triangle counts
 //   weight     f64        anchor weight w of the relaxed basis
 //   box min    3 x f64    quantization grid origin
 //   step       f64        grid spacing (quantizer.h)
 //   anchors    u32        anchors in the file, over all chunks
-//   chunks     u32        chunks in the file
+//   chunks     u32        chunks in the file (the refinement included)
 //   crc        u32        CRC-32 of the 68 bytes above
 //   connectivity: framed block (connectivity_coder.h), or in geometry-only
 //              mode the u64 connectivity_hash of the mesh the decoder must
@@ -21,7 +22,13 @@
 //              the earlier chunks (chunk 0: from the previous anchor's,
 //              the first from the grid's centre).
 //              Adaptive statistics carry over from chunk to chunk.
-// Any prefix of whole chunks is a valid coarser approximation.
+//   refinement (flag bit 1 only): one last framed payload correcting every
+//              anchor's quantized position towards the least-squares
+//              optimal coefficient (refinement_chunk.h); it applies to the
+//              whole anchor set only.
+// Any prefix of whole chunks is a valid coarser approximation. A file
+// without bit 1 is what the first version of this format wrote; a reader
+// that does not know bit 1 refuses such files ("unknown flags").
 #pragma once
 
 #include <cstdint>
@@ -35,6 +42,7 @@ namespace gab {
 constexpr uint8_t kGabMagic[8] = {0x89, 'G', 'A', 'B', 0x0D, 0x0A, 0x1A, 0x0A};
 constexpr uint8_t kGabVersion = 1;
 constexpr uint8_t kGabFlagGeometryOnly = 1;
+constexpr uint8_t kGabFlagRefined = 2;
 constexpr int kGabMinBits = 2;
 constexpr int kGabMaxBits = 24;
 constexpr size_t kGabHeaderBytes = 72;
@@ -51,6 +59,9 @@ struct GabHeader {
   int32_t chunks = 0;
 
   bool geometry_only() const { return (flags & kGabFlagGeometryOnly) != 0; }
+  bool refined() const { return (flags & kGabFlagRefined) != 0; }
+  // Chunks holding anchors (all but the refinement).
+  int32_t anchor_chunks() const { return chunks - (refined() ? 1 : 0); }
 };
 
 void write_gab_header(const GabHeader& header, ByteWriter* out);

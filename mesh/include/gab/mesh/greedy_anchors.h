@@ -21,9 +21,9 @@ struct GreedyOptions {
   int32_t max_anchors = 100;  // stop when this many anchors are chosen
   double target_rms_rel = 0;  // or when the relative vertex RMS is at most this (0: off)
   // 0: one anchor per step (the paper). Otherwise each step anchors up to
-  // max(1, ceil(batch_fraction * anchors so far)) vertices: the largest-error
-  // vertices among those whose error is a maximum over their 1-ring (so a
-  // batch never piles anchors onto one bump).
+  // max(1, ceil(batch_fraction * anchors so far)) vertices among those whose
+  // error is a maximum over their 1-ring (so a batch never piles anchors onto
+  // one bump), largest 1-ring error mass first (pick_error_maxima).
   double batch_fraction = 0.0;
 };
 
@@ -43,12 +43,13 @@ struct GreedyStep {
 Status select_anchors_greedy(const Mesh& mesh, const EdgeGraph& graph, const GreedyOptions& options,
                              std::vector<int32_t>* anchors, std::vector<GreedyStep>* curve);
 
-// The `count` vertices not anchored in `rec` of largest error among the
-// 1-ring local maxima of `error` (at least every neighbour's), largest first,
-// ties to the smaller index. With count == 1 this is the worst free vertex
-// (the paper's rule), local maximum or not; if no free vertex is a local
-// maximum, the worst free vertex, so a greedy loop always progresses. Needs
-// a free vertex. O(V + E + c log c), c the local maxima.
+// The `count` (> 1) vertices not anchored in `rec` among the 1-ring local
+// maxima of `error` (at least every neighbour's) whose error has the largest
+// mean over their closed 1-ring, largest first, ties to the smaller index.
+// With count == 1 the worst free vertex (the paper's rule), local maximum or
+// not; if no free vertex is a local maximum, the worst free vertex, so a
+// greedy loop always progresses. Needs a free vertex. O(V + E + c log c),
+// c the local maxima.
 std::vector<int32_t> pick_error_maxima(const EdgeGraph& graph, const std::vector<double>& error,
                                        const RelaxedReconstruction& rec, int32_t count);
 
