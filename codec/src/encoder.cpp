@@ -235,7 +235,7 @@ Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<u
   int32_t chunk_opened_at = rec.num_anchors();
   double rms_rel = 0, linf_rel = 0;
   const double target = options.target_rms_rel;
-  const bool refine = options.refine > 0;
+  const bool refine = options.refine;
   double position_target = refine ? target * kExpectedRefinementGain : target;
   Refinement refinement;
   bool refined = false;

@@ -43,9 +43,10 @@ struct EncodeOptions {
   // section 5): a last chunk moving every anchor's coefficient from its
   // quantized position towards the coefficients whose reconstruction is
   // closest to the shape. With an anchor count the refined shape is 20-27%
-  // closer (q = 12: camel-head 466 anchors 2.05e-3 -> 1.64e-3 RMS) for
-  // 25-45% more bytes; at equal bytes more anchors do as well, so it is not
-  // the default. With an RMS target the greedy loop stops as soon as the
+  // closer (q = 12: camel-head 466 anchors 2.05e-3 -> 1.64e-3 RMS, igea
+  // 13,434 7.16e-4 -> 5.75e-4) for 38-44% more bytes; at equal bytes more
+  // anchors do as well (camel-head 650 plain anchors: 1.34e-3 in fewer
+  // bytes), so it is not the default. With an RMS target the greedy loop stops as soon as the
   // refined shape meets it; at q = 9 that saved 4% of the bits on horse but
   // cost 6% on camel-head and 3% on feline (the grid rounds most of the gain
   // away; the corrections cost ~1.4 bits per coordinate). Kept only where it
