@@ -4,30 +4,13 @@
 #include <cstdlib>
 #include <string>
 
+#include "axis_context.h"
 #include "gab/codec/byte_io.h"
 #include "gab/codec/subset_coder.h"
 
 namespace gab {
 
 namespace {
-
-int bucket_of(int32_t magnitude) {
-  int b = 0;
-  while (magnitude > 0 && b < AnchorModels::kBuckets - 1) {
-    magnitude >>= 1;
-    ++b;
-  }
-  return b;
-}
-
-// Context of axis c of an anchor: from the residuals already coded, this
-// anchor's earlier axes, or the previous anchor's largest for axis 0.
-int context_of(int c, const int32_t r[3], int32_t previous_max) {
-  int32_t m = previous_max;
-  if (c == 1) m = std::abs(r[0]);
-  if (c == 2) m = std::max(std::abs(r[0]), std::abs(r[1]));
-  return c * AnchorModels::kBuckets + bucket_of(m);
-}
 
 // Ranks of sorted vertices among those not anchored, and back.
 std::vector<uint32_t> ranks_of(const std::vector<int32_t>& vertices, const std::vector<char>& anchored) {
@@ -74,9 +57,9 @@ std::vector<uint8_t> AnchorChunkCoder::encode(const std::vector<int32_t>& anchor
       const int32_t predicted = round_prediction(s, &up);
       if (near) enc.encode(&models_->round_up_[c], up ? 1 : 0);
       r[c] = target - predicted;
-      models_->residual_.encode(&enc, r[c], context_of(c, r, previous_max));
+      models_->residual_.encode(&enc, r[c], axis_context(c, r, previous_max, AnchorModels::kBuckets));
     }
-    previous_max = std::max({std::abs(r[0]), std::abs(r[1]), std::abs(r[2])});
+    previous_max = max_magnitude(r);
   }
   const std::vector<uint8_t> coded = enc.finish();
   ByteWriter out;
@@ -135,7 +118,7 @@ Status AnchorChunkCoder::decode(const uint8_t* payload, size_t size, const std::
         const double s = q_.scaled(prediction[3 * static_cast<size_t>(v) + c], c);
         const bool near = dec.decode(&models_->near_tie_[c]) != 0;
         const bool up = near && dec.decode(&models_->round_up_[c]) != 0;
-        r[c] = models_->residual_.decode(&dec, context_of(c, r, previous_max));
+        r[c] = models_->residual_.decode(&dec, axis_context(c, r, previous_max, AnchorModels::kBuckets));
         value = int64_t{resolve_prediction(s, near, up)} + r[c];
       }
       if (value < 0 || value > q_.max_index) {
@@ -145,7 +128,7 @@ Status AnchorChunkCoder::decode(const uint8_t* payload, size_t size, const std::
       previous[c] = static_cast<int32_t>(value);
     }
     if (dec.overrun()) return Status::Error(StatusCode::kParseError, "anchor positions are cut short");
-    previous_max = std::max({std::abs(r[0]), std::abs(r[1]), std::abs(r[2])});
+    previous_max = max_magnitude(r);
   }
   return Status::Ok();
 }

@@ -61,7 +61,6 @@ int32_t next_batch(double target_rms_rel, double fraction, const std::vector<Gre
 // The refined coefficients of the current anchor set, as grid indices (3 per
 // anchor, in rec->anchors() order), and the errors of their reconstruction.
 struct Refinement {
-  std::vector<int32_t> anchors;
   std::vector<int32_t> grid;
   double rms_rel = 0, linf_rel = 0;
 };
@@ -75,7 +74,6 @@ Status refine_coefficients(RelaxedReconstruction* rec, const Mesh& mesh, const Q
   std::vector<double> c = positions;
   OptimalCoefficientsReport report;
   GAB_RETURN_IF_ERROR(optimal_coefficients(rec, mesh, iterations, 0.0, &c, &report));
-  out->anchors = rec->anchors();
   out->grid.resize(c.size());
   for (size_t i = 0; i < c.size(); ++i) {
     const int axis = static_cast<int>(i % 3);
@@ -289,14 +287,14 @@ Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<u
   if (refined) {
     // Corrections in file order: chunk by chunk, each in vertex order.
     std::vector<int32_t> slot(n, -1);
-    for (size_t i = 0; i < refinement.anchors.size(); ++i) slot[refinement.anchors[i]] = static_cast<int32_t>(i);
+    for (size_t i = 0; i < rec.anchors().size(); ++i) slot[rec.anchors()[i]] = static_cast<int32_t>(i);
     std::vector<int32_t> deltas(file_order.size() * 3);
     for (size_t i = 0; i < file_order.size(); ++i) {
       const size_t v = static_cast<size_t>(file_order[i]), s = static_cast<size_t>(slot[v]);
       for (int c = 0; c < 3; ++c) deltas[3 * i + c] = refinement.grid[3 * s + c] - grid[3 * v + c];
     }
     chunks.push_back(encode_refinement(deltas));
-    stats->refinement_bytes = chunks.back().size() + 8;  // + length and CRC
+    stats->refinement_bytes = chunks.back().size() + kGabFrameBytes;
     rms_rel = refinement.rms_rel;
     linf_rel = refinement.linf_rel;
   }

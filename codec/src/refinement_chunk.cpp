@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "axis_context.h"
 #include "gab/codec/byte_io.h"
 #include "gab/codec/int_coder.h"
 #include "gab/codec/range_coder.h"
@@ -17,14 +18,6 @@ namespace {
 // ones. Buckets: |d| = 0, 1, 2-3, 4+.
 constexpr int kBuckets = 4;
 
-int context_of(int c, const int32_t d[3], int32_t previous_max) {
-  int32_t m = previous_max;
-  if (c == 1) m = std::abs(d[0]);
-  if (c == 2) m = std::max(std::abs(d[0]), std::abs(d[1]));
-  const int bucket = m == 0 ? 0 : m == 1 ? 1 : m < 4 ? 2 : 3;
-  return c * kBuckets + bucket;
-}
-
 // Adaptation shift 5: the corrections' statistics are stationary over the
 // chunk (measured: shift 4 costs more on horse and igea).
 SIntCoder make_coder() { return SIntCoder(3 * kBuckets, 5); }
@@ -37,8 +30,8 @@ std::vector<uint8_t> encode_refinement(const std::vector<int32_t>& deltas) {
   int32_t previous_max = 0;
   for (size_t a = 0; a + 2 < deltas.size(); a += 3) {
     const int32_t* d = &deltas[a];
-    for (int c = 0; c < 3; ++c) coder.encode(&enc, d[c], context_of(c, d, previous_max));
-    previous_max = std::max({std::abs(d[0]), std::abs(d[1]), std::abs(d[2])});
+    for (int c = 0; c < 3; ++c) coder.encode(&enc, d[c], axis_context(c, d, previous_max, kBuckets));
+    previous_max = max_magnitude(d);
   }
   const std::vector<uint8_t> coded = enc.finish();
   ByteWriter out;
@@ -63,14 +56,14 @@ Status decode_refinement(const uint8_t* payload, size_t size, int32_t anchors, i
   for (size_t a = 0; a < deltas->size(); a += 3) {
     int32_t* d = &(*deltas)[a];
     for (int c = 0; c < 3; ++c) {
-      d[c] = coder.decode(&dec, context_of(c, d, previous_max));
+      d[c] = coder.decode(&dec, axis_context(c, d, previous_max, kBuckets));
       if (d[c] > max_delta || d[c] < -max_delta) {
         return Status::Error(StatusCode::kParseError, "refinement of anchor #" + std::to_string(a / 3) +
                                                           " leaves the grid");
       }
     }
     if (dec.overrun()) return Status::Error(StatusCode::kParseError, "refinement is cut short");
-    previous_max = std::max({std::abs(d[0]), std::abs(d[1]), std::abs(d[2])});
+    previous_max = max_magnitude(d);
   }
   return Status::Ok();
 }

@@ -46,6 +46,7 @@ constexpr uint8_t kGabFlagRefined = 2;
 constexpr int kGabMinBits = 2;
 constexpr int kGabMaxBits = 24;
 constexpr size_t kGabHeaderBytes = 72;
+constexpr size_t kGabFrameBytes = 8;  // a frame's u32 length and u32 CRC-32
 
 struct GabHeader {
   uint8_t version = kGabVersion;
