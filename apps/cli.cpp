@@ -5,6 +5,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <thread>
+
+#include "gab/sparse/factor_schedule.h"
 
 namespace gab {
 namespace cli {
@@ -138,6 +141,18 @@ std::string JsonObject::str() const {
     out += quote(fields_[i].first) + ": " + fields_[i].second;
   }
   return out + "}";
+}
+
+int32_t default_threads() {
+  const unsigned hardware = std::thread::hardware_concurrency();
+  return static_cast<int32_t>(std::min<int64_t>(std::max(1u, hardware), kMaxFactorThreads));
+}
+
+bool Args::get_threads(int32_t* value) {
+  int64_t threads = default_threads();
+  if (!get_int("--threads", 1, kMaxFactorThreads, &threads)) return false;
+  *value = static_cast<int32_t>(threads);
+  return true;
 }
 
 double median(std::vector<double> values) {

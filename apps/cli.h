@@ -37,6 +37,9 @@ class Args {
   // Integer / double option with range check; false + error() on bad text.
   bool get_int(const std::string& name, int64_t lo, int64_t hi, int64_t* value);
   bool get_double(const std::string& name, double lo, double hi, double* value);
+  // --threads T (1..64); absent: every hardware thread (at most 64). The
+  // results never depend on it, only the time.
+  bool get_threads(int32_t* value);
 
  private:
   std::vector<std::pair<std::string, std::string>> values_;
@@ -65,6 +68,9 @@ inline double now_seconds() {
 }
 
 double median(std::vector<double> values);
+
+// Threads when --threads is not given: every hardware thread (1..64).
+int32_t default_threads();
 
 // Lower-cased extension of a path without the dot ("" if none).
 std::string extension(const std::string& path);

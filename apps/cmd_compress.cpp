@@ -20,7 +20,7 @@ namespace {
 
 const char* kUsage =
     "gab compress -i IN -o OUT.gab [--anchors K | --error E | --linf E] [--bits Q] [--weight W]\n"
-    "             [--geometry-only] [--json]\n"
+    "             [--geometry-only] [--threads T] [--json]\n"
     "             (tuning: --batch F --chunk-growth G --initial K --refine)";
 
 constexpr double kDefaultError = 1e-3;
@@ -30,7 +30,7 @@ constexpr double kDefaultError = 1e-3;
 int run_compress(int argc, char** argv) {
   Args args;
   if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--error", "--linf", "--bits", "--weight", "--batch", "--chunk-growth",
-                   "--initial"},
+                   "--initial", "--threads"},
                   {"--json", "--geometry-only", "--refine"})) {
     return usage_error("compress", args.error(), kUsage);
   }
@@ -46,7 +46,7 @@ int run_compress(int argc, char** argv) {
       !args.get_double("--weight", 1e-6, 1e6, &options.weight) ||
       !args.get_double("--batch", 0.0, 1.0, &options.batch_fraction) ||
       !args.get_double("--chunk-growth", 1.01, 1e9, &options.chunk_growth) ||
-      !args.get_int("--initial", 1, 0x7FFFFFFF, &initial)) {
+      !args.get_int("--initial", 1, 0x7FFFFFFF, &initial) || !args.get_threads(&options.threads)) {
     return usage_error("compress", args.error(), kUsage);
   }
   options.max_anchors = static_cast<int32_t>(anchors);

@@ -17,13 +17,14 @@ namespace cli {
 
 namespace {
 
-const char* kUsage = "gab decompress -i IN.gab -o OUT [--anchors K] [--connectivity MESH] [--json]";
+const char* kUsage =
+    "gab decompress -i IN.gab -o OUT [--anchors K] [--connectivity MESH] [--threads T] [--json]";
 
 }  // namespace
 
 int run_decompress(int argc, char** argv) {
   Args args;
-  if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--connectivity"}, {"--json"})) {
+  if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--connectivity", "--threads"}, {"--json"})) {
     return usage_error("decompress", args.error(), kUsage);
   }
   if (!args.positionals().empty()) {
@@ -31,7 +32,10 @@ int run_decompress(int argc, char** argv) {
   }
   if (!args.has("-i") || !args.has("-o")) return usage_error("decompress", "need -i IN.gab and -o OUT", kUsage);
   int64_t anchors = -1;
-  if (!args.get_int("--anchors", 0, 0x7FFFFFFF, &anchors)) return usage_error("decompress", args.error(), kUsage);
+  int32_t threads = 1;
+  if (!args.get_int("--anchors", 0, 0x7FFFFFFF, &anchors) || !args.get_threads(&threads)) {
+    return usage_error("decompress", args.error(), kUsage);
+  }
   const std::string in = args.get("-i"), out = args.get("-o");
   const std::string ext = extension(out);
   if (ext != "obj" && ext != "off" && ext != "ply") {
@@ -44,6 +48,7 @@ int run_decompress(int argc, char** argv) {
   Mesh connectivity;
   DecodeOptions options;
   options.max_anchors = static_cast<int32_t>(anchors);
+  options.threads = threads;
   if (args.has("--connectivity")) {
     status = read_mesh(args.get("--connectivity"), &connectivity);
     if (!status.ok()) return fail(status.message());

@@ -70,13 +70,16 @@ int run_demo(int argc, char** argv) {
   for (double fraction : {0.005, 0.01, 0.02, 0.05, 0.1}) {
     EncodeOptions options;
     options.max_anchors = std::max(1, static_cast<int32_t>(std::lround(fraction * n)));
+    options.threads = default_threads();
     std::vector<uint8_t> file;
     EncodeStats es;
     status = encode_mesh(mesh, options, &file, &es);
     if (!status.ok()) return fail(status.message());
     Mesh decoded;
     DecodeStats ds;
-    status = decode_mesh(file.data(), file.size(), DecodeOptions(), &decoded, &ds);
+    DecodeOptions decode_options;
+    decode_options.threads = default_threads();
+    status = decode_mesh(file.data(), file.size(), decode_options, &decoded, &ds);
     if (!status.ok()) return fail("decoding the demo's own file: " + status.message());
     VertexDistance d;
     status = vertex_distance(mesh, decoded, &d);

@@ -1,4 +1,4 @@
-// gab factor IN [--ordering amd|natural] [--anchors K] [--repeat R] [--json]
+// gab factor IN [--ordering amd|natural] [--anchors K] [--repeat R] [--threads T] [--json]
 // Orders, analyzes, factors and solves (3 right-hand sides) the benchmark
 // matrix of IN, reporting the median time of each phase over R runs.
 #include <cmath>
@@ -15,18 +15,22 @@ namespace cli {
 
 namespace {
 
-const char* kUsage = "gab factor IN [--ordering amd|natural] [--anchors K] [--repeat R] [--json]";
+const char* kUsage =
+    "gab factor IN [--ordering amd|natural] [--anchors K] [--repeat R] [--threads T] [--json]";
 
 }  // namespace
 
 int run_factor(int argc, char** argv) {
   Args args;
-  if (!args.parse(argc, argv, {"--ordering", "--anchors", "--repeat"}, {"--json"})) {
+  if (!args.parse(argc, argv, {"--ordering", "--anchors", "--repeat", "--threads"}, {"--json"})) {
     return usage_error("factor", args.error(), kUsage);
   }
   if (args.positionals().size() != 1) return usage_error("factor", "expected one input file", kUsage);
-  int64_t anchors = 100, repeat = 5;
-  if (!args.get_int("--anchors", 1, INT32_MAX, &anchors) || !args.get_int("--repeat", 1, 1000, &repeat)) {
+  // One thread by default: the factorization figures compare with
+  // single-threaded peers.
+  int64_t anchors = 100, repeat = 5, threads = 1;
+  if (!args.get_int("--anchors", 1, INT32_MAX, &anchors) || !args.get_int("--repeat", 1, 1000, &repeat) ||
+      !args.get_int("--threads", 1, kMaxFactorThreads, &threads)) {
     return usage_error("factor", args.error(), kUsage);
   }
   const std::string ordering_name = args.get("--ordering", "amd");
@@ -59,6 +63,7 @@ int run_factor(int argc, char** argv) {
     AnalyzeOptions options;
     options.ordering = Ordering::kGiven;
     options.given_perm = perm;
+    options.threads = static_cast<int32_t>(threads);
     status = chol.analyze(a, options);
     if (!status.ok()) return fail(path + ": " + status.message());
     double t2 = now_seconds();
@@ -108,16 +113,19 @@ int run_factor(int argc, char** argv) {
   out.add("stored_L", f.stored_L);
   out.add("simd", std::string(simd_level_name(dense_kernels().level)));
   out.add("repeat", repeat);
+  out.add("threads", threads);
   if (json) {
     std::printf("%s\n", out.str().c_str());
   } else {
     std::printf("%s: n = %d, nnz(A) = %lld, nnz(L) = %lld (%d supernodes, etree height %d)\n",
                 path.c_str(), n, static_cast<long long>(a.nnz()), static_cast<long long>(f.nnz_L),
                 f.num_supernodes, f.etree.height());
-    std::printf("order %.4f s, symbolic %.4f s, factor %.4f s (%.1f GFLOP/s, %s), solve x3 %.4f s\n",
+    std::printf("order %.4f s, symbolic %.4f s, factor %.4f s (%.1f GFLOP/s, %s, %lld thread%s), "
+                "solve x3 %.4f s\n",
                 median(order_s), median(symbolic_s), factor_median,
                 factor_median > 0 ? f.flops / factor_median * 1e-9 : 0.0,
-                simd_level_name(dense_kernels().level), median(solve_s));
+                simd_level_name(dense_kernels().level), static_cast<long long>(threads),
+                threads == 1 ? "" : "s", median(solve_s));
     std::printf("relative residual %.3g (median of %lld runs)\n", residual, static_cast<long long>(repeat));
   }
   return kExitOk;

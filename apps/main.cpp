@@ -5,6 +5,7 @@
 
 #include "cli.h"
 #include "commands.h"
+#include "huge_page_malloc.h"
 
 namespace {
 
@@ -15,16 +16,16 @@ const char* kHelp =
     "\n"
     "commands:\n"
     "  compress -i IN -o OUT.gab [--anchors K | --error E | --linf E] [--bits Q] [--weight W]\n"
-    "           [--geometry-only] [--json]\n"
+    "           [--geometry-only] [--threads T] [--json]\n"
     "      compress a mesh's geometry with geometry-aware anchors (default --error 0.001: relative\n"
     "      vertex RMS over the bounding-box diagonal; q picked from the target, 12 for --anchors)\n"
-    "  decompress -i IN.gab -o OUT [--anchors K] [--connectivity MESH] [--json]\n"
+    "  decompress -i IN.gab -o OUT [--anchors K] [--connectivity MESH] [--threads T] [--json]\n"
     "      decode a .gab file (its first K anchors only: a coarser level of detail)\n"
     "  info IN.gab [--json]\n"
     "      what a .gab file holds (checksums verified, nothing decoded)\n"
     "  demo\n"
     "      compress a real mesh at several anchor counts, print a table, write the meshes\n"
-    "  factor IN [--ordering amd|natural] [--anchors K] [--repeat R] [--json]\n"
+    "  factor IN [--ordering amd|natural] [--anchors K] [--repeat R] [--threads T] [--json]\n"
     "      order, analyze, factor and solve the least-squares matrix of a mesh (.obj .off .ply)\n"
     "      or a Matrix Market file (.mtx); report sizes and median phase times\n"
     "  study IN... [--ordering amd|natural] [--updates U] [--batch B] [--anchors K]\n"
@@ -35,11 +36,13 @@ const char* kHelp =
     "      distances between two meshes (.obj .off .ply): per vertex when the vertex counts\n"
     "      match, and the symmetric surface distance (mean, RMS, Hausdorff) from N samples\n"
     "\n"
-    "--json prints one JSON object on stdout; messages go to stderr.\n";
+    "--json prints one JSON object on stdout; messages go to stderr. --threads: threads for the\n"
+    "factorizations (compress/decompress default: all cores; factor: 1); results never depend on it.\n";
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  gab::cli::use_huge_page_malloc(argv);
   if (argc < 2) {
     std::fputs(kHelp, stderr);
     return gab::cli::kExitUsage;

@@ -111,6 +111,7 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
   AnchorChunkCoder coder(header.quantizer, &models);
   std::vector<char> anchored(n, 0);
   RelaxedReconstruction rec;
+  rec.set_threads(options.threads);
   std::vector<double> shape;
   const int32_t wanted = options.max_anchors >= 0 ? std::min(options.max_anchors, header.anchors) : header.anchors;
   const int32_t anchor_chunks = header.anchor_chunks();

@@ -207,6 +207,7 @@ Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<u
   GAB_RETURN_IF_ERROR(farthest_point_sampling(graph, initial, {}, &chosen));
 
   RelaxedReconstruction rec;
+  rec.set_threads(options.threads);
   GAB_RETURN_IF_ERROR(rec.init(graph, options.weight, chosen, coefficients_of(chosen)));
   const double fraction = options.batch_fraction >= 0 ? options.batch_fraction
                                                       : default_batch_fraction(rec.cholesky().symbolic().flops);

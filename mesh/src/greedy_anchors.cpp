@@ -74,6 +74,7 @@ Status select_anchors_greedy(const Mesh& mesh, const EdgeGraph& graph, const Gre
   std::vector<int32_t> chosen;
   GAB_RETURN_IF_ERROR(farthest_point_sampling(graph, std::max(options.initial, ncomp), {}, &chosen));
   RelaxedReconstruction rec;
+  rec.set_threads(options.threads);
   GAB_RETURN_IF_ERROR(rec.init(graph, options.weight, chosen, coefficients_of(mesh, chosen)));
   const double diagonal = bounding_box_diagonal(mesh);
   const double scale = diagonal > 0 ? 1.0 / diagonal : 1.0;

@@ -72,7 +72,9 @@ Status RelaxedReconstruction::init(const EdgeGraph& graph, double weight,
     }
   }
   GAB_RETURN_IF_ERROR(assemble_normal_matrix(graph, anchors, weight, &matrix_));
-  GAB_RETURN_IF_ERROR(chol_.analyze(matrix_));
+  AnalyzeOptions options;
+  options.threads = threads_;
+  GAB_RETURN_IF_ERROR(chol_.analyze(matrix_, options));
   GAB_RETURN_IF_ERROR(chol_.factorize(matrix_));
   record(anchors, coefficients);
   return Status::Ok();

@@ -11,9 +11,10 @@ Status Cholesky::analyze(const CscMatrix& lower, const AnalyzeOptions& options) 
   analyzed_ = factorized_ = false;
   GAB_RETURN_IF_ERROR(gab::analyze(lower, options, &symbolic_));
   const int64_t values = symbolic_.value_ptr[symbolic_.num_supernodes];
-  const int64_t work = factor_workspace_doubles(symbolic_);
+  schedule_ = plan_factor_schedule(symbolic_, options.threads);
+  const int64_t work = factor_workspace_doubles(schedule_);
   if (!values_.reserve(values) || !work_.reserve(work) ||
-      !iwork_.reserve(factor_workspace_ints(symbolic_))) {
+      !iwork_.reserve(factor_workspace_ints(symbolic_, schedule_))) {
     return Status::Error(StatusCode::kOutOfMemory,
                          "cannot allocate " + std::to_string((values + work) * 8 >> 20) +
                              " MiB for the factor and its workspace");
@@ -30,7 +31,7 @@ Status Cholesky::factorize(const CscMatrix& lower) {
   if (!analyzed_) return Status::Error(StatusCode::kInvalidArgument, "factorize before analyze");
   factorized_ = false;
   if (kernels_ == nullptr) kernels_ = &dense_kernels();
-  GAB_RETURN_IF_ERROR(factorize_supernodal(symbolic_, lower, *kernels_, values_.data(),
+  GAB_RETURN_IF_ERROR(factorize_supernodal(symbolic_, schedule_, lower, *kernels_, values_.data(),
                                            work_.data(), iwork_.data()));
   factorized_ = true;
   return Status::Ok();

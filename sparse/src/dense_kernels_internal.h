@@ -20,6 +20,7 @@
 #include <limits>
 
 #include "gab/sparse/dense_kernels.h"
+#include "kernel_team.h"
 
 namespace gab {
 namespace dense_detail {
@@ -151,7 +152,7 @@ struct Blocked {
       gemm_direct(m, n, k, a, lda, b, ldb, c, ldc);
       return;
     }
-    double* apack = ws;
+    KernelTeam* team = team_for(m, n, k);
     double* bpack = ws + static_cast<size_t>(T::kMc) * T::kKc;
     for (int32_t pc = 0; pc < k; pc += T::kKc) {
       const int32_t kc = std::min<int32_t>(T::kKc, k - pc);
@@ -159,19 +160,22 @@ struct Blocked {
       for (int32_t jc = 0; jc < n; jc += T::kNc) {
         const int32_t nc = std::min<int32_t>(T::kNc, n - jc);
         T::pack(b + jc + off_k * ldb, ldb, nc, kc, bpack);
-        for (int32_t ic = 0; ic < m; ic += T::kMc) {
+        // Row blocks are independent given the packed B^T: a team shares
+        // them, each member packing its blocks of A in its own workspace.
+        for_each_item(team, (m + T::kMc - 1) / T::kMc, [&](int32_t block) {
+          const int32_t ic = block * T::kMc;
           const int32_t mc = std::min<int32_t>(T::kMc, m - ic);
-          T::pack(a + ic + off_k * lda, lda, mc, kc, apack);
+          const RowBlock ablock = pack_rows(a + ic + off_k * lda, lda, mc, kc);
           for (int32_t jr = 0; jr < nc; jr += T::kNr) {
             const int32_t cols = std::min<int32_t>(T::kNr, nc - jr);
             double* cj = c + ic + static_cast<ptrdiff_t>(jc + jr) * ldc;
             const double* bp = panel_rows(bpack, kc, jr);
             for (int32_t ir = 0; ir < mc; ir += T::kMr) {
-              T::tile(kc, apack + static_cast<ptrdiff_t>(ir) * kc, T::kMr, bp, T::kMr, cj + ir, ldc,
+              T::tile(kc, ablock.rows_from(ir, kc), ablock.stride, bp, T::kMr, cj + ir, ldc,
                       std::min<int32_t>(T::kMr, mc - ir), cols, kNoDiagonal);
             }
           }
-        }
+        });
       }
     }
   }
@@ -185,7 +189,7 @@ struct Blocked {
       syrk_direct(n, k, a, lda, c, ldc);
       return;
     }
-    double* apack = ws;
+    KernelTeam* team = team_for(n, n, k);
     double* bpack = ws + static_cast<size_t>(T::kMc) * T::kKc;
     for (int32_t pc = 0; pc < k; pc += T::kKc) {
       const int32_t kc = std::min<int32_t>(T::kKc, k - pc);
@@ -194,16 +198,14 @@ struct Blocked {
         const int32_t nc = std::min<int32_t>(T::kNc, n - jc);
         T::pack(ak + jc, lda, nc, kc, bpack);
         // Only row blocks at or below the column block touch the lower
-        // triangle.
-        for (int32_t ic = jc; ic < n; ic += T::kMc) {
+        // triangle; a team shares them (see gemm_nt_sub).
+        for_each_item(team, (n - jc + T::kMc - 1) / T::kMc, [&](int32_t block) {
+          const int32_t ic = jc + block * T::kMc;
           const int32_t mc = std::min<int32_t>(T::kMc, n - ic);
           // Rows already packed as B^T are reused as A (the usual case:
           // n <= kNc packs A exactly once).
-          const double* ablock = bpack + static_cast<ptrdiff_t>(ic - jc) * kc;
-          if (ic + mc > jc + nc) {
-            T::pack(ak + ic, lda, mc, kc, apack);
-            ablock = apack;
-          }
+          RowBlock ablock{bpack + static_cast<ptrdiff_t>(ic - jc) * kc, T::kMr, true};
+          if (ic + mc > jc + nc) ablock = pack_rows(ak + ic, lda, mc, kc);
           for (int32_t jr = 0; jr < nc; jr += T::kNr) {
             const int32_t j = jc + jr;
             if (j >= ic + mc) break;  // this and later column tiles lie above the block
@@ -216,14 +218,13 @@ struct Blocked {
             int32_t i = std::max(ic, j);
             while (i < ic + mc) {
               const int32_t in_block = i - ic;
-              const int32_t offset = in_block % T::kMr;
-              const int32_t rows = std::min<int32_t>(T::kMr - offset, ic + mc - i);
-              T::tile(kc, ablock + static_cast<ptrdiff_t>(in_block - offset) * kc + offset, T::kMr,
-                      bp, T::kMr, cj + i, ldc, rows, cols, i - j);
+              const int32_t rows = std::min<int32_t>(T::kMr - in_block % T::kMr, ic + mc - i);
+              T::tile(kc, ablock.rows_from(in_block, kc), ablock.stride, bp, T::kMr, cj + i, ldc,
+                      rows, cols, i - j);
               i += rows;
             }
           }
-        }
+        });
       }
     }
   }
@@ -271,6 +272,35 @@ struct Blocked {
   }
 
  private:
+  // Calls from a thread leading a kernel team split their work with it
+  // when there is enough: about 2 MFLOP per call or more.
+  static KernelTeam* team_for(int32_t m, int32_t n, int32_t k) {
+    constexpr int64_t kMinProduct = int64_t{1} << 20;
+    return static_cast<int64_t>(m) * n * k >= kMinProduct ? current_team() : nullptr;
+  }
+
+  // Rows of A for a run of tiles: packed into the calling thread's
+  // workspace (its A part) when it has one, else read in place (a team
+  // helper that could not allocate) — the tiles' arithmetic is the same.
+  struct RowBlock {
+    const double* data;
+    ptrdiff_t stride;  // between consecutive k steps
+    bool packed;
+    // The block's rows from `row` on, in slices of kc (inside a packed
+    // panel when row is not a multiple of kMr).
+    const double* rows_from(int32_t row, int32_t kc) const {
+      if (!packed) return data + row;
+      const int32_t offset = row % T::kMr;
+      return data + static_cast<ptrdiff_t>(row - offset) * kc + offset;
+    }
+  };
+  static RowBlock pack_rows(const double* a, int32_t lda, int32_t rows, int32_t kc) {
+    double* mine = packing_workspace(workspace_doubles());
+    if (mine == nullptr) return RowBlock{a, lda, false};
+    T::pack(a, lda, rows, kc, mine);
+    return RowBlock{mine, T::kMr, true};
+  }
+
   // Packed rows [row, row + kNr) (row a multiple of kNr) of panels packed
   // with inner length kc.
   static const double* panel_rows(const double* packed, int32_t kc, int32_t row) {
@@ -287,28 +317,31 @@ struct Blocked {
 
   // Unpacked: tiles read A and B^T straight from the caller's matrices. For
   // small problems packing costs more than it saves.
+  // With a team, column strips are shared out.
   static void gemm_direct(int32_t m, int32_t n, int32_t k, const double* a, int32_t lda,
                           const double* b, int32_t ldb, double* c, int32_t ldc) {
-    for (int32_t j = 0; j < n; j += T::kNr) {
+    for_each_item(team_for(m, n, k), (n + T::kNr - 1) / T::kNr, [&](int32_t strip) {
+      const int32_t j = strip * T::kNr;
       const int32_t cols = std::min<int32_t>(T::kNr, n - j);
       double* cj = c + static_cast<ptrdiff_t>(j) * ldc;
       for (int32_t i = 0; i < m; i += T::kMr) {
         T::tile(k, a + i, lda, b + j, ldb, cj + i, ldc, std::min<int32_t>(T::kMr, m - i), cols,
                 kNoDiagonal);
       }
-    }
+    });
   }
 
   static void syrk_direct(int32_t n, int32_t k, const double* a, int32_t lda, double* c,
                           int32_t ldc) {
-    for (int32_t j = 0; j < n; j += T::kNr) {
+    for_each_item(team_for(n, n, k), (n + T::kNr - 1) / T::kNr, [&](int32_t strip) {
+      const int32_t j = strip * T::kNr;
       const int32_t cols = std::min<int32_t>(T::kNr, n - j);
       double* cj = c + static_cast<ptrdiff_t>(j) * ldc;
       for (int32_t i = j; i < n; i += T::kMr) {
         T::tile(k, a + i, lda, a + j, lda, cj + i, ldc, std::min<int32_t>(T::kMr, n - i), cols,
                 i - j);
       }
-    }
+    });
   }
 };
 

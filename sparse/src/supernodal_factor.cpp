@@ -7,84 +7,76 @@
 // update matrices of its children (extend-add through relative indices),
 // then partially factored: POTRF on the diagonal block, TRSM below it, and
 // one SYRK that forms its own update matrix. Update matrices live on two
-// stacks sharing one buffer sized by the analysis, so nothing is allocated
-// here: even-depth supernodes push at the low end, odd-depth ones at the
+// stacks sharing one buffer, at offsets the schedule fixed
+// (factor_schedule.h), so nothing is allocated here: even-depth supernodes push at the low end, odd-depth ones at the
 // high end. A parent's children therefore sit on top of the other stack
 // than the one its own update goes to, so the parent's update is formed in
 // place while the children's are read, then the children are popped — no
 // copy (a single stack would need a memmove per front). Chosen over
 // left-looking because each supernode then does one large SYRK instead of
 // one small GEMM per descendant, which keeps the SIMD kernel busy.
+//
+// With several threads, each factors whole subtrees of the schedule on its
+// own stacks; the top part follows, its large kernel calls shared by the
+// whole team (kernel_team.h); see factor_schedule.h.
+#include <atomic>
 #include <cstring>
 #include <string>
+#include <thread>
 
 #include "gab/sparse/supernodal.h"
+#include "kernel_team.h"
 
 namespace gab {
 
-int64_t factor_workspace_doubles(const SymbolicFactor& f) { return f.stack_peak; }
+int64_t factor_workspace_doubles(const FactorSchedule& plan) { return plan.stack_doubles(); }
 
-int64_t factor_workspace_ints(const SymbolicFactor& f) {
-  // map (n) + relative indices and their run ends (2 * max rows) + child
-  // lists and depths (3 * supernodes)
-  return static_cast<int64_t>(f.n) + 2 * static_cast<int64_t>(f.max_front_rows) +
-         3 * static_cast<int64_t>(f.num_supernodes);
+int64_t factor_workspace_ints(const SymbolicFactor& f, const FactorSchedule& plan) {
+  // per thread: map (n) + relative indices and their run ends (2 * max
+  // rows); shared: child lists (2 * supernodes)
+  return plan.threads * (static_cast<int64_t>(f.n) + 2 * static_cast<int64_t>(f.max_front_rows)) +
+         2 * static_cast<int64_t>(f.num_supernodes);
 }
 
-Status factorize_supernodal(const SymbolicFactor& f, const CscMatrix& lower,
-                            const DenseKernels& kern, double* values, double* work,
-                            int32_t* iwork) {
-  if (lower.ncols != f.n || lower.nnz() != f.nnz_A || lower.values.size() != lower.rowind.size()) {
-    return Status::Error(StatusCode::kInvalidArgument,
-                         "matrix does not have the analyzed pattern (or has no values)");
-  }
-  const int32_t ns = f.num_supernodes;
-  int32_t* map = iwork;                       // row -> position in the current front
-  int32_t* rel = map + f.n;                   // child's rows -> positions in the front
-  int32_t* run_end = rel + f.max_front_rows;  // end of the run of consecutive rel[] holding u
-  int32_t* child_head = run_end + f.max_front_rows;
-  int32_t* child_next = child_head + ns;
-  int32_t* depth = child_next + ns;
-  for (int32_t s = 0; s < ns; ++s) child_head[s] = -1;
-  // Children in increasing order: the order their updates were pushed.
-  for (int32_t s = ns - 1; s >= 0; --s) {
-    const int32_t parent = f.supernode_parent[s];
-    depth[s] = parent == -1 ? 0 : depth[parent] + 1;
-    if (parent == -1) continue;
-    child_next[s] = child_head[parent];
-    child_head[parent] = s;
-  }
-  const double* a = lower.values.data();
-  // Stack 0 occupies work[0, top[0]); stack 1 occupies the last top[1]
-  // doubles of the f.stack_peak-sized buffer.
-  int64_t top[2] = {0, 0};
-  double* const work_end = work + f.stack_peak;
-  for (int32_t s = 0; s < ns; ++s) {
+namespace {
+
+struct FrontContext {
+  const SymbolicFactor& f;
+  const FactorSchedule& plan;
+  const double* a;  // A's values
+  const DenseKernels& kern;
+  double* values;
+  double* work;
+  const int32_t* child_head;
+  const int32_t* child_next;
+};
+
+// Assembles and partially factors the fronts of one group, in order; map,
+// rel and run_end are this thread's. Returns the first supernode whose
+// pivot failed (its column offset in *bad_col), or -1.
+int32_t factor_group(const FrontContext& ctx, int32_t group, int32_t* map, int32_t* rel,
+                     int32_t* run_end, int32_t* bad_col) {
+  const SymbolicFactor& f = ctx.f;
+  double* const values = ctx.values;
+  for (int32_t i = ctx.plan.group_ptr[group]; i < ctx.plan.group_ptr[group + 1]; ++i) {
+    const int32_t s = ctx.plan.order[i];
     const int32_t k = f.cols(s), m = f.rows(s), p = m - k;
-    const int64_t pp = static_cast<int64_t>(p) * p;
     const int32_t* rows = f.row_ind.data() + f.row_ptr[s];
     double* block = values + f.value_ptr[s];
     std::memset(block, 0, sizeof(double) * static_cast<size_t>(m) * k);
     for (int32_t t = 0; t < m; ++t) map[rows[t]] = t;
-    for (int64_t q = f.a_ptr[s]; q < f.a_ptr[s + 1]; ++q) values[f.a_dest[q]] += a[f.a_order[q]];
+    for (int64_t q = f.a_ptr[s]; q < f.a_ptr[s + 1]; ++q) {
+      values[f.a_dest[q]] += ctx.a[f.a_order[q]];
+    }
 
-    const int side = depth[s] & 1, child_side = 1 - side;
-    double* update = side == 0 ? work + top[0] : work_end - top[1] - pp;
+    double* update = ctx.work + ctx.plan.update_offset[s];
     for (int32_t j = 0; j < p; ++j) {
       std::memset(update + static_cast<int64_t>(j) * p + j, 0, sizeof(double) * (p - j));
     }
-    // Children's updates are the top of the other stack, pushed in child
-    // order; walk them from the oldest.
-    int64_t children_size = 0;
-    for (int32_t c = child_head[s]; c != -1; c = child_next[c]) {
-      const int64_t pc = f.rows(c) - f.cols(c);
-      children_size += pc * pc;
-    }
-    int64_t offset = top[child_side] - children_size;  // distance from the stack's base
-    for (int32_t c = child_head[s]; c != -1; c = child_next[c]) {
+    // Children in increasing order, whichever group left their updates.
+    for (int32_t c = ctx.child_head[s]; c != -1; c = ctx.child_next[c]) {
       const int32_t kc = f.cols(c), pc = f.rows(c) - kc;
-      const int64_t pcc = static_cast<int64_t>(pc) * pc;
-      const double* cu = child_side == 0 ? work + offset : work_end - offset - pcc;
+      const double* cu = ctx.work + ctx.plan.update_offset[c];
       const int32_t* crows = f.row_ind.data() + f.row_ptr[c] + kc;
       for (int32_t t = 0; t < pc; ++t) rel[t] = map[crows[t]];
       // A child's rows mostly land on runs of consecutive front rows; add
@@ -104,23 +96,89 @@ Status factorize_supernodal(const SymbolicFactor& f, const CscMatrix& lower,
           u = end;
         }
       }
-      offset += pcc;
     }
-    top[child_side] -= children_size;  // pop the children
 
-    const int32_t bad = kern.potrf(k, block, m);
+    const int32_t bad = ctx.kern.potrf(k, block, m);
     if (bad >= 0) {
-      const int32_t col = f.first_col[s] + bad;
-      return Status::Error(StatusCode::kNotPositiveDefinite,
-                           "matrix is not positive definite: pivot " + std::to_string(col) +
-                               " (original row/column " + std::to_string(f.perm[col]) +
-                               ") is not positive");
+      *bad_col = bad;
+      return s;
     }
     if (p > 0) {
-      kern.trsm_right_lower_trans(p, k, block, m, block + k, m);
-      kern.syrk_lower_sub(p, k, block + k, m, update, p);
-      top[side] += pp;  // push this front's update
+      ctx.kern.trsm_right_lower_trans(p, k, block, m, block + k, m);
+      ctx.kern.syrk_lower_sub(p, k, block + k, m, update, p);
     }
+  }
+  return -1;
+}
+
+}  // namespace
+
+Status factorize_supernodal(const SymbolicFactor& f, const FactorSchedule& plan,
+                            const CscMatrix& lower, const DenseKernels& kern, double* values,
+                            double* work, int32_t* iwork) {
+  if (lower.ncols != f.n || lower.nnz() != f.nnz_A || lower.values.size() != lower.rowind.size()) {
+    return Status::Error(StatusCode::kInvalidArgument,
+                         "matrix does not have the analyzed pattern (or has no values)");
+  }
+  const int32_t ns = f.num_supernodes, threads = plan.threads;
+  const int64_t per_thread = static_cast<int64_t>(f.n) + 2 * static_cast<int64_t>(f.max_front_rows);
+  int32_t* child_head = iwork + threads * per_thread;
+  int32_t* child_next = child_head + ns;
+  for (int32_t s = 0; s < ns; ++s) child_head[s] = -1;
+  // Children in increasing order: the order of the serial factorization,
+  // which every schedule keeps so the sums are the same.
+  for (int32_t s = ns - 1; s >= 0; --s) {
+    const int32_t parent = f.supernode_parent[s];
+    if (parent == -1) continue;
+    child_next[s] = child_head[parent];
+    child_head[parent] = s;
+  }
+  const FrontContext ctx{f, plan, lower.values.data(), kern, values, work, child_head, child_next};
+  auto run = [&](int32_t group, int32_t thread, int32_t* bad_col) {
+    int32_t* map = iwork + thread * per_thread;
+    return factor_group(ctx, group, map, map + f.n, map + f.n + f.max_front_rows, bad_col);
+  };
+
+  int32_t fail = -1, bad = 0;
+  if (threads == 1) {
+    fail = run(0, 0, &bad);
+  } else {
+    // Groups 1..threads-1 on their own threads, group 0 here; then the top
+    // part here, the other threads helping inside its large kernel calls.
+    // The first failure in (post)order is the serial one: each group stops
+    // at its first, and a front fails or not whatever ran before it.
+    int32_t failed[kMaxFactorThreads], bad_cols[kMaxFactorThreads];
+    dense_detail::KernelTeam team(threads);
+    std::atomic<int32_t> groups_done{0};
+    std::thread pool[kMaxFactorThreads];
+    for (int32_t g = 1; g < threads; ++g) {
+      pool[g] = std::thread([&, g] {
+        failed[g] = run(g, g, &bad_cols[g]);
+        groups_done.fetch_add(1, std::memory_order_release);
+        team.serve(g);
+      });
+    }
+    failed[0] = run(0, 0, &bad_cols[0]);
+    while (groups_done.load(std::memory_order_acquire) < threads - 1) std::this_thread::yield();
+    for (int32_t g = 0; g < threads; ++g) {
+      if (failed[g] != -1 && (fail == -1 || failed[g] < fail)) {
+        fail = failed[g];
+        bad = bad_cols[g];
+      }
+    }
+    if (fail == -1) {
+      dense_detail::LeadTeam lead(&team);
+      fail = run(threads, 0, &bad);
+    }
+    team.stop();
+    for (int32_t g = 1; g < threads; ++g) pool[g].join();
+  }
+  if (fail != -1) {
+    const int32_t col = f.first_col[fail] + bad;
+    return Status::Error(StatusCode::kNotPositiveDefinite,
+                         "matrix is not positive definite: pivot " + std::to_string(col) +
+                             " (original row/column " + std::to_string(f.perm[col]) +
+                             ") is not positive");
   }
   return Status::Ok();
 }

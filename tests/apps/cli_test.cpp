@@ -33,6 +33,20 @@ TEST(CliTest, FactorJsonHasTheContractKeys) {
   EXPECT_EQ(r.out.find('\n'), r.out.size() - 1);
 }
 
+TEST(CliTest, FactorReportsItsThreadsAndTheSameResidualWithAny) {
+  const std::string path = write_temp("octa-t.off", kOctahedron);
+  const CommandResult one = run_gab("factor " + path + " --json --anchors 2 --repeat 1");
+  const CommandResult two = run_gab("factor " + path + " --json --anchors 2 --repeat 1 --threads 2");
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  ASSERT_EQ(two.exit_code, 0) << two.err;
+  EXPECT_NE(one.out.find("\"threads\": 1"), std::string::npos) << one.out;
+  EXPECT_NE(two.out.find("\"threads\": 2"), std::string::npos) << two.out;
+  const std::string key = "\"residual\": ";
+  const std::string r1 = one.out.substr(one.out.find(key)), r2 = two.out.substr(two.out.find(key));
+  EXPECT_EQ(r1.substr(0, r1.find(',')), r2.substr(0, r2.find(',')));
+  EXPECT_EQ(run_gab("factor " + path + " --threads 65").exit_code, 2);
+}
+
 TEST(CliTest, FactorMatrixMarketResidualIsTiny) {
   const std::string path = write_temp(
       "spd.mtx", "%%MatrixMarket matrix coordinate real symmetric\n3 3 5\n1 1 4\n2 1 1\n2 2 4\n3 2 1\n3 3 4\n");

@@ -146,6 +146,25 @@ TEST(CodecCliTest, DecodingAtAnotherSimdLevelGivesTheSameAnchors) {
   EXPECT_LT(json_number(diff.out, "linf_rel"), 1e-9);
 }
 
+TEST(CodecCliTest, ThreadCountChangesNeitherTheFileNorTheShape) {
+  // --threads only spreads the factorizations; the bytes and the decoded
+  // coordinates are the same (DESIGN.md: the encoder and decoder compute
+  // bit-identical shapes), here also with huge-page malloc turned off.
+  const std::string in = write_temp("thr.off", torus_off(80, 40));
+  const std::string one = write_temp("thr-1.gab", ""), three = write_temp("thr-3.gab", "");
+  const std::string a = write_temp("thr-a.off", ""), b = write_temp("thr-b.off", "");
+  ASSERT_EQ(run_gab("compress -i " + in + " -o " + one + " --threads 1").exit_code, 0);
+  ASSERT_EQ(run_gab("compress -i " + in + " -o " + three + " --threads 3").exit_code, 0);
+  EXPECT_EQ(read_all(one), read_all(three));
+  ASSERT_EQ(run_gab("decompress -i " + one + " -o " + a + " --threads 3").exit_code, 0);
+  ASSERT_EQ(run_gab("decompress -i " + three + " -o " + b + " --threads 1",
+                    "GLIBC_TUNABLES=glibc.malloc.hugetlb=0").exit_code, 0);
+  EXPECT_EQ(read_all(a), read_all(b));
+  CommandResult r = run_gab("decompress -i " + one + " -o " + a + " --threads 0");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--threads"), std::string::npos) << r.err;
+}
+
 TEST(CodecCliTest, TruncatedFileDecodesItsCompleteChunksWithAWarning) {
   const std::string in = write_temp("cut.off", torus_off(40, 20));
   const std::string gab = write_temp("cut.gab", "");

@@ -49,6 +49,39 @@ TEST(EncodeDecode, RoundTripKeepsConnectivityAndMatchesTheEncodersShape) {
   EXPECT_EQ(info.chunks_present, es.chunks);
 }
 
+TEST(EncodeDecode, FilesAndShapesDoNotDependOnTheThreadCount) {
+  // The decoder must reproduce the encoder's shapes bit for bit, so the
+  // tree-parallel factorization may not change a single rounding: a file
+  // written with any thread count is the same bytes, decoded by any count
+  // to the same coordinates. A torus big enough to have parallel subtrees,
+  // an RMS target so refactorizations and updates both run.
+  const Mesh mesh = bumpy_torus(90, 45);
+  EncodeOptions options;
+  options.target_rms_rel = 2e-3;
+  options.batch_fraction = 0.3;
+  std::vector<uint8_t> files[3];
+  for (int32_t threads = 1; threads <= 3; ++threads) {
+    options.threads = threads;
+    EncodeStats es;
+    files[threads - 1] = encode_or_die(mesh, options, &es);
+    EXPECT_GT(es.chunks, 1);
+  }
+  EXPECT_EQ(files[1], files[0]);
+  EXPECT_EQ(files[2], files[0]);
+  std::vector<double> first;
+  for (int32_t threads = 1; threads <= 3; ++threads) {
+    DecodeOptions decode;
+    decode.threads = threads;
+    DecodeStats ds;
+    const Mesh out = decode_or_die(files[0], decode, &ds);
+    if (threads == 1) {
+      first = out.positions;
+    } else {
+      EXPECT_EQ(out.positions, first) << threads << " threads";
+    }
+  }
+}
+
 TEST(EncodeDecode, EveryChunkPrefixIsTheEncodersShapeAtThatAnchorCount) {
   const Mesh mesh = bumpy_torus(36, 18);
   EncodeOptions options;

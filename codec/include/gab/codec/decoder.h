@@ -27,6 +27,8 @@ struct DecodeOptions {
   // forged fan of triangles from asking for gigabytes.
   int64_t max_matrix_entries = int64_t{1} << 31;
   int64_t max_factor_entries = int64_t{3} << 30;
+  // Threads for the factorizations; the shape is bit-identical for any count.
+  int32_t threads = 1;
   // Called before each chunk is decoded (chunk index, chunks in the file).
   std::function<void(int32_t, int32_t)> progress;
 };

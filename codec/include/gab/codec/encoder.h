@@ -55,6 +55,9 @@ struct EncodeOptions {
   // Conjugate-gradient iterations of the refinement (each two solves):
   // 4 reach within 1% of the converged error on horse (2: +3.6%).
   int refine_iterations = 4;
+  // Threads for the factorizations. The file is byte-identical for any
+  // count (every factor is; see factor_schedule.h).
+  int32_t threads = 1;
   // Called after every reconstruction (anchors so far, relative RMS).
   std::function<void(int32_t, double)> progress;
 };

@@ -25,6 +25,7 @@ struct GreedyOptions {
   // error is a maximum over their 1-ring (so a batch never piles anchors onto
   // one bump), largest 1-ring error mass first (pick_error_maxima).
   double batch_fraction = 0.0;
+  int32_t threads = 1;  // for the factorizations; the anchors do not depend on it
 };
 
 // One point of the error curve: after `anchors` anchors, the vertex RMS and

@@ -65,6 +65,11 @@ class RelaxedReconstruction {
   // column-major, one column per coordinate). Cost: one solve.
   Status solve_system(double* b);
 
+  // Threads for the numeric factorizations (init, add_anchors_refactoring);
+  // call before init. The factor, hence every shape, is bit-identical for
+  // any count (factor_schedule.h): an encoder and a decoder may differ.
+  void set_threads(int32_t threads) { threads_ = threads; }
+
   double weight() const { return weight_; }
   int32_t num_vertices() const { return n_; }
   int32_t num_anchors() const { return static_cast<int32_t>(anchors_.size()); }
@@ -80,6 +85,7 @@ class RelaxedReconstruction {
 
   int32_t n_ = 0;
   double weight_ = 0.0;
+  int32_t threads_ = 1;
   Cholesky chol_;
   CscMatrix matrix_;  // lower triangle of L^T L + w^2 E^T E for the anchors so far
   std::vector<int32_t> anchors_;

@@ -14,6 +14,7 @@
 
 #include "gab/sparse/csc.h"
 #include "gab/sparse/dense_kernels.h"
+#include "gab/sparse/factor_schedule.h"
 #include "gab/sparse/large_buffer.h"
 #include "gab/sparse/status.h"
 #include "gab/sparse/symbolic.h"
@@ -50,6 +51,7 @@ class Cholesky {
   void set_kernels(const DenseKernels& kernels) { kernels_ = &kernels; }
   bool factorized() const { return factorized_; }
   const SymbolicFactor& symbolic() const { return symbolic_; }
+  const FactorSchedule& schedule() const { return schedule_; }
   // The supernode blocks (see SymbolicFactor), symbolic().value_ptr.back()
   // doubles: for inspection and in-place updates.
   const double* values() const { return values_.data(); }
@@ -57,6 +59,7 @@ class Cholesky {
 
  private:
   SymbolicFactor symbolic_;
+  FactorSchedule schedule_;
   const DenseKernels* kernels_ = nullptr;
   bool analyzed_ = false;
   bool factorized_ = false;

@@ -8,22 +8,28 @@
 
 #include "gab/sparse/csc.h"
 #include "gab/sparse/dense_kernels.h"
+#include "gab/sparse/factor_schedule.h"
 #include "gab/sparse/status.h"
 #include "gab/sparse/symbolic.h"
 
 namespace gab {
 
-// Workspace sizes, in elements, for factorize_supernodal.
-int64_t factor_workspace_doubles(const SymbolicFactor& f);  // the update stack
-int64_t factor_workspace_ints(const SymbolicFactor& f);     // maps and child lists
+// Workspace sizes, in elements, for factorize_supernodal with a schedule.
+int64_t factor_workspace_doubles(const FactorSchedule& plan);  // the update stacks
+int64_t factor_workspace_ints(const SymbolicFactor& f,
+                              const FactorSchedule& plan);  // maps and child lists
 
 // Numeric factorization P A P^T = L L^T. `lower` must have the pattern that
 // was analyzed (values may differ). `values` receives the supernode blocks
 // (f.value_ptr[f.num_supernodes] doubles); the strict upper triangle of each
 // diagonal block is left unspecified. A non-positive pivot gives
-// kNotPositiveDefinite naming the column in the original numbering.
-// Time: the factorization's flops, run in the dense kernels `k`.
-Status factorize_supernodal(const SymbolicFactor& f, const CscMatrix& lower,
+// kNotPositiveDefinite naming the column in the original numbering (the
+// first failing pivot in pivot order, whatever the schedule). `plan` (from
+// plan_factor_schedule(f, ...)) says which threads do what; the values are
+// bit-identical for every plan. Time: the factorization's flops, run in the
+// dense kernels `k`, spread over plan.threads threads.
+Status factorize_supernodal(const SymbolicFactor& f, const FactorSchedule& plan,
+                            const CscMatrix& lower,
                             const DenseKernels& k, double* values, double* work,
                             int32_t* iwork);
 

@@ -29,6 +29,10 @@ struct AnalyzeOptions {
   bool relax = true;
   int32_t relax_cols[3] = {4, 16, 48};
   double relax_zeros[3] = {0.8, 0.1, 0.05};
+  // Threads for numeric factorizations (Cholesky; see factor_schedule.h):
+  // independent subtrees run concurrently. The factor is bit-identical for
+  // every count; 1 runs everything on the caller's thread.
+  int32_t threads = 1;
 };
 
 // The analysis of one pattern. Columns are numbered in pivot order

@@ -1,0 +1,50 @@
+// Where each supernode's multifrontal work runs, and where its update matrix
+// lives: the plan that lets independent subtrees of the elimination tree be
+// factored by different threads.
+//
+// Subtree-to-thread mapping (Geist & Ng, "Task scheduling for parallel sparse
+// Cholesky factorization", 1989): starting from the roots, the heaviest
+// subtree is split into its children (its root joining the "top" part) until
+// the subtrees can be dealt to the threads in balance (largest first, each to
+// the least loaded thread). Each thread then factors whole subtrees on its own
+// update stacks, with nothing shared but read-only analysis; the top part runs
+// after them. Every front is assembled from the same children in the same
+// order and factored by the same kernels whatever the thread count, so the
+// factor is bit-identical for every schedule (encoder and decoder of the codec
+// rely on this).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gab/sparse/symbolic.h"
+
+namespace gab {
+
+// Threads a schedule uses at most.
+constexpr int32_t kMaxFactorThreads = 64;
+
+struct FactorSchedule {
+  int32_t threads = 1;  // subtree groups that run concurrently
+  // Supernodes by group, each group in increasing (post)order: groups
+  // 0..threads-1 are the threads' subtrees, group `threads` the top part (the
+  // supernodes above them, run after the subtrees; empty when threads == 1).
+  std::vector<int32_t> order;
+  std::vector<int32_t> group_ptr;  // threads + 2 offsets into order
+  // Offset, in the update-stack buffer, of supernode s's update matrix
+  // ((rows - cols)^2 doubles). Each group has its own pair of stacks (see
+  // supernodal_factor.cpp) in [stack_ptr[g], stack_ptr[g + 1]).
+  std::vector<int64_t> update_offset;
+  std::vector<int64_t> stack_ptr;  // threads + 2
+  // Estimated flops of each group (the balance the split achieved).
+  std::vector<double> group_flops;  // threads + 1
+
+  int64_t stack_doubles() const { return stack_ptr.empty() ? 0 : stack_ptr.back(); }
+};
+
+// The schedule for `threads` threads (clamped to [1, kMaxFactorThreads] and
+// to the number of supernodes). With one thread: every supernode in one group, in order, and
+// the stack of SymbolicFactor::stack_peak doubles. Time O(ns log ns).
+FactorSchedule plan_factor_schedule(const SymbolicFactor& f, int32_t threads);
+
+}  // namespace gab

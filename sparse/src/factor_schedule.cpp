@@ -1,0 +1,143 @@
+// The subtree-to-thread split and the update-stack layout of each group.
+#include "gab/sparse/factor_schedule.h"
+
+#include <algorithm>
+
+namespace gab {
+namespace {
+
+// Flops of supernode s's partial factorization: about the square of each
+// of its columns' counts (the figure SymbolicFactor::flops sums).
+double node_flops(const SymbolicFactor& f, int32_t s) {
+  const double m = f.rows(s);
+  double sum = 0.0;
+  for (int32_t j = 0; j < f.cols(s); ++j) sum += (m - j) * (m - j);
+  return sum;
+}
+
+// Deals subtrees (largest first) to the least loaded of `threads` bins;
+// returns the largest bin's load and writes each subtree's bin.
+double deal(const std::vector<int32_t>& roots, const std::vector<double>& subtree_flops,
+            int32_t threads, std::vector<int32_t>* sorted, std::vector<int32_t>* bin) {
+  *sorted = roots;
+  std::sort(sorted->begin(), sorted->end(), [&](int32_t a, int32_t b) {
+    return subtree_flops[a] != subtree_flops[b] ? subtree_flops[a] > subtree_flops[b] : a < b;
+  });
+  std::vector<double> load(threads, 0.0);
+  bin->resize(sorted->size());
+  for (size_t i = 0; i < sorted->size(); ++i) {
+    const int32_t least =
+        static_cast<int32_t>(std::min_element(load.begin(), load.end()) - load.begin());
+    (*bin)[i] = least;
+    load[least] += subtree_flops[(*sorted)[i]];
+  }
+  return *std::max_element(load.begin(), load.end());
+}
+
+}  // namespace
+
+FactorSchedule plan_factor_schedule(const SymbolicFactor& f, int32_t threads) {
+  const int32_t ns = f.num_supernodes;
+  FactorSchedule plan;
+  plan.threads = std::max(1, std::min({threads, ns, kMaxFactorThreads}));
+  const int32_t t = plan.threads;
+
+  std::vector<int32_t> child_head(ns, -1), child_next(ns, -1), depth(ns, 0);
+  for (int32_t s = ns - 1; s >= 0; --s) {
+    const int32_t parent = f.supernode_parent[s];
+    if (parent == -1) continue;
+    depth[s] = depth[parent] + 1;
+    child_next[s] = child_head[parent];
+    child_head[parent] = s;
+  }
+  std::vector<double> flops(ns), subtree_flops(ns);
+  std::vector<int32_t> first_desc(ns);  // subtree of s = supernodes [first_desc[s], s]
+  for (int32_t s = 0; s < ns; ++s) {
+    flops[s] = node_flops(f, s);
+    subtree_flops[s] = flops[s];
+    first_desc[s] = s;
+  }
+  for (int32_t s = 0; s < ns; ++s) {
+    const int32_t parent = f.supernode_parent[s];
+    if (parent == -1) continue;
+    subtree_flops[parent] += subtree_flops[s];
+    first_desc[parent] = std::min(first_desc[parent], first_desc[s]);
+  }
+
+  // owner[s]: the group that factors s. Split the heaviest subtree until the
+  // deal is balanced, keeping the split with the least critical path (top
+  // part + largest bin); a few hundred splits are plenty for trees whose
+  // top is a handful of separators.
+  std::vector<int32_t> owner(ns, t == 1 ? 0 : t);
+  if (t > 1) {
+    std::vector<int32_t> roots, sorted, bin, best_sorted, best_bin;
+    for (int32_t s = 0; s < ns; ++s) {
+      if (f.supernode_parent[s] == -1) roots.push_back(s);
+    }
+    double top = 0.0, best = -1.0;
+    for (int split = 0; split < 512 && !roots.empty(); ++split) {
+      const double cost = top + deal(roots, subtree_flops, t, &sorted, &bin);
+      if (best < 0.0 || cost < best) {
+        best = cost;
+        best_sorted = sorted;
+        best_bin = bin;
+      }
+      const int32_t heaviest = sorted.front();
+      if (child_head[heaviest] == -1) break;
+      top += flops[heaviest];
+      roots.erase(std::find(roots.begin(), roots.end(), heaviest));
+      for (int32_t c = child_head[heaviest]; c != -1; c = child_next[c]) roots.push_back(c);
+    }
+    for (size_t i = 0; i < best_sorted.size(); ++i) {
+      const int32_t r = best_sorted[i];
+      for (int32_t s = first_desc[r]; s <= r; ++s) owner[s] = best_bin[i];
+    }
+  }
+
+  const int32_t groups = t == 1 ? 1 : t + 1;
+  plan.group_ptr.assign(t + 2, 0);
+  plan.group_flops.assign(t + 1, 0.0);
+  for (int32_t s = 0; s < ns; ++s) {
+    ++plan.group_ptr[owner[s] + 1];
+    plan.group_flops[owner[s]] += flops[s];
+  }
+  for (int32_t g = 0; g <= t; ++g) plan.group_ptr[g + 1] += plan.group_ptr[g];
+  plan.order.resize(ns);
+  {
+    std::vector<int32_t> next(plan.group_ptr.begin(), plan.group_ptr.end() - 1);
+    for (int32_t s = 0; s < ns; ++s) plan.order[next[owner[s]]++] = s;
+  }
+
+  // Each group's two stacks: even-depth updates grow up from the group's
+  // base, odd-depth ones down from its end; a front pops its children of the
+  // same group (the top of the other stack) after writing its own update.
+  // Children of other groups stay where their group left them. Simulate
+  // once for the peak, once more to place every update.
+  plan.update_offset.assign(ns, 0);
+  plan.stack_ptr.assign(t + 2, 0);
+  for (int32_t g = 0; g <= t; ++g) {
+    plan.stack_ptr[g + 1] = plan.stack_ptr[g];
+    if (g >= groups) continue;
+    for (int pass = 0; pass < 2; ++pass) {
+      const int64_t base = plan.stack_ptr[g], end = plan.stack_ptr[g + 1];
+      int64_t top[2] = {0, 0}, peak = 0;
+      for (int32_t i = plan.group_ptr[g]; i < plan.group_ptr[g + 1]; ++i) {
+        const int32_t s = plan.order[i];
+        const int64_t p = f.rows(s) - f.cols(s);
+        const int side = depth[s] & 1;
+        if (pass == 1) plan.update_offset[s] = side == 0 ? base + top[0] : end - top[1] - p * p;
+        top[side] += p * p;
+        peak = std::max(peak, top[0] + top[1]);
+        for (int32_t c = child_head[s]; c != -1; c = child_next[c]) {
+          if (owner[c] != g) continue;
+          const int64_t pc = f.rows(c) - f.cols(c);
+          top[1 - side] -= pc * pc;
+        }
+      }
+      if (pass == 0) plan.stack_ptr[g + 1] = base + peak;
+    }
+  }
+  return plan;
+}
+
+}  // namespace gab
