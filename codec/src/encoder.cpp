@@ -148,7 +148,7 @@ int32_t default_initial_anchors(int32_t n) {
 }
 
 double default_batch_fraction(double flops) {
-  return std::min(0.2, 0.05 * std::pow(std::max(1.0, flops / 2e9), 0.8));
+  return std::min(0.12, 0.05 * std::pow(std::max(1.0, flops / 2e9), 0.8));
 }
 
 double default_chunk_growth(double flops) { return 4.0 * std::pow(std::max(1.0, flops / 2e9), 0.6); }

@@ -255,7 +255,7 @@ TEST(EncodeDecode, DefaultsFollowTheMeasuredRules) {
   // Batches, chunks and the spread set grow only for costly systems.
   EXPECT_DOUBLE_EQ(default_batch_fraction(1e9), 0.05);
   EXPECT_NEAR(default_batch_fraction(4e9), 0.087, 0.001);  // 0.05 * 2^0.8
-  EXPECT_DOUBLE_EQ(default_batch_fraction(2.16e10), 0.2);  // igea: at the cap
+  EXPECT_DOUBLE_EQ(default_batch_fraction(2.16e10), 0.12);  // igea: at the cap
   EXPECT_DOUBLE_EQ(default_chunk_growth(1e9), 4.0);
   EXPECT_NEAR(default_chunk_growth(2.16e10), 16.7, 0.1);
   EXPECT_EQ(default_initial_anchors(11381), 11);

@@ -99,10 +99,12 @@ int32_t default_initial_anchors(int32_t n);
 // The greedy batch fraction for a system whose factorization costs `flops`:
 // 5% (what the reference quality needs; measured 1.78 bits per vertex on
 // horse at 1e-3 against 1.86 / 1.96 / 2.13 at 10 / 20 / 35%) while a
-// refactorization is cheap, growing as (flops / 2e9)^0.8 up to 20% so that
-// large meshes need a bounded number of steps (igea: 20%; at 1e-3 it gave
-// 1.11 bits per vertex in ~3.7 s against 1.16 in ~3.3 s at 33% and 1.08 in
-// 4.1-5.0 s at 15%; 15% is what igea's 13,434-anchor reference quality needs).
+// refactorization is cheap, growing as (flops / 2e9)^0.8 up to 12% so that
+// large meshes need a bounded number of steps. igea sits at the cap; at 1e-3
+// on two threads (tree-parallel factorization) 12% gave 1.058 bits per
+// vertex in 3.0 s, against 1.084 in 2.6-3.1 s at 15%, 1.113 in 2.4-2.5 s at
+// 20% (one thread: 3.8-4.4 s), 1.16 at 33%; at 13,434 anchors and q = 12,
+// 12% / 15% / 20% reach RMS 6.91e-4 / 6.98e-4 / 7.16e-4 (reference 7.02e-4).
 double default_batch_fraction(double flops);
 
 // Chunk growth for a system whose factorization costs `flops`: 4 while a
