@@ -45,7 +45,7 @@ Status Cholesky::solve(double* b, int32_t nrhs, int32_t ldb) {
                          "solve needs nrhs >= 0 and ldb >= n (" + std::to_string(n) + ")");
   }
   if (!solve_rhs_.reserve(static_cast<int64_t>(n) * nrhs) ||
-      !solve_work_.reserve(static_cast<int64_t>(symbolic_.max_front_rows) * nrhs)) {
+      !solve_work_.reserve(static_cast<int64_t>(schedule_.threads) * symbolic_.max_front_rows * nrhs)) {
     return Status::Error(StatusCode::kOutOfMemory, "cannot allocate the solve's workspace");
   }
   const int32_t* perm = symbolic_.perm.data();
@@ -54,10 +54,10 @@ Status Cholesky::solve(double* b, int32_t nrhs, int32_t ldb) {
     double* dst = solve_rhs_.data() + static_cast<int64_t>(r) * n;
     for (int32_t k = 0; k < n; ++k) dst[k] = src[perm[k]];
   }
-  solve_lower_supernodal(symbolic_, values_.data(), solve_rhs_.data(), nrhs, n,
-                         solve_work_.data(), kernels_->level);
-  solve_upper_supernodal(symbolic_, values_.data(), solve_rhs_.data(), nrhs, n,
-                         solve_work_.data(), kernels_->level);
+  solve_lower_scheduled(symbolic_, schedule_, values_.data(), solve_rhs_.data(), nrhs, n,
+                        solve_work_.data(), kernels_->level);
+  solve_upper_scheduled(symbolic_, schedule_, values_.data(), solve_rhs_.data(), nrhs, n,
+                        solve_work_.data(), kernels_->level);
   for (int32_t r = 0; r < nrhs; ++r) {
     const double* src = solve_rhs_.data() + static_cast<int64_t>(r) * n;
     double* dst = b + static_cast<int64_t>(r) * ldb;

@@ -108,6 +108,17 @@ FactorSchedule plan_factor_schedule(const SymbolicFactor& f, int32_t threads) {
     for (int32_t s = 0; s < ns; ++s) plan.order[next[owner[s]]++] = s;
   }
 
+  plan.own_rows.resize(ns);
+  for (int32_t s = 0; s < ns; ++s) {
+    const int32_t k = f.cols(s), p = f.rows(s) - k;
+    int32_t own = p;
+    if (owner[s] != t) {
+      const int32_t* below = f.row_ind.data() + f.row_ptr[s] + k;
+      while (own > 0 && owner[f.supernode_of[below[own - 1]]] == t) --own;
+    }
+    plan.own_rows[s] = own;
+  }
+
   // Each group's two stacks: even-depth updates grow up from the group's
   // base, odd-depth ones down from its end; a front pops its children of the
   // same group (the top of the other stack) after writing its own update.

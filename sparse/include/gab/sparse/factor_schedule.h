@@ -36,6 +36,11 @@ struct FactorSchedule {
   // supernodal_factor.cpp) in [stack_ptr[g], stack_ptr[g + 1]).
   std::vector<int64_t> update_offset;
   std::vector<int64_t> stack_ptr;  // threads + 2
+  // Rows below supernode s's columns that are not in the top part: its
+  // rows in the top part (if any) are the last rows - cols - own_rows[s]
+  // (the top part holds ancestors only). The parallel forward solve adds
+  // those after the groups, in order. rows - cols for top supernodes.
+  std::vector<int32_t> own_rows;
   // Estimated flops of each group (the balance the split achieved).
   std::vector<double> group_flops;  // threads + 1
 

@@ -43,4 +43,14 @@ void solve_lower_supernodal(const SymbolicFactor& f, const double* values, doubl
 void solve_upper_supernodal(const SymbolicFactor& f, const double* values, double* x,
                             int32_t nrhs, int32_t ldx, double* work, SimdLevel level);
 
+// The same solves on plan.threads threads: the schedule's subtree groups
+// concurrently, the top part alone; bit-identical to the serial solves.
+// `work` holds plan.threads * f.max_front_rows * nrhs doubles.
+void solve_lower_scheduled(const SymbolicFactor& f, const FactorSchedule& plan,
+                           const double* values, double* x, int32_t nrhs, int32_t ldx,
+                           double* work, SimdLevel level);
+void solve_upper_scheduled(const SymbolicFactor& f, const FactorSchedule& plan,
+                           const double* values, double* x, int32_t nrhs, int32_t ldx,
+                           double* work, SimdLevel level);
+
 }  // namespace gab
