@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -42,6 +43,8 @@ double median(std::vector<double> v) {
 }
 
 constexpr int kRepeat = 5;
+// gab's threads for factor and solves (--threads T; CHOLMOD stays on one).
+int32_t g_threads = 1;
 constexpr int kUpdates = 1000;
 
 // Single-core copy bandwidth (bytes read + written per second) over a
@@ -98,6 +101,7 @@ void compare(const std::string& path) {
   gab::AnalyzeOptions options;
   options.ordering = gab::Ordering::kGiven;
   options.given_perm = perm;
+  options.threads = g_threads;
   chol.analyze(a, options);
   std::vector<double> x;
   for (int r = 0; r < kRepeat; ++r) {
@@ -238,7 +242,13 @@ void compare(const std::string& path) {
 
 int main(int argc, char** argv) {
   std::vector<std::string> inputs;
-  for (int i = 1; i < argc; ++i) inputs.push_back(argv[i]);
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) == "--threads" && i + 1 < argc) {
+      g_threads = std::atoi(argv[++i]);
+    } else {
+      inputs.push_back(argv[i]);
+    }
+  }
   if (inputs.empty()) {
     for (const char* m : {"bunny-small", "camel-head", "max-planck", "bunny", "horse", "feline",
                           "nefertiti", "igea"}) {
@@ -250,6 +260,7 @@ int main(int argc, char** argv) {
               "solve3 gab s | solve3 CHOLMOD s | ratio | GFLOP/s gab | GFLOP/s CHOLMOD |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (const std::string& path : inputs) compare(path);
+  std::printf("\ngab factor and solves on %d thread(s); CHOLMOD single-threaded.\n", g_threads);
   std::printf("\nAnchor updates (%d by the benchmark rule, w = 1; CHOLMOD on its simplicial LDL^T, "
               "conversion not timed). Times in ms per anchor.\n\n", kUpdates);
   std::printf("| mesh | updown avg | updown max | gab avg | gab max | ratio | updown rank-8 per anchor | "
