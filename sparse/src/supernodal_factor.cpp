@@ -8,11 +8,12 @@
 // then partially factored: POTRF on the diagonal block, TRSM below it, and
 // one SYRK that forms its own update matrix. Update matrices live on two
 // stacks sharing one buffer, at offsets the schedule fixed
-// (factor_schedule.h), so nothing is allocated here: even-depth supernodes push at the low end, odd-depth ones at the
-// high end. A parent's children therefore sit on top of the other stack
-// than the one its own update goes to, so the parent's update is formed in
-// place while the children's are read, then the children are popped — no
-// copy (a single stack would need a memmove per front). Chosen over
+// (factor_schedule.h), so nothing is allocated here: even-depth supernodes
+// push at the low end, odd-depth ones at the high end. A parent's children
+// therefore sit on top of the other stack than the one its own update goes
+// to, so the parent's update is formed in place while the children's are
+// read, then the children are popped — no copy (a single stack would need a
+// memmove per front). Chosen over
 // left-looking because each supernode then does one large SYRK instead of
 // one small GEMM per descendant, which keeps the SIMD kernel busy.
 //
