@@ -42,7 +42,11 @@ FactorSchedule plan_factor_schedule(const SymbolicFactor& f, int32_t threads) {
   plan.threads = std::max(1, std::min({threads, ns, kMaxFactorThreads}));
   const int32_t t = plan.threads;
 
-  std::vector<int32_t> child_head(ns, -1), child_next(ns, -1), depth(ns, 0);
+  std::vector<int32_t>& child_head = plan.child_head;
+  std::vector<int32_t>& child_next = plan.child_next;
+  child_head.assign(ns, -1);
+  child_next.assign(ns, -1);
+  std::vector<int32_t> depth(ns, 0);
   for (int32_t s = ns - 1; s >= 0; --s) {
     const int32_t parent = f.supernode_parent[s];
     if (parent == -1) continue;

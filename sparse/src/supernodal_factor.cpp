@@ -33,10 +33,8 @@ namespace gab {
 int64_t factor_workspace_doubles(const FactorSchedule& plan) { return plan.stack_doubles(); }
 
 int64_t factor_workspace_ints(const SymbolicFactor& f, const FactorSchedule& plan) {
-  // per thread: map (n) + relative indices and their run ends (2 * max
-  // rows); shared: child lists (2 * supernodes)
-  return plan.threads * (static_cast<int64_t>(f.n) + 2 * static_cast<int64_t>(f.max_front_rows)) +
-         2 * static_cast<int64_t>(f.num_supernodes);
+  // per thread: map (n) + relative indices and their run ends (2 * max rows)
+  return plan.threads * (static_cast<int64_t>(f.n) + 2 * static_cast<int64_t>(f.max_front_rows));
 }
 
 namespace {
@@ -48,8 +46,6 @@ struct FrontContext {
   const DenseKernels& kern;
   double* values;
   double* work;
-  const int32_t* child_head;
-  const int32_t* child_next;
 };
 
 // Assembles and partially factors the fronts of one group, in order; map,
@@ -75,7 +71,7 @@ int32_t factor_group(const FrontContext& ctx, int32_t group, int32_t* map, int32
       std::memset(update + static_cast<int64_t>(j) * p + j, 0, sizeof(double) * (p - j));
     }
     // Children in increasing order, whichever group left their updates.
-    for (int32_t c = ctx.child_head[s]; c != -1; c = ctx.child_next[c]) {
+    for (int32_t c = ctx.plan.child_head[s]; c != -1; c = ctx.plan.child_next[c]) {
       const int32_t kc = f.cols(c), pc = f.rows(c) - kc;
       const double* cu = ctx.work + ctx.plan.update_offset[c];
       const int32_t* crows = f.row_ind.data() + f.row_ptr[c] + kc;
@@ -121,20 +117,9 @@ Status factorize_supernodal(const SymbolicFactor& f, const FactorSchedule& plan,
     return Status::Error(StatusCode::kInvalidArgument,
                          "matrix does not have the analyzed pattern (or has no values)");
   }
-  const int32_t ns = f.num_supernodes, threads = plan.threads;
+  const int32_t threads = plan.threads;
   const int64_t per_thread = static_cast<int64_t>(f.n) + 2 * static_cast<int64_t>(f.max_front_rows);
-  int32_t* child_head = iwork + threads * per_thread;
-  int32_t* child_next = child_head + ns;
-  for (int32_t s = 0; s < ns; ++s) child_head[s] = -1;
-  // Children in increasing order: the order of the serial factorization,
-  // which every schedule keeps so the sums are the same.
-  for (int32_t s = ns - 1; s >= 0; --s) {
-    const int32_t parent = f.supernode_parent[s];
-    if (parent == -1) continue;
-    child_next[s] = child_head[parent];
-    child_head[parent] = s;
-  }
-  const FrontContext ctx{f, plan, lower.values.data(), kern, values, work, child_head, child_next};
+  const FrontContext ctx{f, plan, lower.values.data(), kern, values, work};
   auto run = [&](int32_t group, int32_t thread, int32_t* bad_col) {
     int32_t* map = iwork + thread * per_thread;
     return factor_group(ctx, group, map, map + f.n, map + f.n + f.max_front_rows, bad_col);

@@ -41,6 +41,9 @@ struct FactorSchedule {
   // (the top part holds ancestors only). The parallel forward solve adds
   // those after the groups, in order. rows - cols for top supernodes.
   std::vector<int32_t> own_rows;
+  // Children of each supernode in increasing order (the serial assembly
+  // order every schedule keeps): child_head[s], then child_next[c]; -1 ends.
+  std::vector<int32_t> child_head, child_next;
   // Estimated flops of each group (the balance the split achieved).
   std::vector<double> group_flops;  // threads + 1
 
