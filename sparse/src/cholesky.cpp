@@ -12,6 +12,9 @@ Status Cholesky::analyze(const CscMatrix& lower, const AnalyzeOptions& options) 
   GAB_RETURN_IF_ERROR(gab::analyze(lower, options, &symbolic_));
   const int64_t values = symbolic_.value_ptr[symbolic_.num_supernodes];
   schedule_ = plan_factor_schedule(symbolic_, options.threads);
+  // The solves split the tree by their own work (entries, not flops): the
+  // flops' split leaves the solves' groups unbalanced.
+  solve_schedule_ = plan_factor_schedule(symbolic_, options.threads, ScheduleBalance::kSolveEntries);
   const int64_t work = factor_workspace_doubles(schedule_);
   if (!values_.reserve(values) || !work_.reserve(work) ||
       !iwork_.reserve(factor_workspace_ints(symbolic_, schedule_))) {
@@ -45,7 +48,7 @@ Status Cholesky::solve(double* b, int32_t nrhs, int32_t ldb) {
                          "solve needs nrhs >= 0 and ldb >= n (" + std::to_string(n) + ")");
   }
   if (!solve_rhs_.reserve(static_cast<int64_t>(n) * nrhs) ||
-      !solve_work_.reserve(static_cast<int64_t>(schedule_.threads) * symbolic_.max_front_rows * nrhs)) {
+      !solve_work_.reserve(solve_scheduled_work(symbolic_, solve_schedule_, nrhs))) {
     return Status::Error(StatusCode::kOutOfMemory, "cannot allocate the solve's workspace");
   }
   const int32_t* perm = symbolic_.perm.data();
@@ -54,9 +57,9 @@ Status Cholesky::solve(double* b, int32_t nrhs, int32_t ldb) {
     double* dst = solve_rhs_.data() + static_cast<int64_t>(r) * n;
     for (int32_t k = 0; k < n; ++k) dst[k] = src[perm[k]];
   }
-  solve_lower_scheduled(symbolic_, schedule_, values_.data(), solve_rhs_.data(), nrhs, n,
+  solve_lower_scheduled(symbolic_, solve_schedule_, values_.data(), solve_rhs_.data(), nrhs, n,
                         solve_work_.data(), kernels_->level);
-  solve_upper_scheduled(symbolic_, schedule_, values_.data(), solve_rhs_.data(), nrhs, n,
+  solve_upper_scheduled(symbolic_, solve_schedule_, values_.data(), solve_rhs_.data(), nrhs, n,
                         solve_work_.data(), kernels_->level);
   for (int32_t r = 0; r < nrhs; ++r) {
     const double* src = solve_rhs_.data() + static_cast<int64_t>(r) * n;

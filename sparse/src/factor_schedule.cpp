@@ -17,11 +17,11 @@ double node_flops(const SymbolicFactor& f, int32_t s) {
 
 // Deals subtrees (largest first) to the least loaded of `threads` bins;
 // returns the largest bin's load and writes each subtree's bin.
-double deal(const std::vector<int32_t>& roots, const std::vector<double>& subtree_flops,
+double deal(const std::vector<int32_t>& roots, const std::vector<double>& subtree_work,
             int32_t threads, std::vector<int32_t>* sorted, std::vector<int32_t>* bin) {
   *sorted = roots;
   std::sort(sorted->begin(), sorted->end(), [&](int32_t a, int32_t b) {
-    return subtree_flops[a] != subtree_flops[b] ? subtree_flops[a] > subtree_flops[b] : a < b;
+    return subtree_work[a] != subtree_work[b] ? subtree_work[a] > subtree_work[b] : a < b;
   });
   std::vector<double> load(threads, 0.0);
   bin->resize(sorted->size());
@@ -29,14 +29,15 @@ double deal(const std::vector<int32_t>& roots, const std::vector<double>& subtre
     const int32_t least =
         static_cast<int32_t>(std::min_element(load.begin(), load.end()) - load.begin());
     (*bin)[i] = least;
-    load[least] += subtree_flops[(*sorted)[i]];
+    load[least] += subtree_work[(*sorted)[i]];
   }
   return *std::max_element(load.begin(), load.end());
 }
 
 }  // namespace
 
-FactorSchedule plan_factor_schedule(const SymbolicFactor& f, int32_t threads) {
+FactorSchedule plan_factor_schedule(const SymbolicFactor& f, int32_t threads,
+                                    ScheduleBalance balance) {
   const int32_t ns = f.num_supernodes;
   FactorSchedule plan;
   plan.threads = std::max(1, std::min({threads, ns, kMaxFactorThreads}));
@@ -54,17 +55,19 @@ FactorSchedule plan_factor_schedule(const SymbolicFactor& f, int32_t threads) {
     child_next[s] = child_head[parent];
     child_head[parent] = s;
   }
-  std::vector<double> flops(ns), subtree_flops(ns);
+  std::vector<double> work(ns), subtree_work(ns);
   std::vector<int32_t> first_desc(ns);  // subtree of s = supernodes [first_desc[s], s]
   for (int32_t s = 0; s < ns; ++s) {
-    flops[s] = node_flops(f, s);
-    subtree_flops[s] = flops[s];
+    work[s] = balance == ScheduleBalance::kFactorFlops
+                   ? node_flops(f, s)
+                   : static_cast<double>(f.cols(s)) * f.rows(s);
+    subtree_work[s] = work[s];
     first_desc[s] = s;
   }
   for (int32_t s = 0; s < ns; ++s) {
     const int32_t parent = f.supernode_parent[s];
     if (parent == -1) continue;
-    subtree_flops[parent] += subtree_flops[s];
+    subtree_work[parent] += subtree_work[s];
     first_desc[parent] = std::min(first_desc[parent], first_desc[s]);
   }
 
@@ -80,7 +83,7 @@ FactorSchedule plan_factor_schedule(const SymbolicFactor& f, int32_t threads) {
     }
     double top = 0.0, best = -1.0;
     for (int split = 0; split < 512 && !roots.empty(); ++split) {
-      const double cost = top + deal(roots, subtree_flops, t, &sorted, &bin);
+      const double cost = top + deal(roots, subtree_work, t, &sorted, &bin);
       if (best < 0.0 || cost < best) {
         best = cost;
         best_sorted = sorted;
@@ -88,7 +91,7 @@ FactorSchedule plan_factor_schedule(const SymbolicFactor& f, int32_t threads) {
       }
       const int32_t heaviest = sorted.front();
       if (child_head[heaviest] == -1) break;
-      top += flops[heaviest];
+      top += work[heaviest];
       roots.erase(std::find(roots.begin(), roots.end(), heaviest));
       for (int32_t c = child_head[heaviest]; c != -1; c = child_next[c]) roots.push_back(c);
     }
@@ -100,10 +103,10 @@ FactorSchedule plan_factor_schedule(const SymbolicFactor& f, int32_t threads) {
 
   const int32_t groups = t == 1 ? 1 : t + 1;
   plan.group_ptr.assign(t + 2, 0);
-  plan.group_flops.assign(t + 1, 0.0);
+  plan.group_work.assign(t + 1, 0.0);
   for (int32_t s = 0; s < ns; ++s) {
     ++plan.group_ptr[owner[s] + 1];
-    plan.group_flops[owner[s]] += flops[s];
+    plan.group_work[owner[s]] += work[s];
   }
   for (int32_t g = 0; g <= t; ++g) plan.group_ptr[g + 1] += plan.group_ptr[g];
   plan.order.resize(ns);
@@ -121,6 +124,10 @@ FactorSchedule plan_factor_schedule(const SymbolicFactor& f, int32_t threads) {
       while (own > 0 && owner[f.supernode_of[below[own - 1]]] == t) --own;
     }
     plan.own_rows[s] = own;
+  }
+  plan.top_rows_ptr.assign(ns + 1, 0);
+  for (int32_t s = 0; s < ns; ++s) {
+    plan.top_rows_ptr[s + 1] = plan.top_rows_ptr[s] + f.rows(s) - f.cols(s) - plan.own_rows[s];
   }
 
   // Each group's two stacks: even-depth updates grow up from the group's

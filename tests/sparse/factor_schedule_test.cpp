@@ -68,21 +68,34 @@ std::vector<int32_t> owners(const FactorSchedule& plan, int32_t ns) {
 TEST(FactorScheduleTest, GroupsAreWholeSubtreesBelowAnUpwardClosedTop) {
   for (const CscMatrix& a : test_matrices()) {
     const SymbolicFactor f = analysis(a);
-    for (int32_t threads = 2; threads <= 4; ++threads) {
-      const FactorSchedule plan = plan_factor_schedule(f, threads);
-      const int32_t t = plan.threads, ns = f.num_supernodes;
-      EXPECT_EQ(t, std::min(threads, ns));
-      const std::vector<int32_t> owner = owners(plan, ns);
-      for (int32_t s = 0; s < ns; ++s) {
-        ASSERT_NE(owner[s], -1);
-        const int32_t parent = f.supernode_parent[s];
-        if (parent == -1) continue;
-        // A subtree group's supernode has its parent in the same group or
-        // in the top part; the top part's parents are in the top part.
-        if (owner[s] == t) {
-          EXPECT_EQ(owner[parent], t);
-        } else {
-          EXPECT_TRUE(owner[parent] == owner[s] || owner[parent] == t);
+    for (ScheduleBalance balance : {ScheduleBalance::kFactorFlops, ScheduleBalance::kSolveEntries}) {
+      for (int32_t threads = 2; threads <= 4; ++threads) {
+        const FactorSchedule plan = plan_factor_schedule(f, threads, balance);
+        const int32_t t = plan.threads, ns = f.num_supernodes;
+        EXPECT_EQ(t, std::min(threads, ns));
+        const std::vector<int32_t> owner = owners(plan, ns);
+        ASSERT_EQ(plan.top_rows_ptr.size(), static_cast<size_t>(ns) + 1);
+        EXPECT_EQ(plan.top_rows_ptr[0], 0);
+        for (int32_t s = 0; s < ns; ++s) {
+          ASSERT_NE(owner[s], -1);
+          // own_rows splits s's rows below into its group's and the top's
+          // (ancestors come after descendants in the rows).
+          const int32_t k = f.cols(s), p = f.rows(s) - k;
+          const int32_t* below = f.row_ind.data() + f.row_ptr[s] + k;
+          for (int32_t i = 0; i < p; ++i) {
+            const bool in_top = owner[f.supernode_of[below[i]]] == t;
+            EXPECT_EQ(in_top && owner[s] != t, i >= plan.own_rows[s]) << "supernode " << s;
+          }
+          EXPECT_EQ(plan.top_rows_ptr[s + 1] - plan.top_rows_ptr[s], p - plan.own_rows[s]);
+          const int32_t parent = f.supernode_parent[s];
+          if (parent == -1) continue;
+          // A subtree group's supernode has its parent in the same group or
+          // in the top part; the top part's parents are in the top part.
+          if (owner[s] == t) {
+            EXPECT_EQ(owner[parent], t);
+          } else {
+            EXPECT_TRUE(owner[parent] == owner[s] || owner[parent] == t);
+          }
         }
       }
     }
@@ -127,13 +140,16 @@ TEST(FactorScheduleTest, LiveUpdateMatricesNeverShareMemory) {
 TEST(FactorScheduleTest, TwoThreadsShortenTheCriticalPathOfAGrid) {
   // A 2D grid's tree splits under its top separator into halves of equal
   // work: the longer thread plus the top part is well under the whole.
+  // Likewise for the solves' balance, whose top part is lighter still.
   const SymbolicFactor f = analysis(grid_laplacian(120, 120));
-  const FactorSchedule plan = plan_factor_schedule(f, 2);
-  const double total = plan.group_flops[0] + plan.group_flops[1] + plan.group_flops[2];
-  const double critical = std::max(plan.group_flops[0], plan.group_flops[1]) + plan.group_flops[2];
-  EXPECT_LT(critical, 0.75 * total);
-  EXPECT_GT(plan.group_ptr[1] - plan.group_ptr[0], 0);
-  EXPECT_GT(plan.group_ptr[2] - plan.group_ptr[1], 0);
+  for (ScheduleBalance balance : {ScheduleBalance::kFactorFlops, ScheduleBalance::kSolveEntries}) {
+    const FactorSchedule plan = plan_factor_schedule(f, 2, balance);
+    const double total = plan.group_work[0] + plan.group_work[1] + plan.group_work[2];
+    const double critical = std::max(plan.group_work[0], plan.group_work[1]) + plan.group_work[2];
+    EXPECT_LT(critical, 0.75 * total);
+    EXPECT_GT(plan.group_ptr[1] - plan.group_ptr[0], 0);
+    EXPECT_GT(plan.group_ptr[2] - plan.group_ptr[1], 0);
+  }
 }
 
 // The factor's values with `threads` threads and the kernels of `level`.

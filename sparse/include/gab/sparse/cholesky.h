@@ -52,6 +52,7 @@ class Cholesky {
   bool factorized() const { return factorized_; }
   const SymbolicFactor& symbolic() const { return symbolic_; }
   const FactorSchedule& schedule() const { return schedule_; }
+  const FactorSchedule& solve_schedule() const { return solve_schedule_; }
   // The supernode blocks (see SymbolicFactor), symbolic().value_ptr.back()
   // doubles: for inspection and in-place updates.
   const double* values() const { return values_.data(); }
@@ -59,7 +60,8 @@ class Cholesky {
 
  private:
   SymbolicFactor symbolic_;
-  FactorSchedule schedule_;
+  FactorSchedule schedule_;        // the factorization's split (flops)
+  FactorSchedule solve_schedule_;  // the solves' split (entries)
   const DenseKernels* kernels_ = nullptr;
   bool analyzed_ = false;
   bool factorized_ = false;

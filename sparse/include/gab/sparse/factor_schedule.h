@@ -41,18 +41,32 @@ struct FactorSchedule {
   // (the top part holds ancestors only). The parallel forward solve adds
   // those after the groups, in order. rows - cols for top supernodes.
   std::vector<int32_t> own_rows;
+  // Prefix sums over supernodes of those top-part rows (rows - cols -
+  // own_rows[s], 0 for top supernodes): ns + 1 entries. The parallel forward
+  // solve keeps each group supernode's contribution to them at
+  // top_rows_ptr[s] * nrhs in its workspace until the in-order pass adds it.
+  std::vector<int64_t> top_rows_ptr;
   // Children of each supernode in increasing order (the serial assembly
   // order every schedule keeps): child_head[s], then child_next[c]; -1 ends.
   std::vector<int32_t> child_head, child_next;
-  // Estimated flops of each group (the balance the split achieved).
-  std::vector<double> group_flops;  // threads + 1
+  // Estimated work of each group in the units of the balance (ScheduleBalance
+  // below) the split achieved.
+  std::vector<double> group_work;  // threads + 1
 
   int64_t stack_doubles() const { return stack_ptr.empty() ? 0 : stack_ptr.back(); }
 };
 
+// What the split balances: the factorization's flops (about the square of
+// each column's count), or the solves' work (the stored entries, each read
+// once per direction). The two differ most in the top part, where the
+// flops concentrate.
+enum class ScheduleBalance { kFactorFlops, kSolveEntries };
+
 // The schedule for `threads` threads (clamped to [1, kMaxFactorThreads] and
-// to the number of supernodes). With one thread: every supernode in one group, in order, and
-// the stack of SymbolicFactor::stack_peak doubles. Time O(ns log ns).
-FactorSchedule plan_factor_schedule(const SymbolicFactor& f, int32_t threads);
+// to the number of supernodes). With one thread: every supernode in one
+// group, in order, and the stack of SymbolicFactor::stack_peak doubles.
+// Time O(ns log ns).
+FactorSchedule plan_factor_schedule(const SymbolicFactor& f, int32_t threads,
+                                    ScheduleBalance balance = ScheduleBalance::kFactorFlops);
 
 }  // namespace gab

@@ -45,7 +45,8 @@ void solve_upper_supernodal(const SymbolicFactor& f, const double* values, doubl
 
 // The same solves on plan.threads threads: the schedule's subtree groups
 // concurrently, the top part alone; bit-identical to the serial solves.
-// `work` holds plan.threads * f.max_front_rows * nrhs doubles.
+// `work` holds solve_scheduled_work(f, plan, nrhs) doubles.
+int64_t solve_scheduled_work(const SymbolicFactor& f, const FactorSchedule& plan, int32_t nrhs);
 void solve_lower_scheduled(const SymbolicFactor& f, const FactorSchedule& plan,
                            const double* values, double* x, int32_t nrhs, int32_t ldx,
                            double* work, SimdLevel level);
