@@ -25,7 +25,7 @@ namespace gab {
 
 namespace {
 
-constexpr int32_t kRotationBlock = 8;
+constexpr int32_t kRotationBlock = 16;
 
 // Room for one block of rotations (batch: one per column and vector), or
 // one per row of the largest supernode.

@@ -28,13 +28,38 @@ template <int W>
 GAB_INLINE void rotate_rows_body(int32_t p, int32_t ncols, const double* c, const double* s,
                                  double* l, int32_t ld, double* x) {
   using V = Vec<W>;
+  typedef typename V::type T;
   int32_t t = 0;
-  for (; t + W <= p; t += W) {
-    typename V::type xv = V::load(x + t);
+  // Four row chunks at a time: each chunk's x is one chain of dependent
+  // rotations through the run, and four chains keep the pipeline full.
+  for (; t + 4 * W <= p; t += 4 * W) {
+    T x0 = V::load(x + t), x1 = V::load(x + t + W), x2 = V::load(x + t + 2 * W),
+      x3 = V::load(x + t + 3 * W);
     for (int32_t q = 0; q < ncols; ++q) {
       double* lq = l + static_cast<int64_t>(q) * ld + t;
-      const typename V::type lv = V::load(lq);
-      const typename V::type cq = V::splat(c[q]), sq = V::splat(s[q]);
+      const T l0 = V::load(lq), l1 = V::load(lq + W), l2 = V::load(lq + 2 * W),
+              l3 = V::load(lq + 3 * W);
+      const T cq = V::splat(c[q]), sq = V::splat(s[q]);
+      V::store(lq, cq * l0 + sq * x0);
+      V::store(lq + W, cq * l1 + sq * x1);
+      V::store(lq + 2 * W, cq * l2 + sq * x2);
+      V::store(lq + 3 * W, cq * l3 + sq * x3);
+      x0 = cq * x0 - sq * l0;
+      x1 = cq * x1 - sq * l1;
+      x2 = cq * x2 - sq * l2;
+      x3 = cq * x3 - sq * l3;
+    }
+    V::store(x + t, x0);
+    V::store(x + t + W, x1);
+    V::store(x + t + 2 * W, x2);
+    V::store(x + t + 3 * W, x3);
+  }
+  for (; t + W <= p; t += W) {
+    T xv = V::load(x + t);
+    for (int32_t q = 0; q < ncols; ++q) {
+      double* lq = l + static_cast<int64_t>(q) * ld + t;
+      const T lv = V::load(lq);
+      const T cq = V::splat(c[q]), sq = V::splat(s[q]);
       V::store(lq, cq * lv + sq * xv);
       xv = cq * xv - sq * lv;
     }

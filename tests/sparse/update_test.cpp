@@ -160,33 +160,36 @@ TEST(UpdateTest, BadArguments) {
 }
 
 TEST(UpdateTest, AllSimdLevelsGiveBitIdenticalFactors) {
+  // A random pattern, and a grid whose separator supernodes are long
+  // enough for every row-chunk path of the kernels (4 chunks, 1, scalar).
   const std::vector<SimdLevel> levels = supported_levels();
-  const CscMatrix a = random_spd(400, 4.0, 21, 1);
-  std::vector<std::vector<double>> results;
-  for (SimdLevel level : levels) {
-    Cholesky chol;
-    chol.set_kernels(dense_kernels(SimdLevel::kScalar));  // same factor to start from
-    ASSERT_TRUE(chol.analyze(a).ok());
-    ASSERT_TRUE(chol.factorize(a).ok());
-    chol.set_kernels(dense_kernels(level));
-    for (int32_t j = 0; j < 400; j += 13) ASSERT_TRUE(chol.add_anchor(j, 1.5).ok());
-    const int64_t size = chol.symbolic().value_ptr.back();
-    results.emplace_back(chol.values(), chol.values() + size);
-  }
-  // Compare the lower trapezoids (the strict upper triangle of diagonal
-  // blocks is unspecified).
-  const SymbolicFactor* f = nullptr;
-  Cholesky probe;
-  ASSERT_TRUE(probe.analyze(a).ok());
-  f = &probe.symbolic();
-  for (size_t l = 1; l < results.size(); ++l) {
-    for (int32_t s = 0; s < f->num_supernodes; ++s) {
-      const int32_t m = f->rows(s);
-      for (int32_t c = 0; c < f->cols(s); ++c)
-        for (int32_t t = c; t < m; ++t) {
-          const int64_t q = f->value_ptr[s] + static_cast<int64_t>(c) * m + t;
-          ASSERT_EQ(results[l][q], results[0][q]) << simd_level_name(levels[l]);
-        }
+  const CscMatrix matrices[] = {random_spd(400, 4.0, 21, 1), testing_util::grid_laplacian(40, 40)};
+  for (const CscMatrix& a : matrices) {
+    std::vector<std::vector<double>> results;
+    for (SimdLevel level : levels) {
+      Cholesky chol;
+      chol.set_kernels(dense_kernels(SimdLevel::kScalar));  // same factor to start from
+      ASSERT_TRUE(chol.analyze(a).ok());
+      ASSERT_TRUE(chol.factorize(a).ok());
+      chol.set_kernels(dense_kernels(level));
+      for (int32_t j = 0; j < a.ncols; j += 13) ASSERT_TRUE(chol.add_anchor(j, 1.5).ok());
+      const int64_t size = chol.symbolic().value_ptr.back();
+      results.emplace_back(chol.values(), chol.values() + size);
+    }
+    // Compare the lower trapezoids (the strict upper triangle of diagonal
+    // blocks is unspecified).
+    Cholesky probe;
+    ASSERT_TRUE(probe.analyze(a).ok());
+    const SymbolicFactor& f = probe.symbolic();
+    for (size_t l = 1; l < results.size(); ++l) {
+      for (int32_t s = 0; s < f.num_supernodes; ++s) {
+        const int32_t m = f.rows(s);
+        for (int32_t c = 0; c < f.cols(s); ++c)
+          for (int32_t t = c; t < m; ++t) {
+            const int64_t q = f.value_ptr[s] + static_cast<int64_t>(c) * m + t;
+            ASSERT_EQ(results[l][q], results[0][q]) << simd_level_name(levels[l]);
+          }
+      }
     }
   }
 }
