@@ -93,9 +93,10 @@ void count_path(const SymbolicFactor& f, int32_t s, int32_t c0, UpdateStats* st)
 
 // Up to kMaxBatch anchors in one sweep over the union of their paths. The
 // union's supernodes are visited in increasing order (a postorder: every
-// child before its parent); in each, the run starts at the lowest column
-// where any of the vectors enters, and a vector that is zero at a column
-// gets the identity rotation.
+// child before its parent); in each, only the vectors whose paths cross it
+// take part (the others are zero on its columns: their rotations would be
+// the identity), the run starts at the lowest column where any of them
+// enters, and a vector that is still zero at a column gets the identity.
 void add_batch(const SymbolicFactor& f, double* values, const int32_t* js, int32_t nv,
                double weight, SimdLevel level, double* work, int32_t* iwork, UpdateStats* st) {
   const update_detail::UpdateKernels& kern = update_detail::update_kernels(level);
@@ -106,6 +107,7 @@ void add_batch(const SymbolicFactor& f, double* values, const int32_t* js, int32
   // third slice the downdate uses for its path.
   int32_t* list = iwork;
   int32_t* entry = iwork + f.num_supernodes;  // per supernode; -1 when not on the union
+  int32_t* crossing = iwork + 2 * f.num_supernodes;  // bit v: v's path crosses it
   int32_t count = 0;
   for (int32_t v = 0; v < nv; ++v) {
     int32_t col = f.inverse_perm[js[v]];
@@ -113,12 +115,14 @@ void add_batch(const SymbolicFactor& f, double* values, const int32_t* js, int32
     while (true) {
       const int32_t s = f.supernode_of[col];
       const int32_t c0 = col - f.first_col[s];
-      if (entry[s] >= 0) {  // the rest of this path is on the union already
+      if (entry[s] < 0) {
+        entry[s] = c0;
+        crossing[s] = 0;
+        list[count++] = s;
+      } else {
         entry[s] = std::min(entry[s], c0);
-        break;
       }
-      entry[s] = c0;
-      list[count++] = s;
+      crossing[s] |= 1 << v;
       const int32_t k = f.cols(s);
       if (k == f.rows(s)) break;
       col = f.row_ind[f.row_ptr[s] + k];
@@ -131,9 +135,13 @@ void add_batch(const SymbolicFactor& f, double* values, const int32_t* js, int32
     const int32_t k = f.cols(s), m = f.rows(s);
     const int32_t* rows = f.row_ind.data() + f.row_ptr[s];
     double* block = values + f.value_ptr[s];
+    int32_t active[update_detail::kMaxBatch], na = 0;  // the crossing vectors
     for (int32_t v = 0; v < nv; ++v) {
-      double* xv = ws.x + v * n;
-      double* xs = ws.xs + static_cast<int64_t>(v) * ld;
+      if (crossing[s] >> v & 1) active[na++] = v;
+    }
+    for (int32_t a = 0; a < na; ++a) {
+      double* xv = ws.x + active[a] * n;
+      double* xs = ws.xs + static_cast<int64_t>(a) * ld;
       for (int32_t t = c0; t < m; ++t) {
         xs[t] = xv[rows[t]];
         xv[rows[t]] = 0.0;
@@ -144,7 +152,7 @@ void add_batch(const SymbolicFactor& f, double* values, const int32_t* js, int32
       for (int32_t q = 0; q < nb; ++q) {
         const int32_t c = cb + q;
         double* lc = block + static_cast<int64_t>(c) * m;
-        for (int32_t v = 0; v < nv; ++v) {
+        for (int32_t v = 0; v < na; ++v) {
           double* xs = ws.xs + static_cast<int64_t>(v) * ld;
           const double d = lc[c], xc = xs[c];
           double cq = 1.0, sq = 0.0;
@@ -160,23 +168,27 @@ void add_batch(const SymbolicFactor& f, double* values, const int32_t* js, int32
               xs[t] = cq * xs[t] - sq * lv;
             }
           }
-          ws.cs[q * nv + v] = cq;
-          ws.sn[q * nv + v] = sq;
+          ws.cs[q * na + v] = cq;
+          ws.sn[q * na + v] = sq;
         }
       }
       const int32_t below = cb + nb;
-      kern.rotate_rows_batch(m - below, nb, nv, ws.cs, ws.sn,
+      kern.rotate_rows_batch(m - below, nb, na, ws.cs, ws.sn,
                              block + static_cast<int64_t>(cb) * m + below, m, ws.xs + below, ld);
     }
+    const int64_t touched_before = st->touched;
     count_path(f, s, c0, st);
-    if (k == m) continue;
-    for (int32_t v = 0; v < nv; ++v) {
-      double* xv = ws.x + v * n;
-      const double* xs = ws.xs + static_cast<int64_t>(v) * ld;
+    if (k == m) {
+      st->flops += 6.0 * na * (static_cast<double>(st->touched - touched_before) + k - c0);
+      continue;
+    }
+    for (int32_t a = 0; a < na; ++a) {
+      double* xv = ws.x + active[a] * n;
+      const double* xs = ws.xs + static_cast<int64_t>(a) * ld;
       for (int32_t t = k; t < m; ++t) xv[rows[t]] = xs[t];
     }
+    st->flops += 6.0 * na * (static_cast<double>(st->touched - touched_before) + k - c0);
   }
-  st->flops = 6.0 * nv * static_cast<double>(st->touched) + 6.0 * nv * st->path_columns;
 }
 
 }  // namespace
