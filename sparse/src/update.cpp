@@ -103,8 +103,9 @@ void add_batch(const SymbolicFactor& f, double* values, const int32_t* js, int32
   Workspace ws = carve(f, work);
   const int64_t n = f.n;
   const int32_t ld = f.max_front_rows;  // stride between gathered vectors
-  // Integer workspace: list (ns) | entry marks (ns, -1 between calls) | a
-  // third slice the downdate uses for its path.
+  // Integer workspace: list (ns) | entry marks (ns, -1 between calls) |
+  // crossing masks (ns, set when a supernode joins the union; the downdate
+  // uses this slice for its path).
   int32_t* list = iwork;
   int32_t* entry = iwork + f.num_supernodes;  // per supernode; -1 when not on the union
   int32_t* crossing = iwork + 2 * f.num_supernodes;  // bit v: v's path crosses it
@@ -176,18 +177,16 @@ void add_batch(const SymbolicFactor& f, double* values, const int32_t* js, int32
       kern.rotate_rows_batch(m - below, nb, na, ws.cs, ws.sn,
                              block + static_cast<int64_t>(cb) * m + below, m, ws.xs + below, ld);
     }
+    // 6 flops per rotated entry and per rotation, for each crossing vector.
     const int64_t touched_before = st->touched;
     count_path(f, s, c0, st);
-    if (k == m) {
-      st->flops += 6.0 * na * (static_cast<double>(st->touched - touched_before) + k - c0);
-      continue;
-    }
+    st->flops += 6.0 * na * (static_cast<double>(st->touched - touched_before) + k - c0);
+    if (k == m) continue;
     for (int32_t a = 0; a < na; ++a) {
       double* xv = ws.x + active[a] * n;
       const double* xs = ws.xs + static_cast<int64_t>(a) * ld;
       for (int32_t t = k; t < m; ++t) xv[rows[t]] = xs[t];
     }
-    st->flops += 6.0 * na * (static_cast<double>(st->touched - touched_before) + k - c0);
   }
 }
 
