@@ -1,9 +1,11 @@
 // gab study IN... [--ordering amd|natural] [--updates U] [--batch B]
-//                 [--anchors K] [--subdivide K] [--csv F] [--svg F] [--json]
+//                 [--anchors K] [--subdivide K] [--threads T] [--csv F] [--svg F] [--json]
 // Factors each input's benchmark matrix, then adds U anchors by the
 // benchmark update rule (v_t = t * 2654435761 mod n, skipping anchored
 // vertices) through the Givens updater, B at a time, and reports what every
 // update cost against nnz(L), plus the drift from a fresh factorization.
+// --threads (default 1, the figure to set beside single-threaded peers) is
+// what the Cholesky gets: factorization, solves and updates.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -25,7 +27,7 @@ namespace {
 
 const char* kUsage =
     "gab study IN... [--ordering amd|natural] [--updates U] [--batch B] [--anchors K] "
-    "[--subdivide K] [--csv F] [--svg F] [--json]";
+    "[--subdivide K] [--threads T] [--csv F] [--svg F] [--json]";
 
 struct UpdateRecord {
   int64_t first_update;  // 1-based number of the batch's first anchor
@@ -66,7 +68,8 @@ std::vector<int32_t> update_sequence(int32_t n, const std::vector<int32_t>& init
 }
 
 Status study_one(const std::string& path, const std::string& ordering, int64_t updates,
-                 int64_t batch, int64_t anchors, int64_t subdivide, StudyResult* out) {
+                 int64_t batch, int64_t anchors, int64_t subdivide, int64_t threads,
+                 StudyResult* out) {
   BenchmarkSystem sys;
   GAB_RETURN_IF_ERROR(load_benchmark_system(path, static_cast<int32_t>(anchors), &sys,
                                             static_cast<int>(subdivide)));
@@ -74,6 +77,7 @@ Status study_one(const std::string& path, const std::string& ordering, int64_t u
   const int32_t n = a.ncols;
   AnalyzeOptions options;
   options.ordering = ordering == "natural" ? Ordering::kNatural : Ordering::kAmd;
+  options.threads = static_cast<int32_t>(threads);
   Cholesky chol;
   GAB_RETURN_IF_ERROR(chol.analyze(a, options));
   double t0 = now_seconds();
@@ -157,7 +161,7 @@ Status study_one(const std::string& path, const std::string& ordering, int64_t u
   return Status::Ok();
 }
 
-JsonObject summary(const StudyResult& r, int64_t batch) {
+JsonObject summary(const StudyResult& r, int64_t batch, int64_t threads) {
   int64_t anchors = 0, path_max = 0, touched_max = 0;
   double path_sum = 0, touched_sum = 0, super_sum = 0, flops_sum = 0, time_sum = 0, time_max = 0;
   std::vector<double> per_anchor;
@@ -191,6 +195,7 @@ JsonObject summary(const StudyResult& r, int64_t batch) {
   j.add("drift", r.drift);
   j.add("input", r.input);
   j.add("batch", batch);
+  j.add("threads", threads);
   j.add("path_supernodes_avg", super_sum * nb);
   j.add("flops_avg", flops_sum * nb);
   j.add("solve1_s", r.solve1_s);
@@ -271,14 +276,16 @@ std::string svg(const std::vector<StudyResult>& results) {
 
 int run_study(int argc, char** argv) {
   Args args;
-  if (!args.parse(argc, argv, {"--ordering", "--updates", "--batch", "--anchors", "--subdivide", "--csv", "--svg"},
+  if (!args.parse(argc, argv, {"--ordering", "--updates", "--batch", "--anchors", "--subdivide", "--threads",
+                                    "--csv", "--svg"},
                   {"--json"})) {
     return usage_error("study", args.error(), kUsage);
   }
   if (args.positionals().empty()) return usage_error("study", "expected at least one input file", kUsage);
-  int64_t updates = 1000, batch = 1, anchors = 100, subdivide = 0;
+  int64_t updates = 1000, batch = 1, anchors = 100, subdivide = 0, threads = 1;
   if (!args.get_int("--updates", 0, INT32_MAX, &updates) || !args.get_int("--batch", 1, 4096, &batch) ||
-      !args.get_int("--anchors", 1, INT32_MAX, &anchors) || !args.get_int("--subdivide", 0, 6, &subdivide)) {
+      !args.get_int("--anchors", 1, INT32_MAX, &anchors) || !args.get_int("--subdivide", 0, 6, &subdivide) ||
+      !args.get_int("--threads", 1, kMaxFactorThreads, &threads)) {
     return usage_error("study", args.error(), kUsage);
   }
   const std::string ordering = args.get("--ordering", "amd");
@@ -289,9 +296,9 @@ int run_study(int argc, char** argv) {
   std::vector<StudyResult> results;
   for (const std::string& path : args.positionals()) {
     StudyResult r;
-    const Status s = study_one(path, ordering, updates, batch, anchors, subdivide, &r);
+    const Status s = study_one(path, ordering, updates, batch, anchors, subdivide, threads, &r);
     if (!s.ok()) return fail(s.message());
-    const JsonObject j = summary(r, batch);
+    const JsonObject j = summary(r, batch, threads);
     if (json) {
       std::printf("%s\n", j.str().c_str());
     } else {

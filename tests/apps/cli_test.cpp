@@ -122,6 +122,45 @@ TEST(CliStudyTest, JsonCsvAndSvg) {
   EXPECT_EQ(first.rfind("<svg", 0), 0u);
 }
 
+// The value of a JSON number key in one-line output ("" when missing).
+std::string json_value(const std::string& out, const std::string& key) {
+  const size_t at = out.find("\"" + key + "\": ");
+  if (at == std::string::npos) return "";
+  const size_t begin = at + key.size() + 4;
+  return out.substr(begin, out.find_first_of(",}", begin) - begin);
+}
+
+TEST(CliStudyTest, TwoThreadsGiveTheSameUpdatesAndDrift) {
+  // A 7-point Laplacian on a 16^3 grid: separators large enough for the
+  // updater's helper thread to share their supernodes.
+  const int32_t g = 16, n = g * g * g;
+  std::string mtx = "%%MatrixMarket matrix coordinate real symmetric\n";
+  std::string entries;
+  int64_t count = 0;
+  for (int32_t v = 0; v < n; ++v) {
+    const int32_t x = v % g, y = v / g % g, z = v / (g * g);
+    entries += std::to_string(v + 1) + " " + std::to_string(v + 1) + " 6.5\n";
+    ++count;
+    for (int32_t d : {x + 1 < g ? 1 : 0, y + 1 < g ? g : 0, z + 1 < g ? g * g : 0}) {
+      if (d == 0) continue;
+      entries += std::to_string(v + d + 1) + " " + std::to_string(v + 1) + " -1\n";
+      ++count;
+    }
+  }
+  mtx += std::to_string(n) + " " + std::to_string(n) + " " + std::to_string(count) + "\n" + entries;
+  const std::string path = write_temp("grid3d_study.mtx", mtx);
+  const CommandResult one = run_gab("study " + path + " --updates 60 --json");
+  const CommandResult two = run_gab("study " + path + " --updates 60 --threads 2 --json");
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  ASSERT_EQ(two.exit_code, 0) << two.err;
+  EXPECT_EQ(json_value(one.out, "threads"), "1");
+  EXPECT_EQ(json_value(two.out, "threads"), "2");
+  for (const char* key : {"touched_avg", "path_len_avg", "drift"}) {
+    EXPECT_FALSE(json_value(one.out, key).empty()) << key;
+    EXPECT_EQ(json_value(one.out, key), json_value(two.out, key)) << key;
+  }
+}
+
 TEST(CliStudyTest, UpdatesStopWhenEveryVertexIsAnchored) {
   const std::string path = write_temp("octa_all.off", kOctahedron);
   const CommandResult r = run_gab("study " + path + " --anchors 2 --updates 100 --batch 3 --json");
@@ -133,6 +172,7 @@ TEST(CliStudyTest, BadUsage) {
   EXPECT_EQ(run_gab("study").exit_code, 2);
   EXPECT_EQ(run_gab("study a.off --batch 0").exit_code, 2);
   EXPECT_EQ(run_gab("study a.off --ordering metis").exit_code, 2);
+  EXPECT_EQ(run_gab("study a.off --threads 0").exit_code, 2);
   const CommandResult r = run_gab("study /nonexistent.off");
   EXPECT_EQ(r.exit_code, 1);
 }
