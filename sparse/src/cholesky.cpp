@@ -4,14 +4,8 @@
 #include <string>
 
 #include "gab/sparse/supernodal.h"
-#include "update_team.h"
 
 namespace gab {
-
-Cholesky::Cholesky() = default;
-Cholesky::~Cholesky() = default;
-Cholesky::Cholesky(Cholesky&&) noexcept = default;
-Cholesky& Cholesky::operator=(Cholesky&&) noexcept = default;
 
 Status Cholesky::analyze(const CscMatrix& lower, const AnalyzeOptions& options) {
   analyzed_ = factorized_ = false;
@@ -91,27 +85,19 @@ Status Cholesky::prepare_update_workspace() {
 
 Status Cholesky::prepare_update() {
   if (!factorized_) return Status::Error(StatusCode::kInvalidArgument, "update before factorize");
-  // The helper thread: started by the first update, not by analyze (a
-  // Cholesky that only solves never needs it).
-  if (schedule_.threads < 2) {
-    update_team_.reset();
-  } else if (update_team_ == nullptr) {
-    update_team_ = std::make_unique<update_detail::RowTeam>();
-  }
   return update_ready_ ? Status::Ok() : prepare_update_workspace();
 }
 
 Status Cholesky::add_anchor(int32_t j, double weight, UpdateStats* stats) {
   GAB_RETURN_IF_ERROR(prepare_update());
   return add_anchor_supernodal(symbolic_, values_.data(), j, weight, kernels_->level,
-                               update_work_.data(), stats, update_team_.get());
+                               update_work_.data(), stats);
 }
 
 Status Cholesky::add_anchors(const int32_t* j, int32_t count, double weight, UpdateStats* stats) {
   GAB_RETURN_IF_ERROR(prepare_update());
   return add_anchors_supernodal(symbolic_, values_.data(), j, count, weight, kernels_->level,
-                                update_work_.data(), update_iwork_.data(), stats,
-                                update_team_.get());
+                                update_work_.data(), update_iwork_.data(), stats);
 }
 
 Status Cholesky::remove_anchor(int32_t j, double weight, UpdateStats* stats) {

@@ -10,10 +10,9 @@
 // columns c0..k-1 over one dense block. The run is done in blocks of
 // kRotationBlock columns: compute that block's rotations on its small
 // triangle, then apply them to every row below in one SIMD pass, so each
-// stored entry of the trapezoid is read and written once (in a large
-// supernode, with a RowTeam, the rows below are split between two threads).
-// What is left of x below the supernode enters the parent supernode at its
-// row rows[k] (the etree parent of the last column).
+// stored entry of the trapezoid is read and written once. What is left of x
+// below the supernode enters the parent supernode at its row rows[k] (the
+// etree parent of the last column).
 #include "gab/sparse/update.h"
 
 #include <algorithm>
@@ -21,22 +20,17 @@
 #include <string>
 
 #include "update_kernels.h"
-#include "update_team.h"
 
 namespace gab {
 
 namespace {
 
-using update_detail::RowJob;
-using update_detail::RowTeam;
-
 constexpr int32_t kRotationBlock = 16;
 
-// Room for the rotations of a whole supernode (a helper thread may still be
-// applying one run while the next is computed): one per column, times the
-// batch's vectors.
+// Room for one block of rotations (batch: one per column and vector), or
+// one per row of the largest supernode.
 int64_t rotation_slots(const SymbolicFactor& f) {
-  return static_cast<int64_t>(f.max_front_rows) * update_detail::kMaxBatch;
+  return std::max<int64_t>(f.max_front_rows, kRotationBlock * update_detail::kMaxBatch);
 }
 
 // Workspace layout (doubles): x (n * kMaxBatch) | carry | p | sines (n
@@ -90,22 +84,6 @@ int32_t path_supernodes(const SymbolicFactor& f, int32_t col, int32_t* supernode
   }
 }
 
-// One supernode's rotation pass: compute(r) computes run r's rotations on
-// its triangle, then they are applied to the rows below; shared with the
-// team's helper when the supernode is large enough.
-template <class Compute>
-void rotate_supernode(const RowJob& job, RowTeam* team, Compute&& compute) {
-  if (team != nullptr && RowTeam::worth_sharing(job.m, job.k, job.c0) && team->available()) {
-    team->run(job, compute);
-    return;
-  }
-  const int32_t runs = update_detail::run_count(job);
-  for (int32_t r = 0; r < runs; ++r) {
-    compute(r);
-    update_detail::apply_run(job, r, update_detail::run_below(job, r), job.m);
-  }
-}
-
 void count_path(const SymbolicFactor& f, int32_t s, int32_t c0, UpdateStats* st) {
   const int32_t k = f.cols(s), m = f.rows(s);
   st->path_columns += k - c0;
@@ -120,8 +98,7 @@ void count_path(const SymbolicFactor& f, int32_t s, int32_t c0, UpdateStats* st)
 // the identity), the run starts at the lowest column where any of them
 // enters, and a vector that is still zero at a column gets the identity.
 void add_batch(const SymbolicFactor& f, double* values, const int32_t* js, int32_t nv,
-               double weight, SimdLevel level, double* work, int32_t* iwork, UpdateStats* st,
-               RowTeam* team) {
+               double weight, SimdLevel level, double* work, int32_t* iwork, UpdateStats* st) {
   const update_detail::UpdateKernels& kern = update_detail::update_kernels(level);
   Workspace ws = carve(f, work);
   const int64_t n = f.n;
@@ -171,33 +148,35 @@ void add_batch(const SymbolicFactor& f, double* values, const int32_t* js, int32
         xv[rows[t]] = 0.0;
       }
     }
-    // The rotations by column and vector: (c - c0) * na + v.
-    const RowJob job{&kern, block, m, k, c0, kRotationBlock, na, ws.cs, ws.sn, ws.xs, ld};
-    rotate_supernode(job, team, [&](int32_t r) {
-      const int32_t cb = c0 + r * kRotationBlock, end = update_detail::run_below(job, r);
-      for (int32_t c = cb; c < end; ++c) {
+    for (int32_t cb = c0; cb < k; cb += kRotationBlock) {
+      const int32_t nb = k - cb < kRotationBlock ? k - cb : kRotationBlock;
+      for (int32_t q = 0; q < nb; ++q) {
+        const int32_t c = cb + q;
         double* lc = block + static_cast<int64_t>(c) * m;
         for (int32_t v = 0; v < na; ++v) {
           double* xs = ws.xs + static_cast<int64_t>(v) * ld;
           const double d = lc[c], xc = xs[c];
           double cq = 1.0, sq = 0.0;
           if (xc != 0.0) {
-            const double h = std::sqrt(d * d + xc * xc);
-            cq = d / h;
-            sq = xc / h;
-            lc[c] = h;
+            const double r = std::sqrt(d * d + xc * xc);
+            cq = d / r;
+            sq = xc / r;
+            lc[c] = r;
             xs[c] = 0.0;
-            for (int32_t t = c + 1; t < end; ++t) {
+            for (int32_t t = c + 1; t < cb + nb; ++t) {
               const double lv = lc[t];
               lc[t] = cq * lv + sq * xs[t];
               xs[t] = cq * xs[t] - sq * lv;
             }
           }
-          ws.cs[(c - c0) * na + v] = cq;
-          ws.sn[(c - c0) * na + v] = sq;
+          ws.cs[q * na + v] = cq;
+          ws.sn[q * na + v] = sq;
         }
       }
-    });
+      const int32_t below = cb + nb;
+      kern.rotate_rows_batch(m - below, nb, na, ws.cs, ws.sn,
+                             block + static_cast<int64_t>(cb) * m + below, m, ws.xs + below, ld);
+    }
     // 6 flops per rotated entry and per rotation, for each crossing vector.
     const int64_t touched_before = st->touched;
     count_path(f, s, c0, st);
@@ -228,13 +207,13 @@ int64_t update_workspace_ints(const SymbolicFactor& f) {
 
 Status add_anchors_supernodal(const SymbolicFactor& f, double* values, const int32_t* js,
                               int32_t count, double weight, SimdLevel level, double* work,
-                              int32_t* iwork, UpdateStats* stats, RowTeam* team) {
+                              int32_t* iwork, UpdateStats* stats) {
   for (int32_t i = 0; i < count; ++i) GAB_RETURN_IF_ERROR(check_anchor(f, js[i], weight));
   UpdateStats total;
   for (int32_t done = 0; done < count; done += update_detail::kMaxBatch) {
     const int32_t nv = std::min<int32_t>(update_detail::kMaxBatch, count - done);
     UpdateStats st;
-    add_batch(f, values, js + done, nv, weight, level, work, iwork, &st, team);
+    add_batch(f, values, js + done, nv, weight, level, work, iwork, &st);
     total.path_columns += st.path_columns;
     total.path_supernodes += st.path_supernodes;
     total.touched += st.touched;
@@ -245,7 +224,7 @@ Status add_anchors_supernodal(const SymbolicFactor& f, double* values, const int
 }
 
 Status add_anchor_supernodal(const SymbolicFactor& f, double* values, int32_t j, double weight,
-                             SimdLevel level, double* work, UpdateStats* stats, RowTeam* team) {
+                             SimdLevel level, double* work, UpdateStats* stats) {
   GAB_RETURN_IF_ERROR(check_anchor(f, j, weight));
   const update_detail::UpdateKernels& kern = update_detail::update_kernels(level);
   Workspace ws = carve(f, work);
@@ -262,27 +241,30 @@ Status add_anchor_supernodal(const SymbolicFactor& f, double* values, int32_t j,
       ws.xs[t] = ws.x[rows[t]];
       ws.x[rows[t]] = 0.0;
     }
-    // The rotations by column (c - c0), each applied at once to the rest of
-    // its run's small triangle.
-    const RowJob job{&kern, block, m, k, c0, kRotationBlock, 0, ws.cs, ws.sn, ws.xs, 0};
-    rotate_supernode(job, team, [&](int32_t r) {
-      const int32_t cb = c0 + r * kRotationBlock, end = update_detail::run_below(job, r);
-      for (int32_t c = cb; c < end; ++c) {
+    for (int32_t cb = c0; cb < k; cb += kRotationBlock) {
+      const int32_t nb = k - cb < kRotationBlock ? k - cb : kRotationBlock;
+      // The block's rotations, each applied at once to the rest of the
+      // block's own small triangle.
+      for (int32_t q = 0; q < nb; ++q) {
+        const int32_t c = cb + q;
         double* lc = block + static_cast<int64_t>(c) * m;
         const double d = lc[c], xc = ws.xs[c];
-        const double h = std::sqrt(d * d + xc * xc);
-        const double cq = d / h, sq = xc / h;
-        ws.cs[c - c0] = cq;
-        ws.sn[c - c0] = sq;
-        lc[c] = h;
+        const double r = std::sqrt(d * d + xc * xc);
+        const double cq = d / r, sq = xc / r;
+        ws.cs[q] = cq;
+        ws.sn[q] = sq;
+        lc[c] = r;
         ws.xs[c] = 0.0;
-        for (int32_t t = c + 1; t < end; ++t) {
+        for (int32_t t = c + 1; t < cb + nb; ++t) {
           const double lv = lc[t];
           lc[t] = cq * lv + sq * ws.xs[t];
           ws.xs[t] = cq * ws.xs[t] - sq * lv;
         }
       }
-    });
+      const int32_t below = cb + nb;
+      kern.rotate_rows(m - below, nb, ws.cs, ws.sn, block + static_cast<int64_t>(cb) * m + below, m,
+                       ws.xs + below);
+    }
     count_path(f, s, c0, &st);
     if (k == m) break;  // a root: x is fully absorbed
     for (int32_t t = k; t < m; ++t) ws.x[rows[t]] = ws.xs[t];

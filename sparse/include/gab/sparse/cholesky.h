@@ -10,7 +10,6 @@
 #pragma once
 
 #include <cstdint>
-#include <memory>
 #include <vector>
 
 #include "gab/sparse/csc.h"
@@ -25,11 +24,6 @@ namespace gab {
 
 class Cholesky {
  public:
-  Cholesky();
-  ~Cholesky();
-  Cholesky(Cholesky&&) noexcept;
-  Cholesky& operator=(Cholesky&&) noexcept;
-
   // Ordering and symbolic analysis of the lower triangle's pattern; also
   // reserves the factor's storage (kOutOfMemory when it cannot be had).
   Status analyze(const CscMatrix& lower, const AnalyzeOptions& options = AnalyzeOptions());
@@ -45,10 +39,7 @@ class Cholesky {
   // numbering): Givens rotations along the elimination-tree path, no change
   // of structure, no allocation after the first call. Cost: the entries of
   // L on the path (reported in *stats when given). Solves afterwards see the
-  // updated matrix. Analyzed with threads >= 2, the first update starts a
-  // helper thread that rotates part of the rows of the path's large
-  // supernodes (the factor is bit-identical to one thread's); it sleeps
-  // when the updates stop and ends with this object.
+  // updated matrix.
   Status add_anchor(int32_t j, double weight, UpdateStats* stats = nullptr);
   // Batch form of add_anchor: count anchors, swept over the union of their
   // paths up to 8 at a time (stats sum the sweeps).
@@ -81,7 +72,6 @@ class Cholesky {
   LargeBuffer<double> solve_work_;
   LargeBuffer<double> update_work_;  // see update_workspace_doubles
   LargeBuffer<int32_t> update_iwork_;
-  std::unique_ptr<update_detail::RowTeam> update_team_;  // threads >= 2
   bool update_ready_ = false;
   Status prepare_update();
   Status prepare_update_workspace();

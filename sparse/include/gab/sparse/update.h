@@ -14,10 +14,6 @@
 
 namespace gab {
 
-namespace update_detail {
-class RowTeam;  // a second thread for the large supernodes (update_team.h)
-}  // namespace update_detail
-
 // What one update cost.
 struct UpdateStats {
   int32_t path_columns = 0;     // columns of L on the path (rotations)
@@ -35,11 +31,8 @@ int64_t update_workspace_ints(const SymbolicFactor& f);
 
 // Factor of M + w^2 e_j e_j^T from the factor of M (j in the original
 // numbering, w != 0 finite). Cost: the entries of L on the path (stats).
-// With a team, its helper thread rotates part of the rows of the path's
-// large supernodes; the result is bit-identical.
 Status add_anchor_supernodal(const SymbolicFactor& f, double* values, int32_t j, double weight,
-                             SimdLevel level, double* work, UpdateStats* stats,
-                             update_detail::RowTeam* team = nullptr);
+                             SimdLevel level, double* work, UpdateStats* stats);
 
 // Batch form: the factor of M + w^2 sum_i e_{j_i} e_{j_i}^T, in sweeps of
 // up to 8 anchors over the union of their paths (each block of L is read
@@ -48,8 +41,7 @@ Status add_anchor_supernodal(const SymbolicFactor& f, double* values, int32_t j,
 // sweep's union once.
 Status add_anchors_supernodal(const SymbolicFactor& f, double* values, const int32_t* js,
                               int32_t count, double weight, SimdLevel level, double* work,
-                              int32_t* iwork, UpdateStats* stats,
-                              update_detail::RowTeam* team = nullptr);
+                              int32_t* iwork, UpdateStats* stats);
 
 // Factor of M - w^2 e_j e_j^T, by the stable method of LINPACK's dchdd
 // (Saunders 1972; Golub & Van Loan sec. 6.5.4): solve L p = w e_j along the
