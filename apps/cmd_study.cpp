@@ -5,7 +5,8 @@
 // vertices) through the Givens updater, B at a time, and reports what every
 // update cost against nnz(L), plus the drift from a fresh factorization.
 // --threads (default 1, the figure to set beside single-threaded peers) is
-// what the Cholesky gets: factorization, solves and updates.
+// what the Cholesky gets: the factorization and the solves (the updates run
+// on the calling thread).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

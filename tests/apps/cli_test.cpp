@@ -131,8 +131,8 @@ std::string json_value(const std::string& out, const std::string& key) {
 }
 
 TEST(CliStudyTest, TwoThreadsGiveTheSameUpdatesAndDrift) {
-  // A 7-point Laplacian on a 16^3 grid: separators large enough for the
-  // updater's helper thread to share their supernodes.
+  // A 7-point Laplacian on a 16^3 grid, whose top supernodes the two-thread
+  // factorization and solves split.
   const int32_t g = 16, n = g * g * g;
   std::string mtx = "%%MatrixMarket matrix coordinate real symmetric\n";
   std::string entries;
