@@ -14,8 +14,10 @@
 namespace gab {
 namespace {
 
-std::vector<uint8_t> small_file(bool geometry_only, bool refine = false) {
+std::vector<uint8_t> small_file(bool geometry_only, bool refine = false,
+                                FileLayout layout = FileLayout::kLevels) {
   EncodeOptions options;
+  options.layout = layout;
   options.refine = refine;
   options.max_anchors = 24;
   options.initial_anchors = 4;
@@ -44,9 +46,10 @@ void expect_clean(const std::vector<uint8_t>& bytes, const DecodeOptions& option
 
 TEST(FileSafety, EveryByteFlipIsAnErrorOrAValidMesh) {
   const Mesh connectivity = testing_util::bumpy_torus(10, 6);
-  for (int variant : {0, 1, 2}) {  // plain, geometry only, refined
-    const bool geometry_only = variant == 1;
-    const std::vector<uint8_t> file = small_file(geometry_only, variant == 2);
+  for (int variant : {0, 1, 2, 3, 4, 5}) {  // plain, geometry only, refined; levels, then selection order
+    const bool geometry_only = variant % 3 == 1;
+    const FileLayout layout = variant < 3 ? FileLayout::kLevels : FileLayout::kSelectionOrder;
+    const std::vector<uint8_t> file = small_file(geometry_only, variant % 3 == 2, layout);
     DecodeOptions options;
     options.connectivity = geometry_only ? &connectivity : nullptr;
     int errors = 0;
@@ -72,8 +75,10 @@ TEST(FileSafety, EveryByteFlipIsAnErrorOrAValidMesh) {
 }
 
 TEST(FileSafety, EveryTruncationIsAnErrorOrTheCompleteChunks) {
-  for (bool refine : {false, true}) {
-    const std::vector<uint8_t> file = small_file(false, refine);
+  for (int variant : {0, 1, 2, 3}) {  // plain, refined; levels, then selection order
+    const bool refine = variant % 2 == 1;
+    const std::vector<uint8_t> file =
+        small_file(false, refine, variant < 2 ? FileLayout::kLevels : FileLayout::kSelectionOrder);
     GabFileInfo full;
     ASSERT_TRUE(read_gab_info(file.data(), file.size(), &full).ok());
     ASSERT_GE(full.chunks, 3);
