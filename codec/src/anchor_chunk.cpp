@@ -140,7 +140,7 @@ Status AnchorChunkCoder::decode_positions(RangeDecoder* dec, const std::vector<i
   grid->assign(anchors.size() * 3, 0);
   int32_t previous_max = 0;
   Status status = Status::Ok();
-  for (size_t a = 0; a < anchors.size() && status.ok(); ++a) {
+  for (size_t a = 0; a < anchors.size(); ++a) {
     const int32_t v = anchors[a];
     int32_t r[3] = {0, 0, 0};
     double scaled[3] = {0, 0, 0};
@@ -163,8 +163,11 @@ Status AnchorChunkCoder::decode_positions(RangeDecoder* dec, const std::vector<i
       (*grid)[3 * a + c] = static_cast<int32_t>(value);
       previous[c] = static_cast<int32_t>(value);
     }
-    if (status.ok() && dec->overrun()) {
+    // (A garbage residual may be INT32_MIN: stop before taking magnitudes.)
+    if (!status.ok()) break;
+    if (dec->overrun()) {
       status = Status::Error(StatusCode::kParseError, "anchor positions are cut short");
+      break;
     }
     previous_max = max_magnitude(r);
     if (graph) slot_[v] = static_cast<int32_t>(a);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "gab/codec/crc32.h"
 #include "gab/codec/decoder.h"
 #include "gab/codec/encoder.h"
 #include "gab/codec/gab_format.h"
@@ -103,6 +104,44 @@ TEST(FileSafety, EveryTruncationIsAnErrorOrTheCompleteChunks) {
       }
       expect_clean(cut, DecodeOptions(), "length " + std::to_string(length));
     }
+  }
+}
+
+TEST(FileSafety, ForgedPayloadsWithValidChecksumsAreErrorsOrValidMeshes) {
+  // Checksums stop random damage; these bytes get past them: every payload
+  // byte of every chunk changed and its frame's CRC recomputed, so the
+  // decoders (a level plan, subsets, farthest-point levels, positions) see
+  // well-framed garbage.
+  for (FileLayout layout : {FileLayout::kLevels, FileLayout::kSelectionOrder}) {
+    const std::vector<uint8_t> file = small_file(false, true, layout);
+    GabFileInfo info;
+    ASSERT_TRUE(read_gab_info(file.data(), file.size(), &info).ok());
+    size_t at = kGabHeaderBytes + info.connectivity_bytes;  // the first chunk's frame
+    int errors = 0, forged = 0;
+    while (at + kGabFrameBytes <= file.size()) {
+      const size_t length = file[at] | file[at + 1] << 8 | file[at + 2] << 16 | static_cast<size_t>(file[at + 3]) << 24;
+      const size_t payload = at + kGabFrameBytes;
+      ASSERT_LE(payload + length, file.size());
+      for (size_t i = payload; i < payload + length; ++i) {
+        for (uint8_t mask : {0x01, 0x10, 0xFF}) {
+          std::vector<uint8_t> bad = file;
+          bad[i] ^= mask;
+          const uint32_t crc = crc32(bad.data() + payload, length);
+          for (int b = 0; b < 4; ++b) bad[at + 4 + b] = static_cast<uint8_t>(crc >> (8 * b));
+          Mesh out;
+          DecodeStats ds;
+          errors += decode_mesh(bad.data(), bad.size(), DecodeOptions(), &out, &ds).ok() ? 0 : 1;
+          ++forged;
+          expect_clean(bad, DecodeOptions(), "payload byte " + std::to_string(i) + " ^ " + std::to_string(mask));
+          DecodeOptions lod;
+          lod.max_anchors = 9;
+          expect_clean(bad, lod, "level of detail, payload byte " + std::to_string(i));
+        }
+      }
+      at = payload + length;
+    }
+    EXPECT_GT(forged, 300);
+    EXPECT_GT(errors, 0);
   }
 }
 
