@@ -21,7 +21,7 @@ namespace {
 const char* kUsage =
     "gab compress -i IN -o OUT.gab [--anchors K | --error E | --linf E] [--bits Q] [--weight W]\n"
     "             [--geometry-only] [--threads T] [--json]\n"
-    "             (tuning: --batch F --chunk-growth G --initial K --refine)";
+    "             (tuning: --batch F --chunk-growth G --initial K --refine --layout smaller|levels|selection)";
 
 constexpr double kDefaultError = 1e-3;
 
@@ -30,7 +30,7 @@ constexpr double kDefaultError = 1e-3;
 int run_compress(int argc, char** argv) {
   Args args;
   if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--error", "--linf", "--bits", "--weight", "--batch", "--chunk-growth",
-                   "--initial", "--threads"},
+                   "--initial", "--threads", "--layout"},
                   {"--json", "--geometry-only", "--refine"})) {
     return usage_error("compress", args.error(), kUsage);
   }
@@ -56,6 +56,15 @@ int run_compress(int argc, char** argv) {
   options.bits = static_cast<int>(bits);
   options.geometry_only = args.has("--geometry-only");
   options.refine = args.has("--refine");
+  // The chunk layout (encoder.h FileLayout); "selection" files are readable by older builds.
+  const std::string layout = args.get("--layout", "smaller");
+  if (layout == "levels") {
+    options.layout = FileLayout::kLevels;
+  } else if (layout == "selection") {
+    options.layout = FileLayout::kSelectionOrder;
+  } else if (layout != "smaller") {
+    return usage_error("compress", "--layout must be smaller, levels or selection, got '" + layout + "'", kUsage);
+  }
   const bool json = args.has("--json");
   const std::string in = args.get("-i"), out = args.get("-o");
 
@@ -102,6 +111,7 @@ int run_compress(int argc, char** argv) {
     o.add("refined", std::string(stats.refined ? "yes" : "no"));
     o.add("refinement_bytes", static_cast<int64_t>(stats.refinement_bytes));
     o.add("unrefined_rms_rel", stats.unrefined_rms_rel);
+    o.add("levels", std::string(stats.levels ? "yes" : "no"));
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }

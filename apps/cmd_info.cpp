@@ -48,12 +48,14 @@ int run_info(int argc, char** argv) {
     o.add("bpv_geometry", bpv);
     o.add("refined", std::string(info.refined ? "yes" : "no"));
     o.add("refinement_bytes", static_cast<int64_t>(info.refinement_bytes));
+    o.add("levels", std::string(info.levels ? "yes" : "no"));
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }
   std::printf("%s: .gab version %d, %d vertices, %d triangles%s\n", in.c_str(), info.version, info.num_vertices,
               info.num_triangles, info.geometry_only ? " (geometry only: decode with --connectivity MESH)" : "");
-  std::printf("%d anchors in %d chunks%s; q = %d bits, w = %g\n", info.anchors, info.chunks,
+  std::printf("%d anchors in %d chunks%s%s; q = %d bits, w = %g\n", info.anchors, info.chunks,
+              info.levels ? " (chunk 0 codes the anchor set, later chunks are the decoder's levels)" : "",
               info.truncated ? (" (truncated: " + std::to_string(info.chunks_present) + " complete)").c_str() : "",
               info.bits, info.weight);
   std::printf("%zu bytes: geometry %zu (%.3f bits/vertex), connectivity %zu\n", info.bytes, info.geometry_bytes, bpv,

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "anchor_chunk.h"
+#include "anchor_levels.h"
 #include "refinement_chunk.h"
 #include "gab/codec/connectivity_coder.h"
 #include "gab/codec/gab_format.h"
@@ -81,6 +82,156 @@ int64_t matrix_entries_bound(const EdgeGraph& g) {
   return total;
 }
 
+// What the chunk loops build: the reconstruction, the shape that predicts
+// the next chunk, every decoded anchor's grid indices in file order.
+struct ChunkDecoding {
+  ChunkDecoding(const GabHeader& h, const EdgeGraph& g, const DecodeOptions& o, DecodeStats* s)
+      : header(h), graph(g), options(o), stats(s) {
+    wanted = o.max_anchors >= 0 ? std::min(o.max_anchors, h.anchors) : h.anchors;
+  }
+  const GabHeader& header;
+  const EdgeGraph& graph;
+  const DecodeOptions& options;
+  DecodeStats* stats;
+  int32_t wanted = 0;  // anchors to decode (level of detail)
+  RelaxedReconstruction rec;
+  std::vector<double> shape;
+  std::vector<int32_t> file_grid;
+  int32_t decoded = 0;
+};
+
+// Reads chunk `chunk`'s frame: kOk, or a truncation past chunk 0 (sets
+// stats->truncated, *payload null); an error otherwise.
+Status read_chunk_frame(ByteReader* in, int32_t chunk, ChunkDecoding* st, const uint8_t** payload, size_t* size) {
+  if (st->options.progress) st->options.progress(chunk, st->header.chunks);
+  *payload = nullptr;
+  const FrameRead frame = read_framed(in, payload, size);
+  if (frame == FrameRead::kTruncated) {
+    if (chunk == 0) return corrupt("file ends inside chunk 0: no shape to show");
+    st->stats->truncated = true;
+    *payload = nullptr;
+    return Status::Ok();
+  }
+  if (frame == FrameRead::kCorrupt) return corrupt("chunk " + std::to_string(chunk) + " is corrupt (checksum mismatch)");
+  return Status::Ok();
+}
+
+// Anchors `anchors` of chunk `chunk` at grid indices `grid` (3 each) join
+// the reconstruction (chunk 0 factors it); the shape is then solved for if
+// `predict` (another chunk follows).
+Status add_chunk(int32_t chunk, const std::vector<int32_t>& anchors, const std::vector<int32_t>& grid, bool predict,
+                 ChunkDecoding* st) {
+  const Quantizer& q = st->header.quantizer;
+  std::vector<double> coefficients(grid.size());
+  for (size_t i = 0; i < anchors.size(); ++i) {
+    for (int c = 0; c < 3; ++c) coefficients[3 * i + c] = q.dequantize(grid[3 * i + c], c);
+  }
+  const auto t = std::chrono::steady_clock::now();
+  if (chunk == 0) {
+    const Status s = st->rec.init(st->graph, st->header.weight, anchors, coefficients);
+    if (!s.ok()) return corrupt("chunk 0: " + s.message());
+    if (st->rec.cholesky().symbolic().stored_L > st->options.max_factor_entries) {
+      return corrupt("the factor would exceed " + std::to_string(st->options.max_factor_entries) + " entries");
+    }
+    st->stats->factor_s += seconds_since(t);
+  } else {
+    bool refactor = false;
+    const Status s = st->rec.add_anchors_cheapest(anchors, coefficients, &refactor);
+    if (!s.ok()) return corrupt("chunk " + std::to_string(chunk) + ": " + s.message());
+    (refactor ? st->stats->factor_s : st->stats->update_s) += seconds_since(t);
+    st->stats->refactorizations += refactor ? 1 : 0;
+  }
+  st->file_grid.insert(st->file_grid.end(), grid.begin(), grid.end());
+  st->decoded += static_cast<int32_t>(anchors.size());
+  st->stats->chunks = chunk + 1;
+  if (predict) {
+    const auto t_solve = std::chrono::steady_clock::now();
+    GAB_RETURN_IF_ERROR(st->rec.reconstruct(&st->shape));
+    st->stats->solve_s += seconds_since(t_solve);
+  }
+  return Status::Ok();
+}
+
+// The first layout: each chunk its anchors' subset and positions.
+Status decode_selection_chunks(ByteReader* in, AnchorChunkCoder* coder, ChunkDecoding* st) {
+  const GabHeader& header = st->header;
+  const int32_t anchor_chunks = header.anchor_chunks();
+  std::vector<char> anchored(header.num_vertices, 0);
+  for (int32_t chunk = 0; chunk < anchor_chunks && (chunk == 0 || st->decoded < st->wanted); ++chunk) {
+    const uint8_t* payload = nullptr;
+    size_t payload_size = 0;
+    GAB_RETURN_IF_ERROR(read_chunk_frame(in, chunk, st, &payload, &payload_size));
+    if (!payload) break;
+    // Chunk 0 is decoded whole (it anchors every component); later ones up
+    // to the anchors wanted.
+    std::vector<int32_t> anchors, grid;
+    int32_t in_chunk = 0;
+    const Status s = coder->decode(payload, payload_size, anchored, chunk == 0 ? nullptr : st->shape.data(),
+                                   chunk == 0 ? -1 : st->wanted - st->decoded, &anchors, &grid, &in_chunk);
+    if (!s.ok()) return corrupt("chunk " + std::to_string(chunk) + ": " + s.message());
+    if (in_chunk > header.anchors - st->decoded ||
+        (chunk + 1 == anchor_chunks && in_chunk != header.anchors - st->decoded)) {
+      return corrupt("chunk " + std::to_string(chunk) + " holds " + std::to_string(in_chunk) +
+                     " anchors, which does not add up to the header's " + std::to_string(header.anchors));
+    }
+    for (int32_t v : anchors) anchored[v] = 1;
+    const bool more = chunk + 1 < anchor_chunks && st->decoded + static_cast<int32_t>(anchors.size()) < st->wanted;
+    GAB_RETURN_IF_ERROR(add_chunk(chunk, anchors, grid, more, st));
+  }
+  return Status::Ok();
+}
+
+// The level layout: chunk 0 the spread set and the rest's subset, then one
+// level's positions per chunk, the levels worked out here (anchor_levels.h).
+Status decode_level_chunks(ByteReader* in, AnchorChunkCoder* coder, ChunkDecoding* st) {
+  const GabHeader& header = st->header;
+  const uint8_t* payload = nullptr;
+  size_t payload_size = 0;
+  GAB_RETURN_IF_ERROR(read_chunk_frame(in, 0, st, &payload, &payload_size));
+  LevelPlan plan;
+  size_t offset = 0;
+  Status s = parse_level_plan(payload, payload_size, header.anchors, header.anchor_chunks(), &plan, &offset);
+  if (!s.ok()) return corrupt("chunk 0: " + s.message());
+  std::vector<int32_t> spread, grid, rest;
+  s = coder->decode_level_head(payload + offset, payload_size - offset, header.num_vertices, plan, &spread, &grid,
+                               &rest);
+  if (!s.ok()) return corrupt("chunk 0: " + s.message());
+  const std::vector<int32_t> sizes = plan.level_sizes();
+  // The levels a level of detail reaches, and the farthest-point picks they
+  // need (the last level is what the picks leave).
+  size_t needed = 0;
+  int64_t end = plan.spread;
+  while (needed < sizes.size() && end < st->wanted) end += sizes[needed++];
+  const int32_t last = sizes.empty() ? 0 : sizes.back();
+  const int32_t picks = static_cast<int32_t>(std::min<int64_t>(end - plan.spread, plan.rest - last));
+  GAB_RETURN_IF_ERROR(add_chunk(0, spread, grid, needed > 0, st));
+  std::vector<int32_t> order;
+  GAB_RETURN_IF_ERROR(level_order(st->graph, spread, rest, picks, &order));
+  std::vector<char> picked(header.num_vertices, 0);
+  for (int32_t v : order) picked[v] = 1;
+  size_t start = 0;
+  for (size_t k = 0; k < needed; ++k) {
+    const int32_t chunk = static_cast<int32_t>(k + 1);
+    GAB_RETURN_IF_ERROR(read_chunk_frame(in, chunk, st, &payload, &payload_size));
+    if (!payload) break;
+    std::vector<int32_t> level;
+    if (k + 1 < sizes.size()) {
+      level.assign(order.begin() + start, order.begin() + start + sizes[k]);
+      std::sort(level.begin(), level.end());
+    } else {
+      for (int32_t v : rest) {
+        if (!picked[v]) level.push_back(v);
+      }
+    }
+    start += sizes[k];
+    if (static_cast<int32_t>(level.size()) > st->wanted - st->decoded) level.resize(st->wanted - st->decoded);
+    s = coder->decode_level(payload, payload_size, level, st->shape.data(), st->graph, &grid);
+    if (!s.ok()) return corrupt("chunk " + std::to_string(chunk) + ": " + s.message());
+    GAB_RETURN_IF_ERROR(add_chunk(chunk, level, grid, k + 1 < needed, st));
+  }
+  return Status::Ok();
+}
+
 }  // namespace
 
 Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& options, Mesh* mesh, DecodeStats* stats) {
@@ -109,67 +260,18 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
 
   AnchorModels models;
   AnchorChunkCoder coder(header.quantizer, &models);
-  std::vector<char> anchored(n, 0);
-  RelaxedReconstruction rec;
-  rec.set_threads(options.threads);
-  std::vector<double> shape;
-  const int32_t wanted = options.max_anchors >= 0 ? std::min(options.max_anchors, header.anchors) : header.anchors;
-  const int32_t anchor_chunks = header.anchor_chunks();
-  std::vector<int32_t> file_grid;  // every decoded anchor's grid indices, in file order
-  int32_t decoded = 0;
-  for (int32_t chunk = 0; chunk < anchor_chunks && (chunk == 0 || decoded < wanted); ++chunk) {
-    if (options.progress) options.progress(chunk, header.chunks);
-    const uint8_t* payload = nullptr;
-    size_t payload_size = 0;
-    const FrameRead frame = read_framed(&in, &payload, &payload_size);
-    if (frame == FrameRead::kTruncated) {
-      if (chunk == 0) return corrupt("file ends inside chunk 0: no shape to show");
-      stats->truncated = true;
-      break;
-    }
-    if (frame == FrameRead::kCorrupt) {
-      return corrupt("chunk " + std::to_string(chunk) + " is corrupt (checksum mismatch)");
-    }
-    // Chunk 0 is decoded whole (it anchors every component); later ones up
-    // to the anchors wanted.
-    std::vector<int32_t> anchors, grid;
-    int32_t in_chunk = 0;
-    Status s = coder.decode(payload, payload_size, anchored, chunk == 0 ? nullptr : shape.data(),
-                            chunk == 0 ? -1 : wanted - decoded, &anchors, &grid, &in_chunk);
-    if (!s.ok()) return corrupt("chunk " + std::to_string(chunk) + ": " + s.message());
-    if (in_chunk > header.anchors - decoded || (chunk + 1 == anchor_chunks && in_chunk != header.anchors - decoded)) {
-      return corrupt("chunk " + std::to_string(chunk) + " holds " + std::to_string(in_chunk) +
-                     " anchors, which does not add up to the header's " + std::to_string(header.anchors));
-    }
-    std::vector<double> coefficients(grid.size());
-    for (size_t i = 0; i < anchors.size(); ++i) {
-      for (int c = 0; c < 3; ++c) coefficients[3 * i + c] = header.quantizer.dequantize(grid[3 * i + c], c);
-    }
-    const auto t = std::chrono::steady_clock::now();
-    if (chunk == 0) {
-      s = rec.init(graph, header.weight, anchors, coefficients);
-      if (!s.ok()) return corrupt("chunk 0: " + s.message());
-      if (rec.cholesky().symbolic().stored_L > options.max_factor_entries) {
-        return corrupt("the factor would exceed " + std::to_string(options.max_factor_entries) + " entries");
-      }
-      stats->factor_s += seconds_since(t);
-    } else {
-      bool refactor = false;
-      s = rec.add_anchors_cheapest(anchors, coefficients, &refactor);
-      if (!s.ok()) return corrupt("chunk " + std::to_string(chunk) + ": " + s.message());
-      (refactor ? stats->factor_s : stats->update_s) += seconds_since(t);
-      stats->refactorizations += refactor ? 1 : 0;
-    }
-    for (int32_t v : anchors) anchored[v] = 1;
-    file_grid.insert(file_grid.end(), grid.begin(), grid.end());
-    decoded += static_cast<int32_t>(anchors.size());
-    stats->chunks = chunk + 1;
-    if (chunk + 1 < anchor_chunks && decoded < wanted) {  // the next chunk's prediction
-      const auto t_solve = std::chrono::steady_clock::now();
-      GAB_RETURN_IF_ERROR(rec.reconstruct(&shape));
-      stats->solve_s += seconds_since(t_solve);
-    }
+  ChunkDecoding state(header, graph, options, stats);
+  state.rec.set_threads(options.threads);
+  if (header.levels()) {
+    GAB_RETURN_IF_ERROR(decode_level_chunks(&in, &coder, &state));
+  } else {
+    GAB_RETURN_IF_ERROR(decode_selection_chunks(&in, &coder, &state));
   }
+  RelaxedReconstruction& rec = state.rec;
+  std::vector<double>& shape = state.shape;
+  const std::vector<int32_t>& file_grid = state.file_grid;
+  const int32_t decoded = state.decoded;
+  const int32_t anchor_chunks = header.anchor_chunks();
   // The refinement belongs to the whole anchor set: skipped for a level of
   // detail; a file cut inside it still gives the unrefined shape.
   if (header.refined() && !stats->truncated && decoded == header.anchors) {
@@ -222,6 +324,7 @@ Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
   info->weight = header.weight;
   info->geometry_only = header.geometry_only();
   info->refined = header.refined();
+  info->levels = header.levels();
   for (int c = 0; c < 3; ++c) info->box_min[c] = header.quantizer.min[c];
   info->step = header.quantizer.step;
   info->anchors = header.anchors;
@@ -233,6 +336,7 @@ Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
   size_t block_size = 0;
   GAB_RETURN_IF_ERROR(read_connectivity_section(&in, header, &hash, &block, &block_size));
   info->connectivity_bytes = in.offset() - before;
+  std::vector<int32_t> level_anchors;  // level layout: anchors of chunks 1.. (from chunk 0's plan)
   for (int32_t chunk = 0; chunk < header.chunks; ++chunk) {
     const size_t at = in.offset();
     const uint8_t* payload = nullptr;
@@ -243,12 +347,23 @@ Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
       break;
     }
     if (frame == FrameRead::kCorrupt) return corrupt("chunk " + std::to_string(chunk) + " is corrupt (checksum mismatch)");
-    ByteReader chunk_in(payload, payload_size);
-    uint64_t count = 0;
     const bool refinement = chunk == header.anchor_chunks();
-    if (!chunk_in.varint(&count) || (refinement ? count != static_cast<uint64_t>(header.anchors)
-                                                : count < 1 || count > static_cast<uint64_t>(header.anchors))) {
-      return corrupt("chunk " + std::to_string(chunk) + ": anchor count out of range");
+    uint64_t count = 0;
+    if (header.levels() && chunk == 0) {
+      LevelPlan plan;
+      size_t offset = 0;
+      const Status s = parse_level_plan(payload, payload_size, header.anchors, header.anchor_chunks(), &plan, &offset);
+      if (!s.ok()) return corrupt("chunk 0: " + s.message());
+      count = static_cast<uint64_t>(plan.spread);
+      level_anchors = plan.level_sizes();
+    } else if (header.levels() && !refinement) {
+      count = static_cast<uint64_t>(level_anchors[chunk - 1]);  // the plan made anchor_chunks - 1 levels
+    } else {
+      ByteReader chunk_in(payload, payload_size);
+      if (!chunk_in.varint(&count) || (refinement ? count != static_cast<uint64_t>(header.anchors)
+                                                  : count < 1 || count > static_cast<uint64_t>(header.anchors))) {
+        return corrupt("chunk " + std::to_string(chunk) + ": anchor count out of range");
+      }
     }
     if (refinement) {
       info->refinement_bytes = in.offset() - at;

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <string>
 
 #include "anchor_chunk.h"
+#include "anchor_levels.h"
 #include "refinement_chunk.h"
 #include "gab/codec/connectivity_coder.h"
 #include "gab/codec/gab_format.h"
@@ -97,6 +99,18 @@ Status refine_coefficients(RelaxedReconstruction* rec, const Mesh& mesh, const Q
 // the shared meshes), then at what the last try measured.
 constexpr double kExpectedRefinementGain = 1.25;
 
+// The dense regime (see encode_mesh): past this fraction of the vertices as
+// anchors the encoder also tries the grid whose error alone is
+// kDenseGridShare of the RMS target, and keeps the smaller file. bunny-small
+// at 1e-3 (82% anchors at q = 9, whose grid errs 0.61 of the target), level
+// layout without its local correction: grid shares 0.8 / 0.9 / 0.95 / 0.98
+// gave 10.87 / 10.63 / 10.53 / 10.51 bits per vertex against 11.72, with
+// 86-94% anchors. The other shared meshes end at 2-35% anchors, where such a
+// grid costs (0.9 of the target: +1 to +4% on horse, max-planck, bunny,
+// feline and nefertiti; their best shares, 0.7-0.9, gain under 2%).
+constexpr double kDenseAnchorFraction = 0.5;
+constexpr double kDenseGridShare = 0.95;
+
 // Header, connectivity block (or its hash), chunks; sets the byte counts.
 std::vector<uint8_t> assemble_file(const GabHeader& header, const Mesh& mesh,
                                    const std::vector<std::vector<uint8_t>>& chunks, EncodeStats* stats) {
@@ -140,6 +154,81 @@ Box box_of(const Mesh& mesh) {
   return b;
 }
 
+// One layout's anchor chunks, the anchors in the order the file lists them
+// (chunk by chunk, each in vertex order: the refinement's order) and per chunk.
+struct ChunkLayout {
+  std::vector<std::vector<uint8_t>> chunks;
+  std::vector<int32_t> file_order;
+  std::vector<int32_t> chunk_anchors;
+
+  size_t bytes() const {
+    size_t total = 0;
+    for (const std::vector<uint8_t>& c : chunks) total += c.size() + kGabFrameBytes;
+    return total;
+  }
+};
+
+// The level layout (anchor_levels.h) of the anchors `rec` holds, the first
+// `spread_count` of them the spread set; `spread_shape` is the
+// reconstruction from the spread set alone (level 1's prediction). Cost:
+// the decoder's, less one factorization and one solve: levels - 1 solves
+// and updates (or refactorizations).
+Status encode_levels(const RelaxedReconstruction& rec, const EdgeGraph& graph, int32_t spread_count, double growth,
+                     int32_t threads, const std::vector<double>& spread_shape, const Quantizer& quantizer,
+                     const std::vector<int32_t>& grid,
+                     const std::function<std::vector<double>(const std::vector<int32_t>&)>& coefficients_of,
+                     ChunkLayout* out) {
+  const std::vector<int32_t>& all = rec.anchors();
+  std::vector<int32_t> spread(all.begin(), all.begin() + spread_count);
+  std::vector<int32_t> rest(all.begin() + spread_count, all.end());
+  std::sort(spread.begin(), spread.end());
+  std::sort(rest.begin(), rest.end());
+  LevelPlan plan;
+  plan.spread = spread_count;
+  plan.rest = static_cast<int32_t>(rest.size());
+  plan.growth16 = level_growth16(growth);
+  const std::vector<int32_t> sizes = plan.level_sizes();
+  std::vector<int32_t> order;
+  GAB_RETURN_IF_ERROR(level_order(graph, spread, rest, plan.rest - (sizes.empty() ? 0 : sizes.back()), &order));
+  AnchorModels models;
+  AnchorChunkCoder coder(quantizer, &models);
+  out->chunks.push_back(coder.encode_level_head(plan, spread, rest, grid));
+  out->file_order = spread;
+  out->chunk_anchors.push_back(spread_count);
+
+  std::vector<char> picked(static_cast<size_t>(graph.num_vertices()), 0);
+  for (int32_t v : order) picked[v] = 1;
+  RelaxedReconstruction levels;  // the decoder's reconstructions from level 2 on
+  levels.set_threads(threads);
+  std::vector<double> shape;
+  std::vector<int32_t> before = spread, previous;  // before level 2: the spread set and level 1
+  size_t start = 0;
+  for (size_t k = 0; k < sizes.size(); ++k) {
+    std::vector<int32_t> level;
+    if (k + 1 < sizes.size()) {
+      level.assign(order.begin() + start, order.begin() + start + sizes[k]);
+      std::sort(level.begin(), level.end());
+    } else {
+      for (int32_t v : rest) {
+        if (!picked[v]) level.push_back(v);
+      }
+    }
+    start += sizes[k];
+    if (k == 1) {
+      before.insert(before.end(), previous.begin(), previous.end());
+      GAB_RETURN_IF_ERROR(levels.init(graph, rec.weight(), before, coefficients_of(before)));
+    } else if (k > 1) {
+      GAB_RETURN_IF_ERROR(levels.add_anchors_cheapest(previous, coefficients_of(previous)));
+    }
+    if (k > 0) GAB_RETURN_IF_ERROR(levels.reconstruct(&shape));
+    out->chunks.push_back(coder.encode_level(level, grid, k == 0 ? spread_shape.data() : shape.data(), graph));
+    out->file_order.insert(out->file_order.end(), level.begin(), level.end());
+    out->chunk_anchors.push_back(sizes[k]);
+    previous = std::move(level);
+  }
+  return Status::Ok();
+}
+
 }  // namespace
 
 int32_t default_initial_anchors(int32_t n) {
@@ -153,6 +242,8 @@ double default_batch_fraction(double flops) {
 
 double default_chunk_growth(double flops) { return 4.0 * std::pow(std::max(1.0, flops / 2e9), 0.6); }
 
+double default_level_growth(double flops) { return 2.0 * std::pow(std::max(1.0, flops / 2e9), 0.6); }
+
 int default_bits(double extent_over_diagonal, double target_rms_rel, double target_linf_rel) {
   if (!(target_rms_rel > 0) && !(target_linf_rel > 0)) return 12;
   for (int q = kGabMinBits; q < kGabMaxBits; ++q) {
@@ -164,22 +255,18 @@ int default_bits(double extent_over_diagonal, double target_rms_rel, double targ
   return kGabMaxBits;
 }
 
-Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* file, EncodeStats* stats) {
-  const auto start = std::chrono::steady_clock::now();
-  GAB_RETURN_IF_ERROR(check_options(options));
-  GAB_RETURN_IF_ERROR(validate_mesh(mesh, "mesh"));
+namespace {
+
+// Everything after the grid: greedy anchors, chunks, file. Sets every stat
+// but encode_s.
+Status encode_on_grid(const Mesh& mesh, const EncodeOptions& options, const Box& box, const Quantizer& quantizer,
+                      int bits, std::vector<uint8_t>* file, EncodeStats* stats) {
   const int32_t n = mesh.num_vertices();
   *stats = EncodeStats();
   stats->num_vertices = n;
   stats->num_triangles = mesh.num_triangles();
-
-  // The grid, and every vertex's quantized position: what an anchor sends.
-  const Box box = box_of(mesh);
-  const int bits = options.bits != 0 ? options.bits
-                                     : default_bits(box.diagonal > 0 ? box.extent / box.diagonal : 1.0,
-                                                    options.target_rms_rel, options.target_linf_rel);
   stats->bits = bits;
-  const Quantizer quantizer = Quantizer::for_box(box.lo, box.hi, bits);
+  // Every vertex's quantized position: what an anchor sends.
   std::vector<int32_t> grid(static_cast<size_t>(n) * 3);
   for (int32_t v = 0; v < n; ++v) {
     for (int c = 0; c < 3; ++c) grid[3 * static_cast<size_t>(v) + c] = quantizer.quantize(mesh.positions[3 * static_cast<size_t>(v) + c], c);
@@ -211,25 +298,27 @@ Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<u
   GAB_RETURN_IF_ERROR(rec.init(graph, options.weight, chosen, coefficients_of(chosen)));
   const double fraction = options.batch_fraction >= 0 ? options.batch_fraction
                                                       : default_batch_fraction(rec.cholesky().symbolic().flops);
-  const double growth = options.chunk_growth > 0 ? options.chunk_growth
-                                                 : default_chunk_growth(rec.cholesky().symbolic().flops);
+  const double flops = rec.cholesky().symbolic().flops;
+  const double growth = options.chunk_growth > 0 ? options.chunk_growth : default_chunk_growth(flops);
+  const double level_growth = options.chunk_growth > 0 ? options.chunk_growth : default_level_growth(flops);
 
+  // The first layout is coded as the greedy loop goes (each chunk is
+  // predicted by the shape when it opened); the level layout after it.
   AnchorModels models;
   AnchorChunkCoder coder(quantizer, &models);
   std::vector<char> coded(n, 0);  // anchored by the chunks written so far
-  std::vector<std::vector<uint8_t>> chunks;
-  std::vector<int32_t> file_order;  // anchors as the file lists them
+  ChunkLayout selection;
   auto close_chunk = [&](std::vector<int32_t> anchors, const double* prediction) {
     std::sort(anchors.begin(), anchors.end());
-    file_order.insert(file_order.end(), anchors.begin(), anchors.end());
-    chunks.push_back(coder.encode(anchors, coded, grid, prediction));
+    selection.file_order.insert(selection.file_order.end(), anchors.begin(), anchors.end());
+    selection.chunks.push_back(coder.encode(anchors, coded, grid, prediction));
     for (int32_t v : anchors) coded[v] = 1;
-    stats->chunk_anchors.push_back(static_cast<int32_t>(anchors.size()));
+    selection.chunk_anchors.push_back(static_cast<int32_t>(anchors.size()));
   };
   close_chunk(chosen, nullptr);
 
   const double scale = box.diagonal > 0 ? 1.0 / box.diagonal : 1.0;
-  std::vector<double> shape, prediction, error2(n);
+  std::vector<double> shape, prediction, spread_shape, error2(n);
   std::vector<int32_t> open;  // anchors of the chunk being gathered
   int32_t chunk_opened_at = rec.num_anchors();
   double rms_rel = 0, linf_rel = 0;
@@ -252,6 +341,7 @@ Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<u
     linf_rel = distance.linf * scale;
     stats->curve.push_back({rec.num_anchors(), rms_rel, linf_rel});
     if (options.progress) options.progress(rec.num_anchors(), rms_rel);
+    if (spread_shape.empty()) spread_shape = shape;  // level 1's prediction
     if (open.empty()) prediction = shape;  // what the decoder will hold when the next chunk starts
     const bool rms_met = target > 0 && rms_rel <= target;
     const bool linf_met = options.target_linf_rel > 0 && linf_rel <= options.target_linf_rel;
@@ -284,6 +374,22 @@ Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<u
     }
   }
   if (!open.empty()) close_chunk(open, prediction.data());
+  // The level layout unless the selection order codes smaller (it can on
+  // small smooth meshes, whose greedy order predicts best and whose extra
+  // levels' frames weigh; never on the shared meshes).
+  ChunkLayout level_layout;
+  const bool try_levels = options.layout != FileLayout::kSelectionOrder;
+  if (try_levels) {
+    GAB_RETURN_IF_ERROR(encode_levels(rec, graph, static_cast<int32_t>(chosen.size()), level_growth, options.threads,
+                                      spread_shape, quantizer, grid, coefficients_of, &level_layout));
+  }
+  const bool levels = options.layout == FileLayout::kLevels ||
+                      (try_levels && level_layout.bytes() <= selection.bytes());
+  ChunkLayout& layout = levels ? level_layout : selection;
+  std::vector<std::vector<uint8_t>>& chunks = layout.chunks;
+  const std::vector<int32_t>& file_order = layout.file_order;
+  stats->chunk_anchors = layout.chunk_anchors;
+  stats->levels = levels;
   stats->unrefined_rms_rel = rms_rel;
   if (refined) {
     // Corrections in file order: chunk by chunk, each in vertex order.
@@ -305,7 +411,8 @@ Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<u
   if (options.max_anchors > 0 && options.target_rms_rel <= 0 && options.target_linf_rel <= 0) stats->target_met = true;
 
   GabHeader header;
-  header.flags = static_cast<uint8_t>((options.geometry_only ? kGabFlagGeometryOnly : 0) | (refined ? kGabFlagRefined : 0));
+  header.flags = static_cast<uint8_t>((options.geometry_only ? kGabFlagGeometryOnly : 0) |
+                                      (refined ? kGabFlagRefined : 0) | (levels ? kGabFlagLevels : 0));
   header.bits = bits;
   header.num_vertices = n;
   header.num_triangles = mesh.num_triangles();
@@ -318,6 +425,50 @@ Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<u
   stats->chunks = header.chunks;
   stats->rms_rel = rms_rel;
   stats->linf_rel = linf_rel;
+  return Status::Ok();
+}
+
+// The grid of the dense regime: its error alone kDenseGridShare of the RMS
+// target, at the fewest bits that cover the box (the step is the file's,
+// not necessarily the longest side over 2^q - 1).
+Quantizer dense_grid(const Box& box, double target_rms_rel, int* bits) {
+  // A grid of step s errs s / 2 in RMS (uniform error on three axes).
+  const double step = 2 * kDenseGridShare * target_rms_rel * box.diagonal;
+  *bits = kGabMinBits;
+  while (*bits < kGabMaxBits && static_cast<double>((int64_t{1} << *bits) - 1) * step < box.extent) ++*bits;
+  Quantizer q = Quantizer::for_box(box.lo, box.hi, *bits);
+  q.step = std::max(q.step, step);
+  return q;
+}
+
+}  // namespace
+
+Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* file, EncodeStats* stats) {
+  const auto start = std::chrono::steady_clock::now();
+  GAB_RETURN_IF_ERROR(check_options(options));
+  GAB_RETURN_IF_ERROR(validate_mesh(mesh, "mesh"));
+  const Box box = box_of(mesh);
+  const int bits = options.bits != 0 ? options.bits
+                                     : default_bits(box.diagonal > 0 ? box.extent / box.diagonal : 1.0,
+                                                    options.target_rms_rel, options.target_linf_rel);
+  const Quantizer quantizer = Quantizer::for_box(box.lo, box.hi, bits);
+  GAB_RETURN_IF_ERROR(encode_on_grid(mesh, options, box, quantizer, bits, file, stats));
+  // Dense regime: most vertices became anchors, so nearly every vertex pays
+  // for the grid; a coarser one, with a few more anchors, may cost less.
+  const bool dense = stats->anchors > kDenseAnchorFraction * mesh.num_vertices();
+  if (dense && options.bits == 0 && options.target_rms_rel > 0 && box.diagonal > 0) {
+    int coarse_bits = 0;
+    const Quantizer coarse = dense_grid(box, options.target_rms_rel, &coarse_bits);
+    if (coarse.step > quantizer.step) {
+      std::vector<uint8_t> other;
+      EncodeStats other_stats;
+      GAB_RETURN_IF_ERROR(encode_on_grid(mesh, options, box, coarse, coarse_bits, &other, &other_stats));
+      if (other_stats.target_met && other.size() < file->size()) {
+        *file = std::move(other);
+        *stats = std::move(other_stats);
+      }
+    }
+  }
   stats->encode_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return Status::Ok();
 }

@@ -54,7 +54,7 @@ Status read_gab_header(ByteReader* in, size_t file_size, GabHeader* h) {
   const size_t covered = in->offset();
   if (!in->u32(&crc)) return header_error("file ends inside the header");
   if (crc != crc32(raw, covered)) return header_error("checksum mismatch (the header is corrupt)");
-  if ((flags & ~(kGabFlagGeometryOnly | kGabFlagRefined)) != 0 || zero != 0) return header_error("unknown flags");
+  if ((flags & ~(kGabFlagGeometryOnly | kGabFlagRefined | kGabFlagLevels)) != 0 || zero != 0) return header_error("unknown flags");
   if (bits < kGabMinBits || bits > kGabMaxBits) return header_error("bits " + std::to_string(bits) + " out of range");
   if (n < 1 || n > 0x7FFFFFFFu || faces < 1 || faces > 0x7FFFFFFFu / 3) {
     return header_error("vertex or triangle count out of range");

@@ -83,10 +83,13 @@ TEST(EncodeDecode, FilesAndShapesDoNotDependOnTheThreadCount) {
 }
 
 TEST(EncodeDecode, EveryChunkPrefixIsTheEncodersShapeAtThatAnchorCount) {
+  // In selection order a chunk prefix is a point of the greedy curve (the
+  // level layout's prefixes: level_layout_test.cpp).
   const Mesh mesh = bumpy_torus(36, 18);
   EncodeOptions options;
   options.max_anchors = 120;
   options.chunk_growth = 1.5;
+  options.layout = FileLayout::kSelectionOrder;
   EncodeStats es;
   const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
   int32_t k = 0;
@@ -109,23 +112,26 @@ TEST(EncodeDecode, EveryChunkPrefixIsTheEncodersShapeAtThatAnchorCount) {
 
 TEST(EncodeDecode, PartialChunkDecodesThatManyAnchorsAndChunkZeroWhole) {
   const Mesh mesh = bumpy_torus(30, 16);
-  EncodeOptions options;
-  options.max_anchors = 60;
-  options.initial_anchors = 10;
-  EncodeStats es;
-  const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
-  ASSERT_EQ(es.chunk_anchors[0], 10);
-  DecodeOptions d;
-  d.max_anchors = 3;  // below chunk 0: chunk 0 still comes whole
-  DecodeStats ds;
-  decode_or_die(file, d, &ds);
-  EXPECT_EQ(ds.anchors, 10);
-  d.max_anchors = 13;
-  decode_or_die(file, d, &ds);
-  EXPECT_EQ(ds.anchors, 13);
-  d.max_anchors = 1000;
-  decode_or_die(file, d, &ds);
-  EXPECT_EQ(ds.anchors, 60);
+  for (FileLayout layout : {FileLayout::kSelectionOrder, FileLayout::kLevels}) {
+    EncodeOptions options;
+    options.max_anchors = 60;
+    options.initial_anchors = 10;
+    options.layout = layout;
+    EncodeStats es;
+    const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
+    ASSERT_EQ(es.chunk_anchors[0], 10);
+    DecodeOptions d;
+    d.max_anchors = 3;  // below chunk 0: chunk 0 still comes whole
+    DecodeStats ds;
+    decode_or_die(file, d, &ds);
+    EXPECT_EQ(ds.anchors, 10);
+    d.max_anchors = 13;
+    decode_or_die(file, d, &ds);
+    EXPECT_EQ(ds.anchors, 13);
+    d.max_anchors = 1000;
+    decode_or_die(file, d, &ds);
+    EXPECT_EQ(ds.anchors, 60);
+  }
 }
 
 TEST(EncodeDecode, RmsAndLinfTargetsStopTheLoop) {
@@ -258,6 +264,8 @@ TEST(EncodeDecode, DefaultsFollowTheMeasuredRules) {
   EXPECT_DOUBLE_EQ(default_batch_fraction(2.16e10), 0.12);  // igea: at the cap
   EXPECT_DOUBLE_EQ(default_chunk_growth(1e9), 4.0);
   EXPECT_NEAR(default_chunk_growth(2.16e10), 16.7, 0.1);
+  EXPECT_DOUBLE_EQ(default_level_growth(1e9), 2.0);
+  EXPECT_NEAR(default_level_growth(2.16e10), 8.35, 0.05);
   EXPECT_EQ(default_initial_anchors(11381), 11);
   EXPECT_EQ(default_initial_anchors(134345), 2606);
   EXPECT_EQ(default_initial_anchors(1000000), 20000);  // the n / 50 cap

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "gab/codec/crc32.h"
 #include "gab/codec/decoder.h"
 #include "gab/codec/encoder.h"
 #include "gab/codec/gab_format.h"
@@ -14,8 +15,10 @@
 namespace gab {
 namespace {
 
-std::vector<uint8_t> small_file(bool geometry_only, bool refine = false) {
+std::vector<uint8_t> small_file(bool geometry_only, bool refine = false,
+                                FileLayout layout = FileLayout::kLevels) {
   EncodeOptions options;
+  options.layout = layout;
   options.refine = refine;
   options.max_anchors = 24;
   options.initial_anchors = 4;
@@ -44,9 +47,10 @@ void expect_clean(const std::vector<uint8_t>& bytes, const DecodeOptions& option
 
 TEST(FileSafety, EveryByteFlipIsAnErrorOrAValidMesh) {
   const Mesh connectivity = testing_util::bumpy_torus(10, 6);
-  for (int variant : {0, 1, 2}) {  // plain, geometry only, refined
-    const bool geometry_only = variant == 1;
-    const std::vector<uint8_t> file = small_file(geometry_only, variant == 2);
+  for (int variant : {0, 1, 2, 3, 4, 5}) {  // plain, geometry only, refined; levels, then selection order
+    const bool geometry_only = variant % 3 == 1;
+    const FileLayout layout = variant < 3 ? FileLayout::kLevels : FileLayout::kSelectionOrder;
+    const std::vector<uint8_t> file = small_file(geometry_only, variant % 3 == 2, layout);
     DecodeOptions options;
     options.connectivity = geometry_only ? &connectivity : nullptr;
     int errors = 0;
@@ -72,8 +76,10 @@ TEST(FileSafety, EveryByteFlipIsAnErrorOrAValidMesh) {
 }
 
 TEST(FileSafety, EveryTruncationIsAnErrorOrTheCompleteChunks) {
-  for (bool refine : {false, true}) {
-    const std::vector<uint8_t> file = small_file(false, refine);
+  for (int variant : {0, 1, 2, 3}) {  // plain, refined; levels, then selection order
+    const bool refine = variant % 2 == 1;
+    const std::vector<uint8_t> file =
+        small_file(false, refine, variant < 2 ? FileLayout::kLevels : FileLayout::kSelectionOrder);
     GabFileInfo full;
     ASSERT_TRUE(read_gab_info(file.data(), file.size(), &full).ok());
     ASSERT_GE(full.chunks, 3);
@@ -98,6 +104,44 @@ TEST(FileSafety, EveryTruncationIsAnErrorOrTheCompleteChunks) {
       }
       expect_clean(cut, DecodeOptions(), "length " + std::to_string(length));
     }
+  }
+}
+
+TEST(FileSafety, ForgedPayloadsWithValidChecksumsAreErrorsOrValidMeshes) {
+  // Checksums stop random damage; these bytes get past them: every payload
+  // byte of every chunk changed and its frame's CRC recomputed, so the
+  // decoders (a level plan, subsets, farthest-point levels, positions) see
+  // well-framed garbage.
+  for (FileLayout layout : {FileLayout::kLevels, FileLayout::kSelectionOrder}) {
+    const std::vector<uint8_t> file = small_file(false, true, layout);
+    GabFileInfo info;
+    ASSERT_TRUE(read_gab_info(file.data(), file.size(), &info).ok());
+    size_t at = kGabHeaderBytes + info.connectivity_bytes;  // the first chunk's frame
+    int errors = 0, forged = 0;
+    while (at + kGabFrameBytes <= file.size()) {
+      const size_t length = file[at] | file[at + 1] << 8 | file[at + 2] << 16 | static_cast<size_t>(file[at + 3]) << 24;
+      const size_t payload = at + kGabFrameBytes;
+      ASSERT_LE(payload + length, file.size());
+      for (size_t i = payload; i < payload + length; ++i) {
+        for (uint8_t mask : {0x01, 0x10, 0xFF}) {
+          std::vector<uint8_t> bad = file;
+          bad[i] ^= mask;
+          const uint32_t crc = crc32(bad.data() + payload, length);
+          for (int b = 0; b < 4; ++b) bad[at + 4 + b] = static_cast<uint8_t>(crc >> (8 * b));
+          Mesh out;
+          DecodeStats ds;
+          errors += decode_mesh(bad.data(), bad.size(), DecodeOptions(), &out, &ds).ok() ? 0 : 1;
+          ++forged;
+          expect_clean(bad, DecodeOptions(), "payload byte " + std::to_string(i) + " ^ " + std::to_string(mask));
+          DecodeOptions lod;
+          lod.max_anchors = 9;
+          expect_clean(bad, lod, "level of detail, payload byte " + std::to_string(i));
+        }
+      }
+      at = payload + length;
+    }
+    EXPECT_GT(forged, 300);
+    EXPECT_GT(errors, 0);
   }
 }
 

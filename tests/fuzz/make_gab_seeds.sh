@@ -5,8 +5,11 @@
 # Each seed is one options byte (see gab_fuzzer.cpp) then a file made from
 # the 10 x 6 torus of gab_fuzz_mesh.h. Only for a deliberate format change
 # (bump kGabVersion too) — then update the pinned numbers in the golden test.
-# (torus-refined was added later, with format flag bit 1, by running just
-# its lines: the older seeds pin what the first encoder wrote.)
+# (torus-refined was added later, with format flag bit 1, and the
+# torus-levels seeds later still, with flag bit 2, by running just their
+# lines: the older seeds pin what the first encoder wrote; torus-coarse,
+# made before the greedy batches ranked by error mass, no longer comes out
+# byte for byte, so keep the committed one.)
 set -euo pipefail
 gab="$1"
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -29,13 +32,18 @@ with open(sys.argv[1], "w") as f:
             c, d = ((i + 1) % n) * m + (j + 1) % m, i * m + (j + 1) % m
             f.write("3 %d %d %d\n3 %d %d %d\n" % (a, b, c, a, c, d))
 PY
-"$gab" compress -i "$tmp/torus.off" -o "$tmp/full.gab" --anchors 20 --chunk-growth 1.5
-"$gab" compress -i "$tmp/torus.off" -o "$tmp/geo.gab" --anchors 12 --geometry-only --bits 8 --chunk-growth 2
-"$gab" compress -i "$tmp/torus.off" -o "$tmp/coarse.gab" --error 0.01 --bits 6 --chunk-growth 2
-"$gab" compress -i "$tmp/torus.off" -o "$tmp/refined.gab" --anchors 16 --refine --chunk-growth 2
+"$gab" compress -i "$tmp/torus.off" -o "$tmp/full.gab" --anchors 20 --chunk-growth 1.5 --layout selection
+"$gab" compress -i "$tmp/torus.off" -o "$tmp/geo.gab" --anchors 12 --geometry-only --bits 8 --chunk-growth 2 --layout selection
+"$gab" compress -i "$tmp/torus.off" -o "$tmp/coarse.gab" --error 0.01 --bits 6 --chunk-growth 2 --layout selection
+"$gab" compress -i "$tmp/torus.off" -o "$tmp/refined.gab" --anchors 16 --refine --chunk-growth 2 --layout selection
+"$gab" compress -i "$tmp/torus.off" -o "$tmp/levels.gab" --anchors 40 --initial 4 --layout levels --chunk-growth 1.5
+"$gab" compress -i "$tmp/torus.off" -o "$tmp/levels-refined.gab" --anchors 24 --initial 3 --layout levels --refine
 mkdir -p "$out"
 { printf '\x00'; cat "$tmp/full.gab"; } > "$out/torus-full"
 { printf '\x01'; cat "$tmp/geo.gab"; } > "$out/torus-geometry-only"
 { printf '\x16'; cat "$tmp/full.gab"; } > "$out/torus-prefix-5"
 { printf '\x00'; cat "$tmp/coarse.gab"; } > "$out/torus-coarse"
 { printf '\x00'; cat "$tmp/refined.gab"; } > "$out/torus-refined"
+{ printf '\x00'; cat "$tmp/levels.gab"; } > "$out/torus-levels"
+{ printf '\x2a'; cat "$tmp/levels.gab"; } > "$out/torus-levels-prefix-10"
+{ printf '\x00'; cat "$tmp/levels-refined.gab"; } > "$out/torus-levels-refined"

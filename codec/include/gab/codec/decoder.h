@@ -60,6 +60,7 @@ struct GabFileInfo {
   int32_t anchors = 0, chunks = 0;  // as the header declares (chunks: the refinement included)
   int32_t chunks_present = 0;       // complete chunks with a valid checksum
   bool refined = false;             // the last chunk is a refinement (not counted below)
+  bool levels = false;              // the level layout (gab_format.h, flag bit 2)
   size_t refinement_bytes = 0;      // its framed size when present
   bool truncated = false;
   size_t bytes = 0, connectivity_bytes = 0, geometry_bytes = 0;

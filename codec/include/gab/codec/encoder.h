@@ -14,6 +14,21 @@
 
 namespace gab {
 
+// How a file arranges its anchor chunks (gab_format.h).
+//  * kSelectionOrder: the first layout, chunks in selection order, each
+//    coding its anchors as a subset of the vertices still free.
+//  * kLevels: flag bit 2: chunk 0 codes the whole anchor set once and the
+//    decoder orders it into levels (anchor_levels.h).
+//  * kSmaller: both, keeping the levels unless the first codes smaller.
+// At 1e-3 on the shared meshes the levels alone (growth 2) took 4-10% off
+// the geometry (bits per vertex: bunny-small 12.27 -> 11.72, camel-head
+// 1.651 -> 1.591, horse 1.596 -> 1.437, max-planck 4.05 -> 3.66, nefertiti
+// 3.46 -> 3.14; igea the same: one level after the spread set, no order to
+// save); small smooth meshes (a 40 x 20 torus) can code 1-3% smaller in
+// selection order, whose greedy batches predict best there. The level
+// layout costs the encoder a decoder's work on top of the greedy loop.
+enum class FileLayout { kSmaller, kLevels, kSelectionOrder };
+
 struct EncodeOptions {
   // Stopping rules; at least one must be set. The loop also stops when every
   // vertex is an anchor (then the error is the quantization's).
@@ -39,6 +54,8 @@ struct EncodeOptions {
   // an update or refactorization), more predict better. Non-positive:
   // default_chunk_growth of the factorization's cost.
   double chunk_growth = -1;
+  // The file's layout (gab_format.h): see FileLayout.
+  FileLayout layout = FileLayout::kSmaller;
   // Least-squares refinement (Sorkine et al. 2005, sec. IV; DESIGN.md
   // section 5): a last chunk moving every anchor's coefficient from its
   // quantized position towards the coefficients whose reconstruction is
@@ -71,6 +88,7 @@ struct EncodeStats {
   size_t geometry_bytes = 0;      // everything else: header and anchor chunks
   double rms_rel = 0, linf_rel = 0;  // of the decoded shape against the input
   bool refined = false;              // the file ends with a refinement chunk
+  bool levels = false;               // the file is in the level layout (FileLayout)
   double unrefined_rms_rel = 0;      // the shape of the anchor chunks alone
   size_t refinement_bytes = 0;       // the refinement chunk with its framing
   bool target_met = true;         // false if an error target was out of reach at these bits
@@ -115,6 +133,14 @@ double default_batch_fraction(double flops);
 // i.e. two chunks: 1.17 bits per vertex and a 1.4 s decode against 1.20 and
 // 1.8 s with growth 4).
 double default_chunk_growth(double flops);
+
+// Level growth (FileLayout::kLevels) for a system whose factorization
+// costs `flops`: 2 while a refactorization is cheap (measured at 1e-3
+// against 1.5, 2.5, 3 and 4: best or within 0.3% on the shared meshes but
+// bunny-small, 0.4% better at 3; 1.5 adds levels for nothing, 4 costs
+// 1-3%), growing as (flops / 2e9)^0.6 beyond like default_chunk_growth
+// (igea: ~8.4, one level after the spread set).
+double default_level_growth(double flops);
 
 // Compresses `mesh` (valid per validate_mesh) into `file`.
 Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* file, EncodeStats* stats);

@@ -1,0 +1,65 @@
+// Levels (format flag kGabFlagLevels, gab_format.h): a coarse-to-fine order
+// of an anchor set that the decoder works out itself, so that the file codes
+// the set once instead of chunk by chunk in selection order.
+//
+// Chunk 0 holds the spread set (the encoder's farthest-point start) and the
+// set of all other anchors, "the rest". Level 1, 2, ... take the rest in
+// farthest-point order (hops on the edge graph, from the spread set and the
+// levels before), each level ending when the anchors so far reach
+// growth16 / 16 times those before it (and has at least kMinLevelAnchors);
+// the last level takes what remains.
+// A level is well spread over the surface the way greedy batches are, which
+// is what makes the reconstruction of the levels before it a good
+// prediction of its positions; what the file saves is the selection order
+// (at 1e-3 the first layout's nested chunk subsets cost 1.3-2.5 times the
+// one subset of the whole set on the shared meshes; the levels' positions
+// cost 0-5% more than the greedy chunks').
+//
+// Everything here is integer and deterministic: both sides get the same
+// levels from the same connectivity. Internal to the codec.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gab/mesh/edge_graph.h"
+#include "gab/sparse/status.h"
+
+namespace gab {
+
+// Growth of the levels, in sixteenths: above 1 and bounded so that the
+// products below stay far inside 64 bits.
+constexpr uint32_t kMinLevelGrowth16 = 17;
+constexpr uint32_t kMaxLevelGrowth16 = 1u << 16;
+// Every level but the last holds at least this many anchors: a level costs
+// 12 bytes of framing and coder flush, more than a few anchors' better
+// prediction is worth (a 40 x 20 torus with 150 anchors: 790 bytes with
+// levels of 1, 2, 4, ..., 771 with 8 at least; bunny-small 10.38 -> 10.35
+// bits per vertex; 16-64 changed the shared meshes by under 1% either way).
+constexpr uint64_t kMinLevelAnchors = 8;
+
+struct LevelPlan {
+  int32_t spread = 0;      // anchors of chunk 0
+  int32_t rest = 0;        // anchors of the levels
+  uint32_t growth16 = 32;  // kMinLevelGrowth16..kMaxLevelGrowth16
+
+  // Sizes of levels 1..L: all positive, summing to rest. A level ends at
+  // max(before + kMinLevelAnchors, floor(before * growth16 / 16)) anchors
+  // in all (the last at rest + spread). O(L).
+  std::vector<int32_t> level_sizes() const;
+};
+
+// A growth factor (> 1) in sixteenths, rounded and clamped to the range.
+uint32_t level_growth16(double growth);
+
+// The first `count` vertices of `rest` (distinct, none in `spread`) in
+// farthest-point order: each pick is the vertex of rest farthest in hops
+// from `spread` and the picks before it, ties to the smaller index; a vertex
+// that none of them reaches is infinitely far. O((V + E) * r) in the worst
+// case, r the number of times a vertex's distance shrinks (a few on meshes:
+// 7-13 ms for the shared meshes' anchor sets), plus O(log) heap work per
+// shrink of a rest vertex.
+Status level_order(const EdgeGraph& graph, const std::vector<int32_t>& spread, const std::vector<int32_t>& rest,
+                   int32_t count, std::vector<int32_t>* order);
+
+}  // namespace gab
