@@ -83,4 +83,23 @@ Status level_order(const EdgeGraph& graph, const std::vector<int32_t>& spread, c
   return Status::Ok();
 }
 
+LevelMembers::LevelMembers(const std::vector<int32_t>& order, const std::vector<int32_t>& rest, int32_t num_vertices)
+    : order_(order), rest_(rest), picked_(static_cast<size_t>(num_vertices), 0) {
+  for (int32_t v : order) picked_[v] = 1;
+}
+
+std::vector<int32_t> LevelMembers::next(const std::vector<int32_t>& sizes, size_t k) {
+  std::vector<int32_t> level;
+  if (k + 1 < sizes.size()) {
+    level.assign(order_.begin() + start_, order_.begin() + start_ + sizes[k]);
+    std::sort(level.begin(), level.end());
+  } else {
+    for (int32_t v : rest_) {
+      if (!picked_[v]) level.push_back(v);
+    }
+  }
+  start_ += sizes[k];
+  return level;
+}
+
 }  // namespace gab

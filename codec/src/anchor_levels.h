@@ -62,4 +62,23 @@ uint32_t level_growth16(double growth);
 Status level_order(const EdgeGraph& graph, const std::vector<int32_t>& spread, const std::vector<int32_t>& rest,
                    int32_t count, std::vector<int32_t>* order);
 
+// The levels' members, level by level, from the farthest-point picks
+// (`order`, level_order's output) and the rest: level k < L - 1 is the next
+// sizes[k] picks, the last level every vertex of the rest not picked; each
+// in vertex order (the order the chunks code them). The encoder and the
+// decoder split the anchors through this one rule.
+class LevelMembers {
+ public:
+  // `order` and `rest` must outlive this object.
+  LevelMembers(const std::vector<int32_t>& order, const std::vector<int32_t>& rest, int32_t num_vertices);
+  // Level k's anchors; call for k = 0, 1, ... in turn.
+  std::vector<int32_t> next(const std::vector<int32_t>& sizes, size_t k);
+
+ private:
+  const std::vector<int32_t>& order_;
+  const std::vector<int32_t>& rest_;
+  std::vector<char> picked_;
+  size_t start_ = 0;
+};
+
 }  // namespace gab

@@ -207,23 +207,12 @@ Status decode_level_chunks(ByteReader* in, AnchorChunkCoder* coder, ChunkDecodin
   GAB_RETURN_IF_ERROR(add_chunk(0, spread, grid, needed > 0, st));
   std::vector<int32_t> order;
   GAB_RETURN_IF_ERROR(level_order(st->graph, spread, rest, picks, &order));
-  std::vector<char> picked(header.num_vertices, 0);
-  for (int32_t v : order) picked[v] = 1;
-  size_t start = 0;
+  LevelMembers members(order, rest, header.num_vertices);
   for (size_t k = 0; k < needed; ++k) {
     const int32_t chunk = static_cast<int32_t>(k + 1);
     GAB_RETURN_IF_ERROR(read_chunk_frame(in, chunk, st, &payload, &payload_size));
     if (!payload) break;
-    std::vector<int32_t> level;
-    if (k + 1 < sizes.size()) {
-      level.assign(order.begin() + start, order.begin() + start + sizes[k]);
-      std::sort(level.begin(), level.end());
-    } else {
-      for (int32_t v : rest) {
-        if (!picked[v]) level.push_back(v);
-      }
-    }
-    start += sizes[k];
+    std::vector<int32_t> level = members.next(sizes, k);
     if (static_cast<int32_t>(level.size()) > st->wanted - st->decoded) level.resize(st->wanted - st->decoded);
     s = coder->decode_level(payload, payload_size, level, st->shape.data(), st->graph, &grid);
     if (!s.ok()) return corrupt("chunk " + std::to_string(chunk) + ": " + s.message());

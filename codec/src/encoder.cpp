@@ -196,24 +196,13 @@ Status encode_levels(const RelaxedReconstruction& rec, const EdgeGraph& graph, i
   out->file_order = spread;
   out->chunk_anchors.push_back(spread_count);
 
-  std::vector<char> picked(static_cast<size_t>(graph.num_vertices()), 0);
-  for (int32_t v : order) picked[v] = 1;
+  LevelMembers members(order, rest, graph.num_vertices());
   RelaxedReconstruction levels;  // the decoder's reconstructions from level 2 on
   levels.set_threads(threads);
   std::vector<double> shape;
   std::vector<int32_t> before = spread, previous;  // before level 2: the spread set and level 1
-  size_t start = 0;
   for (size_t k = 0; k < sizes.size(); ++k) {
-    std::vector<int32_t> level;
-    if (k + 1 < sizes.size()) {
-      level.assign(order.begin() + start, order.begin() + start + sizes[k]);
-      std::sort(level.begin(), level.end());
-    } else {
-      for (int32_t v : rest) {
-        if (!picked[v]) level.push_back(v);
-      }
-    }
-    start += sizes[k];
+    std::vector<int32_t> level = members.next(sizes, k);
     if (k == 1) {
       before.insert(before.end(), previous.begin(), previous.end());
       GAB_RETURN_IF_ERROR(levels.init(graph, rec.weight(), before, coefficients_of(before)));

@@ -34,6 +34,13 @@ inline std::vector<uint8_t> encode_or_die(const Mesh& mesh, const EncodeOptions&
   return file;
 }
 
+inline Mesh decode_or_die(const std::vector<uint8_t>& file, const DecodeOptions& options, DecodeStats* stats) {
+  Mesh out;
+  const Status s = decode_mesh(file.data(), file.size(), options, &out, stats);
+  EXPECT_TRUE(s.ok()) << s.message();
+  return out;
+}
+
 // Vertex RMS distance over a's bounding-box diagonal.
 inline double relative_rms(const Mesh& a, const Mesh& b) {
   VertexDistance d;

@@ -24,15 +24,9 @@ namespace gab {
 namespace {
 
 using testing_util::bumpy_torus;
+using testing_util::decode_or_die;
 using testing_util::encode_or_die;
 using testing_util::relative_rms;
-
-Mesh decode_or_die(const std::vector<uint8_t>& file, const DecodeOptions& options, DecodeStats* stats) {
-  Mesh out;
-  const Status s = decode_mesh(file.data(), file.size(), options, &out, stats);
-  EXPECT_TRUE(s.ok()) << s.message();
-  return out;
-}
 
 // A torus whose radius carries vertex-scale noise: detail a smooth prior
 // cannot predict, so at a tight target most vertices become anchors.
