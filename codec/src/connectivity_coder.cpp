@@ -27,8 +27,8 @@
 #include <algorithm>
 #include <array>
 #include <string>
-#include <unordered_map>
 
+#include "flat_int_map.h"
 #include "gab/codec/int_coder.h"
 #include "gab/codec/range_coder.h"
 
@@ -126,15 +126,15 @@ class OpenEdges {
     int32_t from, to, count;
     int32_t prev_in, next_in, prev_out, next_out;  // -1: none
   };
-  using Heads = std::unordered_map<int32_t, int32_t>;
+  using Heads = FlatIntMap;  // vertex -> newest node of its list
 
   static uint64_t key(int32_t from, int32_t to) {
     return (uint64_t{static_cast<uint32_t>(from)} << 32) | static_cast<uint32_t>(to);
   }
 
   void append(const Heads& heads, int32_t v, bool outgoing, std::vector<int32_t>* out) const {
-    const auto head = heads.find(v);
-    int32_t i = head == heads.end() ? -1 : head->second;
+    const int32_t* head = heads.find(static_cast<uint64_t>(v));
+    int32_t i = head == nullptr ? -1 : *head;
     for (int n = 0; i >= 0 && n < kCandidatesPerList; ++n) {
       const Node& node = nodes_[i];
       out->push_back(outgoing ? node.to : node.from);
@@ -143,9 +143,8 @@ class OpenEdges {
   }
 
   void open(int32_t from, int32_t to) {
-    const auto found = by_edge_.find(key(from, to));
-    if (found != by_edge_.end()) {
-      ++nodes_[found->second].count;
+    if (const int32_t* found = by_edge_.find(key(from, to))) {
+      ++nodes_[*found].count;
       return;
     }
     int32_t i;
@@ -158,25 +157,25 @@ class OpenEdges {
     }
     Node& node = nodes_[i];
     node = Node{from, to, 1, -1, -1, -1, -1};
-    const auto in = first_in_.emplace(to, -1).first;
-    node.next_in = in->second;
+    int32_t& in = first_in_.insert(static_cast<uint64_t>(to), -1);
+    node.next_in = in;
     if (node.next_in >= 0) nodes_[node.next_in].prev_in = i;
-    in->second = i;
-    const auto out = first_out_.emplace(from, -1).first;
-    node.next_out = out->second;
+    in = i;
+    int32_t& out = first_out_.insert(static_cast<uint64_t>(from), -1);
+    node.next_out = out;
     if (node.next_out >= 0) nodes_[node.next_out].prev_out = i;
-    out->second = i;
-    by_edge_.emplace(key(from, to), i);
+    out = i;
+    by_edge_.insert(key(from, to), i);
   }
 
   // Removes one instance of the open edge from -> to; false if there is none.
   bool close(int32_t from, int32_t to) {
-    const auto found = by_edge_.find(key(from, to));
-    if (found == by_edge_.end()) return false;
-    const int32_t i = found->second;
+    const int32_t* found = by_edge_.find(key(from, to));
+    if (found == nullptr) return false;
+    const int32_t i = *found;
     Node& node = nodes_[i];
     if (--node.count > 0) return true;
-    by_edge_.erase(found);
+    by_edge_.erase(key(from, to));
     unlink(&first_in_, node.to, node.prev_in, node.next_in, &Node::next_in, &Node::prev_in);
     unlink(&first_out_, node.from, node.prev_out, node.next_out, &Node::next_out, &Node::prev_out);
     free_.push_back(i);
@@ -189,15 +188,15 @@ class OpenEdges {
     if (prev >= 0) {
       nodes_[prev].*next_of = next;
     } else if (next >= 0) {
-      (*heads)[v] = next;
+      *heads->find(static_cast<uint64_t>(v)) = next;
     } else {
-      heads->erase(v);
+      heads->erase(static_cast<uint64_t>(v));
     }
   }
 
   std::vector<Node> nodes_;
   std::vector<int32_t> free_;
-  std::unordered_map<uint64_t, int32_t> by_edge_;
+  FlatIntMap by_edge_;
   Heads first_in_, first_out_;
 };
 

@@ -10,6 +10,24 @@
 
 namespace gab {
 
+namespace {
+
+// Calls f(k, v) for every k in j's closed neighbourhood (j first, then its
+// neighbours: where r_k[j] != 0) and every v >= j in k's closed
+// neighbourhood, in a fixed order (the sums' order, hence their bits).
+template <typename F>
+void for_each_two_ring_entry(const EdgeGraph& graph, int32_t j, F f) {
+  for (int32_t q = graph.offsets[j] - 1; q < graph.offsets[j + 1]; ++q) {
+    const int32_t k = q < graph.offsets[j] ? j : graph.neighbors[q];
+    for (int32_t p = graph.offsets[k] - 1; p < graph.offsets[k + 1]; ++p) {
+      const int32_t v = p < graph.offsets[k] ? k : graph.neighbors[p];
+      if (v >= j) f(k, v);
+    }
+  }
+}
+
+}  // namespace
+
 Status assemble_normal_matrix(const EdgeGraph& graph, const std::vector<int32_t>& anchors,
                               double weight, CscMatrix* lower) {
   const int32_t n = graph.num_vertices();
@@ -24,43 +42,55 @@ Status assemble_normal_matrix(const EdgeGraph& graph, const std::vector<int32_t>
     }
     diag_extra[a] = weight * weight;
   }
+  // Two passes over the 2-rings: the first counts each column's rows so
+  // the arrays are allocated once (growing them entry by entry spent most
+  // of the assembly in copies and page faults: igea 0.13 s -> 0.03 s).
   CscMatrix m;
   m.nrows = m.ncols = n;
   m.colptr.assign(n + 1, 0);
+  std::vector<int32_t> mark(n, -1);
+  int64_t nnz = 0;
+  for (int32_t j = 0; j < n; ++j) {
+    mark[j] = j;
+    int64_t rows = 1;
+    for_each_two_ring_entry(graph, j, [&](int32_t, int32_t v) {
+      if (mark[v] != j) {
+        mark[v] = j;
+        ++rows;
+      }
+    });
+    nnz += rows;
+    if (nnz > INT32_MAX) {
+      return Status::Error(StatusCode::kOverflow, "normal matrix has more than 2^31-1 entries");
+    }
+    m.colptr[j + 1] = static_cast<int32_t>(nnz);
+  }
+  m.rowind.resize(static_cast<size_t>(nnz));
+  m.values.resize(static_cast<size_t>(nnz));
+  std::fill(mark.begin(), mark.end(), -1);
   std::vector<double> acc(n, 0.0);
-  std::vector<int32_t> mark(n, -1), rows;
   auto coefficient = [&graph](int32_t k, int32_t v) {  // r_k[v]
     return v == k ? static_cast<double>(graph.degree(k)) : -1.0;
   };
   for (int32_t j = 0; j < n; ++j) {
-    rows.clear();
+    int32_t* rows = m.rowind.data() + m.colptr[j];
+    int32_t count = 0;
     mark[j] = j;
-    rows.push_back(j);
-    // k runs over j and its neighbours (where r_k[j] != 0).
-    for (int32_t q = graph.offsets[j] - 1; q < graph.offsets[j + 1]; ++q) {
-      const int32_t k = q < graph.offsets[j] ? j : graph.neighbors[q];
-      const double rkj = coefficient(k, j);
-      for (int32_t p = graph.offsets[k] - 1; p < graph.offsets[k + 1]; ++p) {
-        const int32_t v = p < graph.offsets[k] ? k : graph.neighbors[p];
-        if (v < j) continue;
-        if (mark[v] != j) {
-          mark[v] = j;
-          rows.push_back(v);
-        }
-        acc[v] += coefficient(k, v) * rkj;
+    rows[count++] = j;
+    for_each_two_ring_entry(graph, j, [&](int32_t k, int32_t v) {
+      if (mark[v] != j) {
+        mark[v] = j;
+        rows[count++] = v;
       }
-    }
-    std::sort(rows.begin(), rows.end());
+      acc[v] += coefficient(k, v) * coefficient(k, j);
+    });
+    std::sort(rows, rows + count);
     acc[j] += diag_extra[j];
-    for (int32_t v : rows) {
-      m.rowind.push_back(v);
-      m.values.push_back(acc[v]);
-      acc[v] = 0.0;
+    double* values = m.values.data() + m.colptr[j];
+    for (int32_t t = 0; t < count; ++t) {
+      values[t] = acc[rows[t]];
+      acc[rows[t]] = 0.0;
     }
-    if (m.rowind.size() > static_cast<size_t>(INT32_MAX)) {
-      return Status::Error(StatusCode::kOverflow, "normal matrix has more than 2^31-1 entries");
-    }
-    m.colptr[j + 1] = static_cast<int32_t>(m.rowind.size());
   }
   *lower = std::move(m);
   return Status::Ok();

@@ -9,7 +9,8 @@ namespace gab {
 
 Status Cholesky::analyze(const CscMatrix& lower, const AnalyzeOptions& options) {
   analyzed_ = factorized_ = false;
-  GAB_RETURN_IF_ERROR(gab::analyze(lower, options, &symbolic_));
+  populator_.finish();  // the buffers may move
+  GAB_RETURN_IF_ERROR(analyze_structure(lower, options, &symbolic_));
   const int64_t values = symbolic_.value_ptr[symbolic_.num_supernodes];
   schedule_ = plan_factor_schedule(symbolic_, options.threads);
   // The solves split the tree by their own work (entries, not flops): the
@@ -22,6 +23,13 @@ Status Cholesky::analyze(const CscMatrix& lower, const AnalyzeOptions& options) 
                          "cannot allocate " + std::to_string((values + work) * 8 >> 20) +
                              " MiB for the factor and its workspace");
   }
+  // With threads to spare, fault in the factor and its stacks while the
+  // assembly map is built (and whatever the caller does before factorize).
+  if (options.threads >= 2) {
+    populator_.start({{values_.data(), sizeof(double) * static_cast<size_t>(values)},
+                      {work_.data(), sizeof(double) * static_cast<size_t>(work)}});
+  }
+  map_assembly(lower, &symbolic_);
   // The updater's workspace is small (about 11 n doubles): set it up now so
   // the first anchor update does not pay for allocation and page faults.
   update_ready_ = false;
@@ -33,6 +41,7 @@ Status Cholesky::analyze(const CscMatrix& lower, const AnalyzeOptions& options) 
 Status Cholesky::factorize(const CscMatrix& lower) {
   if (!analyzed_) return Status::Error(StatusCode::kInvalidArgument, "factorize before analyze");
   factorized_ = false;
+  populator_.finish();
   if (kernels_ == nullptr) kernels_ = &dense_kernels();
   GAB_RETURN_IF_ERROR(factorize_supernodal(symbolic_, schedule_, lower, *kernels_, values_.data(),
                                            work_.data(), iwork_.data()));

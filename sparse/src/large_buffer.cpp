@@ -1,5 +1,8 @@
 #include "gab/sparse/large_buffer.h"
 
+#include <algorithm>
+#include <atomic>
+#include <cstdint>
 #include <cstdlib>
 
 #if defined(__linux__)
@@ -24,5 +27,54 @@ void* allocate_large(size_t bytes) {
 }
 
 void free_large(void* p) { std::free(p); }
+
+// The ranges cut into pieces that both threads take in turn.
+struct PagePopulator::Work {
+  std::vector<std::pair<char*, size_t>> pieces;
+  std::atomic<size_t> next{0};
+
+  void run() {
+    for (size_t i = next.fetch_add(1); i < pieces.size(); i = next.fetch_add(1)) {
+#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
+      // Fails on kernels before 5.14 (EINVAL): the pages then fault on use.
+      if (madvise(pieces[i].first, pieces[i].second, MADV_POPULATE_WRITE) != 0) next = pieces.size();
+#endif
+    }
+  }
+};
+
+PagePopulator::PagePopulator() = default;
+
+PagePopulator::~PagePopulator() { finish(); }
+
+void PagePopulator::start(const std::vector<std::pair<void*, size_t>>& ranges) {
+  finish();
+#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
+  constexpr size_t kPage = 4096, kPiece = size_t{4} << 20, kWorthAThread = size_t{16} << 20;
+  auto work = std::make_unique<Work>();
+  size_t total = 0;
+  for (const auto& range : ranges) {
+    const uintptr_t begin = reinterpret_cast<uintptr_t>(range.first);
+    const uintptr_t first = (begin + kPage - 1) / kPage * kPage, last = (begin + range.second) / kPage * kPage;
+    for (uintptr_t p = first; p < last; p += kPiece) {
+      const size_t size = static_cast<size_t>(std::min<uintptr_t>(kPiece, last - p));
+      work->pieces.emplace_back(reinterpret_cast<char*>(p), size);
+      total += size;
+    }
+  }
+  if (total < kWorthAThread) return;
+  work_ = std::move(work);
+  helper_ = std::thread([w = work_.get()] { w->run(); });
+#else
+  (void)ranges;
+#endif
+}
+
+void PagePopulator::finish() {
+  if (!work_) return;
+  work_->run();
+  helper_.join();
+  work_.reset();
+}
 
 }  // namespace gab

@@ -95,10 +95,12 @@ void supernode_rows(const CscMatrix& graph, SymbolicFactor* f) {
   }
 }
 
+}  // namespace
+
 // For every entry of A (original numbering) its supernode and offset in the
 // factor's values, grouped per supernode so the numeric phase scatters A
 // into one front at a time.
-void assembly_map(const CscMatrix& lower, SymbolicFactor* f) {
+void map_assembly(const CscMatrix& lower, SymbolicFactor* f) {
   const int32_t ns = f->num_supernodes;
   const int64_t nnz = lower.nnz();
   std::vector<int32_t> super_of_entry(nnz);
@@ -136,9 +138,7 @@ void assembly_map(const CscMatrix& lower, SymbolicFactor* f) {
   }
 }
 
-}  // namespace
-
-Status analyze(const CscMatrix& lower, const AnalyzeOptions& options, SymbolicFactor* out) {
+Status analyze_structure(const CscMatrix& lower, const AnalyzeOptions& options, SymbolicFactor* out) {
   GAB_RETURN_IF_ERROR(check_input(lower));
   SymbolicFactor f;
   f.n = lower.ncols;
@@ -221,8 +221,13 @@ Status analyze(const CscMatrix& lower, const AnalyzeOptions& options, SymbolicFa
     top[1 - side] -= pending[s];
     if (f.supernode_parent[s] != -1) pending[f.supernode_parent[s]] += p * p;
   }
-  assembly_map(lower, &f);
   *out = std::move(f);
+  return Status::Ok();
+}
+
+Status analyze(const CscMatrix& lower, const AnalyzeOptions& options, SymbolicFactor* out) {
+  GAB_RETURN_IF_ERROR(analyze_structure(lower, options, out));
+  map_assembly(lower, out);
   return Status::Ok();
 }
 

@@ -72,6 +72,7 @@ class Cholesky {
   LargeBuffer<double> solve_work_;
   LargeBuffer<double> update_work_;  // see update_workspace_doubles
   LargeBuffer<int32_t> update_iwork_;
+  PagePopulator populator_;  // after the buffers: stops before they are freed
   bool update_ready_ = false;
   Status prepare_update();
   Status prepare_update_workspace();

@@ -9,6 +9,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
+#include <thread>
+#include <vector>
 
 namespace gab {
 
@@ -56,6 +59,38 @@ class LargeBuffer {
  private:
   T* data_ = nullptr;
   int64_t capacity_ = 0;
+};
+
+// Faults in fresh storage before its first use, on a helper thread while
+// the caller does other work; finish() lends the calling thread to what is
+// left and joins. The contents are left as they are (MADV_POPULATE_WRITE,
+// Linux 5.14+; elsewhere nothing is done and pages fault on first use).
+//
+// Why: on a virtual machine the first touch of memory the host has taken
+// back costs ~2 ms per MiB (the host provisions and zeroes it), so igea's
+// first factorization spent 0.3-0.5 s on 345 MiB of factor and stacks, most
+// of it on one thread while the other core sat idle in the serial analysis.
+// Population runs ~1.7x faster on two threads than on one here.
+class PagePopulator {
+ public:
+  PagePopulator();
+  ~PagePopulator();
+  PagePopulator(const PagePopulator&) = delete;
+  PagePopulator& operator=(const PagePopulator&) = delete;
+
+  // Finishes any earlier run, then starts populating the whole pages
+  // inside [begin, begin + bytes) of each range on a helper thread (not
+  // when they add up to less than a few MiB). No one may read or write the
+  // ranges until finish() returns.
+  void start(const std::vector<std::pair<void*, size_t>>& ranges);
+  // Populates what the helper has not reached, on this thread as well,
+  // and waits for the helper. Cheap when nothing is running.
+  void finish();
+
+ private:
+  struct Work;
+  std::unique_ptr<Work> work_;
+  std::thread helper_;
 };
 
 }  // namespace gab

@@ -77,4 +77,11 @@ struct SymbolicFactor {
 // + sum of supernode row counts * log), memory O(nnz(A) + n).
 Status analyze(const CscMatrix& lower, const AnalyzeOptions& options, SymbolicFactor* out);
 
+// analyze() in two steps, for a caller that acts on the factor's sizes
+// (value_ptr, stack_peak) before the assembly map is built: Cholesky faults
+// in the factor's storage meanwhile. analyze_structure leaves a_ptr, a_order
+// and a_dest empty; map_assembly fills them (O(nnz(A)) with random access).
+Status analyze_structure(const CscMatrix& lower, const AnalyzeOptions& options, SymbolicFactor* out);
+void map_assembly(const CscMatrix& lower, SymbolicFactor* f);
+
 }  // namespace gab
