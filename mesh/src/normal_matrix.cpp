@@ -44,7 +44,7 @@ Status assemble_normal_matrix(const EdgeGraph& graph, const std::vector<int32_t>
   }
   // Two passes over the 2-rings: the first counts each column's rows so
   // the arrays are allocated once (growing them entry by entry spent most
-  // of the assembly in copies and page faults: igea 0.13 s -> 0.03 s).
+  // of the assembly in copies and page faults: igea 0.13 s -> 0.045 s).
   CscMatrix m;
   m.nrows = m.ncols = n;
   m.colptr.assign(n + 1, 0);
