@@ -138,10 +138,27 @@ inline void pack_panels(const double* a, ptrdiff_t lda, int32_t rows, int32_t k,
 // inner step still touches exactly one 64-byte line of it (kNr doubles at an
 // offset that is a multiple of kNr), so it costs the same L1 room as a
 // dedicated kNr-wide packing, and SYRK packs its single operand only once.
+// Where column j of a lower triangle C lives: a column-major square (ld
+// ldc), or packed panels (packed_lower.h). A tile's kNr columns start at a
+// multiple of kNr, so they always share one panel and one leading dimension.
+struct SquareColumns {
+  double* c;
+  int32_t ldc;
+  double* column(int32_t j) const { return c + static_cast<ptrdiff_t>(j) * ldc; }
+  int32_t ld(int32_t) const { return ldc; }
+};
+struct PackedColumns {
+  double* c;
+  int32_t n;
+  double* column(int32_t j) const { return packed_lower_column(c, n, j); }
+  int32_t ld(int32_t j) const { return packed_lower_ld(n, j); }
+};
+
 template <class T>
 struct Blocked {
   static_assert(T::kMr % T::kNr == 0 && T::kMc % T::kMr == 0 && T::kNc % T::kMr == 0,
                 "tile and cache blocks must nest");
+  static_assert(kPackedLowerPanel % T::kNr == 0, "a tile's columns must share a packed panel");
 
   static void gemm_nt_sub(int32_t m, int32_t n, int32_t k, const double* a, int32_t lda,
                           const double* b, int32_t ldb, double* c, int32_t ldc) {
@@ -182,11 +199,23 @@ struct Blocked {
 
   static void syrk_lower_sub(int32_t n, int32_t k, const double* a, int32_t lda, double* c,
                              int32_t ldc) {
+    syrk_into(n, k, a, lda, SquareColumns{c, ldc});
+  }
+
+  static void syrk_lower_sub_packed(int32_t n, int32_t k, const double* a, int32_t lda, double* c) {
+    syrk_into(n, k, a, lda, PackedColumns{c, n});
+  }
+
+  // SYRK into the lower triangle of C, its columns placed by `cols`
+  // (SquareColumns or PackedColumns): the same tiles in the same order
+  // either way, so both forms give the same bits.
+  template <class Columns>
+  static void syrk_into(int32_t n, int32_t k, const double* a, int32_t lda, const Columns& ccols) {
     if (n <= 0 || k <= 0) return;
     double* ws = nullptr;
     if (!T::direct(n, n, k)) ws = packing_workspace(workspace_doubles());
     if (ws == nullptr) {
-      syrk_direct(n, k, a, lda, c, ldc);
+      syrk_direct(n, k, a, lda, ccols);
       return;
     }
     KernelTeam* team = team_for(n, n, k);
@@ -211,7 +240,8 @@ struct Blocked {
             if (j >= ic + mc) break;  // this and later column tiles lie above the block
             const int32_t cols = std::min<int32_t>(T::kNr, nc - jr);
             const double* bp = panel_rows(bpack, kc, jr);
-            double* cj = c + static_cast<ptrdiff_t>(j) * ldc;
+            double* cj = ccols.column(j);
+            const int32_t ldc = ccols.ld(j);
             // Start at the diagonal, not at the panel boundary: the first
             // tile reads its panel from an offset, so the only work wasted
             // above the diagonal is inside one kNr x kNr square.
@@ -268,7 +298,8 @@ struct Blocked {
   }
 
   static constexpr DenseKernels table(SimdLevel level) {
-    return DenseKernels{level, &potrf, &trsm_right_lower_trans, &syrk_lower_sub, &gemm_nt_sub};
+    return DenseKernels{level, &potrf, &trsm_right_lower_trans, &syrk_lower_sub, &gemm_nt_sub,
+                        &syrk_lower_sub_packed};
   }
 
  private:
@@ -331,12 +362,13 @@ struct Blocked {
     });
   }
 
-  static void syrk_direct(int32_t n, int32_t k, const double* a, int32_t lda, double* c,
-                          int32_t ldc) {
+  template <class Columns>
+  static void syrk_direct(int32_t n, int32_t k, const double* a, int32_t lda, const Columns& ccols) {
     for_each_item(team_for(n, n, k), (n + T::kNr - 1) / T::kNr, [&](int32_t strip) {
       const int32_t j = strip * T::kNr;
       const int32_t cols = std::min<int32_t>(T::kNr, n - j);
-      double* cj = c + static_cast<ptrdiff_t>(j) * ldc;
+      double* cj = ccols.column(j);
+      const int32_t ldc = ccols.ld(j);
       for (int32_t i = j; i < n; i += T::kMr) {
         T::tile(k, a + i, lda, a + j, lda, cj + i, ldc, std::min<int32_t>(T::kMr, n - i), cols,
                 i - j);

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "gab/sparse/dense_kernels.h"
+
 namespace gab {
 namespace {
 
@@ -145,15 +147,14 @@ FactorSchedule plan_factor_schedule(const SymbolicFactor& f, int32_t threads,
       int64_t top[2] = {0, 0}, peak = 0;
       for (int32_t i = plan.group_ptr[g]; i < plan.group_ptr[g + 1]; ++i) {
         const int32_t s = plan.order[i];
-        const int64_t p = f.rows(s) - f.cols(s);
+        const int64_t size = packed_lower_size(f.rows(s) - f.cols(s));
         const int side = depth[s] & 1;
-        if (pass == 1) plan.update_offset[s] = side == 0 ? base + top[0] : end - top[1] - p * p;
-        top[side] += p * p;
+        if (pass == 1) plan.update_offset[s] = side == 0 ? base + top[0] : end - top[1] - size;
+        top[side] += size;
         peak = std::max(peak, top[0] + top[1]);
         for (int32_t c = child_head[s]; c != -1; c = child_next[c]) {
           if (owner[c] != g) continue;
-          const int64_t pc = f.rows(c) - f.cols(c);
-          top[1 - side] -= pc * pc;
+          top[1 - side] -= packed_lower_size(f.rows(c) - f.cols(c));
         }
       }
       if (pass == 0) plan.stack_ptr[g + 1] = base + peak;

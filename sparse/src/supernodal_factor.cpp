@@ -6,7 +6,8 @@
 // for the rows below it. A front is assembled from A's entries and the
 // update matrices of its children (extend-add through relative indices),
 // then partially factored: POTRF on the diagonal block, TRSM below it, and
-// one SYRK that forms its own update matrix. Update matrices live on two
+// one SYRK that forms its own update matrix, a lower triangle packed in
+// column panels (half the room of a square). Update matrices live on two
 // stacks sharing one buffer, at offsets the schedule fixed
 // (factor_schedule.h), so nothing is allocated here: even-depth supernodes
 // push at the low end, odd-depth ones at the high end. A parent's children
@@ -66,9 +67,10 @@ int32_t factor_group(const FrontContext& ctx, int32_t group, int32_t* map, int32
       values[f.a_dest[q]] += ctx.a[f.a_order[q]];
     }
 
+    // Update matrices are packed lower triangles (dense_kernels.h).
     double* update = ctx.work + ctx.plan.update_offset[s];
     for (int32_t j = 0; j < p; ++j) {
-      std::memset(update + static_cast<int64_t>(j) * p + j, 0, sizeof(double) * (p - j));
+      std::memset(packed_lower_column(update, p, j) + j, 0, sizeof(double) * (p - j));
     }
     // Children in increasing order, whichever group left their updates.
     for (int32_t c = ctx.plan.child_head[s]; c != -1; c = ctx.plan.child_next[c]) {
@@ -82,10 +84,9 @@ int32_t factor_group(const FrontContext& ctx, int32_t group, int32_t* map, int32
         run_end[u] = (u + 1 < pc && rel[u + 1] == rel[u] + 1) ? run_end[u + 1] : u + 1;
       }
       for (int32_t t = 0; t < pc; ++t) {
-        const double* src = cu + static_cast<int64_t>(t) * pc;
+        const double* src = packed_lower_column(cu, pc, t);
         const int32_t col = rel[t];
-        double* dst = col < k ? block + static_cast<int64_t>(col) * m
-                              : update + static_cast<int64_t>(col - k) * p - k;
+        double* dst = col < k ? block + static_cast<int64_t>(col) * m : packed_lower_column(update, p, col - k) - k;
         for (int32_t u = t; u < pc;) {
           const int32_t end = run_end[u];
           double* d = dst + rel[u] - u;
@@ -102,7 +103,7 @@ int32_t factor_group(const FrontContext& ctx, int32_t group, int32_t* map, int32
     }
     if (p > 0) {
       ctx.kern.trsm_right_lower_trans(p, k, block, m, block + k, m);
-      ctx.kern.syrk_lower_sub(p, k, block + k, m, update, p);
+      ctx.kern.syrk_lower_sub_packed(p, k, block + k, m, update);
     }
   }
   return -1;

@@ -8,6 +8,7 @@
 
 #include "gab/sparse/amd.h"
 #include "gab/sparse/column_counts.h"
+#include "gab/sparse/dense_kernels.h"
 #include "gab/sparse/supernodes.h"
 
 namespace gab {
@@ -214,12 +215,12 @@ Status analyze_structure(const CscMatrix& lower, const AnalyzeOptions& options, 
   int64_t top[2] = {0, 0};
   std::vector<int64_t> pending(ns, 0);  // update doubles of s's children
   for (int32_t s = 0; s < ns; ++s) {
-    const int64_t p = f.rows(s) - f.cols(s);
+    const int64_t size = packed_lower_size(f.rows(s) - f.cols(s));  // packed lower triangles
     const int side = depth[s] & 1;
-    top[side] += p * p;
+    top[side] += size;
     f.stack_peak = std::max(f.stack_peak, top[0] + top[1]);
     top[1 - side] -= pending[s];
-    if (f.supernode_parent[s] != -1) pending[f.supernode_parent[s]] += p * p;
+    if (f.supernode_parent[s] != -1) pending[f.supernode_parent[s]] += size;
   }
   *out = std::move(f);
   return Status::Ok();

@@ -326,6 +326,71 @@ TEST_P(DenseKernelLevels, SyrkPackedAndBlockedShapes) {
   check_syrk(k(), 217, 317, 4);
 }
 
+// The packed form of SYRK (update matrices, packed_lower_column) against
+// the square form: the same bits on every lower entry, and nothing else in
+// the packed buffer written (the slack above the diagonal in each panel).
+void check_syrk_packed(const DenseKernels& kern, int32_t n, int32_t k) {
+  std::mt19937_64 rng(104729u * n + k);
+  Padded a(n, k, 1), c(n, n, 0);
+  a.fill_random(&rng);
+  c.fill_random(&rng);
+  std::vector<double> packed(static_cast<size_t>(packed_lower_size(n)), kCanary);
+  for (int32_t j = 0; j < n; ++j) {
+    for (int32_t i = j; i < n; ++i) packed_lower_column(packed.data(), n, j)[i] = c.at(i, j);
+  }
+  kern.syrk_lower_sub(n, k, a.ptr(), a.ld, c.ptr(), c.ld);
+  kern.syrk_lower_sub_packed(n, k, a.ptr(), a.ld, packed.data());
+  int64_t differ = 0, lower = 0;
+  for (int32_t j = 0; j < n; ++j) {
+    for (int32_t i = j; i < n; ++i) {
+      differ += std::memcmp(&packed_lower_column(packed.data(), n, j)[i], &c.at(i, j), sizeof(double)) != 0;
+      packed_lower_column(packed.data(), n, j)[i] = kCanary;  // then every entry must be the canary
+      ++lower;
+    }
+  }
+  EXPECT_EQ(differ, 0) << "n=" << n << " k=" << k;
+  EXPECT_EQ(std::count(packed.begin(), packed.end(), kCanary), static_cast<int64_t>(packed.size()))
+      << "n=" << n << " k=" << k << ": written outside the lower triangle";
+  EXPECT_LE(static_cast<int64_t>(packed.size()), lower + static_cast<int64_t>(n) * kPackedLowerPanel / 2)
+      << "n=" << n;
+}
+
+TEST(PackedLower, EveryLowerEntryHasItsOwnSlot) {
+  for (int32_t n : {0, 1, 2, 15, 16, 17, 31, 32, 33, 100, 257}) {
+    std::vector<int32_t> hits(static_cast<size_t>(packed_lower_size(n)), 0);
+    std::vector<double> storage(hits.size() + 1);
+    double* base = storage.data();
+    for (int32_t j = 0; j < n; ++j) {
+      double* column = packed_lower_column(base, n, j);
+      for (int32_t i = j; i < n; ++i) {
+        const ptrdiff_t at = column + i - base;
+        ASSERT_GE(at, 0) << n << " " << i << " " << j;
+        ASSERT_LT(at, static_cast<ptrdiff_t>(hits.size())) << n << " " << i << " " << j;
+        ++hits[at];
+      }
+      EXPECT_EQ(packed_lower_ld(n, j), n - j / kPackedLowerPanel * kPackedLowerPanel);
+      // A panel's columns are ld apart.
+      if (j % kPackedLowerPanel != 0) {
+        EXPECT_EQ(column - packed_lower_column(base, n, j - 1), packed_lower_ld(n, j));
+      }
+    }
+    EXPECT_EQ(std::count(hits.begin(), hits.end(), 1), static_cast<int64_t>(n) * (n + 1) / 2) << n;
+    EXPECT_EQ(std::count(hits.begin(), hits.end(), 2), 0) << n;
+  }
+  EXPECT_EQ(packed_lower_size(0), 0);
+  EXPECT_EQ(packed_lower_size(kPackedLowerPanel), int64_t{kPackedLowerPanel} * kPackedLowerPanel);
+}
+
+TEST_P(DenseKernelLevels, SyrkPackedMatchesSquareBitForBit) {
+  for (int32_t n : kEdgeSizes) {
+    for (int32_t kk : {1, 5, 16}) check_syrk_packed(k(), n, kk);
+  }
+  check_syrk_packed(k(), 100, 40);
+  check_syrk_packed(k(), 400, 200);  // packed operands, several row blocks
+  check_syrk_packed(k(), 333, 701);  // several inner-dimension blocks
+  check_syrk_packed(k(), 1601, 45);  // several column blocks
+}
+
 TEST_P(DenseKernelLevels, TrsmEdgeShapes) {
   int32_t salt = 0;
   for (int32_t m : kEdgeSizes) {

@@ -116,9 +116,8 @@ TEST(FactorScheduleTest, LiveUpdateMatricesNeverShareMemory) {
       std::vector<int64_t> begin(ns), end(ns);
       std::vector<int32_t> born(ns), dies(ns);
       for (int32_t s = 0; s < ns; ++s) {
-        const int64_t p = f.rows(s) - f.cols(s);
         begin[s] = plan.update_offset[s];
-        end[s] = begin[s] + p * p;
+        end[s] = begin[s] + packed_lower_size(f.rows(s) - f.cols(s));
         const int32_t g = owner[s], parent = f.supernode_parent[s];
         EXPECT_GE(begin[s], plan.stack_ptr[g]);
         EXPECT_LE(end[s], plan.stack_ptr[g + 1]);

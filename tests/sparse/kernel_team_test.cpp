@@ -75,6 +75,9 @@ std::vector<std::vector<double>> run_all(const DenseKernels& k, int32_t team) {
     std::vector<double> s = random_matrix(rows, rows, 6);
     with_team(team, [&] { k.syrk_lower_sub(rows, 600, a.data(), rows, s.data(), rows); });
     out.push_back(s);
+    std::vector<double> packed = random_matrix(static_cast<int32_t>(packed_lower_size(rows)), 1, 7);
+    with_team(team, [&] { k.syrk_lower_sub_packed(rows, 600, a.data(), rows, packed.data()); });
+    out.push_back(packed);
   }
   return out;
 }

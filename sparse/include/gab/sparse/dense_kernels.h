@@ -19,9 +19,39 @@
 // dimension and a leading dimension are formed in ptrdiff_t.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 namespace gab {
+
+// Packed lower triangle of an n x n matrix: the columns in panels of
+// kPackedLowerPanel, panel J (columns J*P .. min(n, (J+1)*P) - 1) stored
+// column-major from row J*P down, leading dimension n - J*P. Half the room
+// of the square for large n (the waste is P/2 entries per column) while
+// every column stays contiguous and every panel a plain column-major block.
+// The multifrontal update matrices are stored this way.
+constexpr int32_t kPackedLowerPanel = 16;
+// Doubles the packed lower triangle of an n x n matrix takes.
+constexpr int64_t packed_lower_size(int64_t n) {
+  const int64_t panels = (n + kPackedLowerPanel - 1) / kPackedLowerPanel;
+  // sum over panels J of width_J (n - J P), the last one narrower.
+  const int64_t full = n / kPackedLowerPanel;
+  int64_t size = kPackedLowerPanel * (full * n - kPackedLowerPanel * (full * (full - 1) / 2));
+  if (panels > full) size += (n - full * kPackedLowerPanel) * (n - full * kPackedLowerPanel);
+  return size;
+}
+// Leading dimension of column j's panel.
+constexpr int32_t packed_lower_ld(int32_t n, int32_t j) { return n - j / kPackedLowerPanel * kPackedLowerPanel; }
+// Column j of the packed lower triangle at c: entry (i, j), i >= j, is at
+// packed_lower_column(c, n, j)[i].
+inline double* packed_lower_column(double* c, int32_t n, int32_t j) {
+  const int64_t panel = j / kPackedLowerPanel, first = panel * kPackedLowerPanel;
+  return c + kPackedLowerPanel * (panel * n - kPackedLowerPanel * (panel * (panel - 1) / 2)) +
+         (j - first) * (n - first) - first;
+}
+inline const double* packed_lower_column(const double* c, int32_t n, int32_t j) {
+  return packed_lower_column(const_cast<double*>(c), n, j);
+}
 
 enum class SimdLevel { kScalar = 0, kAvx2 = 1, kAvx512 = 2 };
 
@@ -52,6 +82,9 @@ struct DenseKernels {
   // flops.
   void (*gemm_nt_sub)(int32_t m, int32_t n, int32_t k, const double* a, int32_t lda,
                       const double* b, int32_t ldb, double* c, int32_t ldc);
+  // syrk_lower_sub with C packed (packed_lower_column above): the same
+  // operations in the same order, so the same bits as on a square C.
+  void (*syrk_lower_sub_packed)(int32_t n, int32_t k, const double* a, int32_t lda, double* c);
 };
 
 // Kernels of the given level; a level the CPU lacks falls back to the best

@@ -32,7 +32,8 @@ struct FactorSchedule {
   std::vector<int32_t> order;
   std::vector<int32_t> group_ptr;  // threads + 2 offsets into order
   // Offset, in the update-stack buffer, of supernode s's update matrix
-  // ((rows - cols)^2 doubles). Each group has its own pair of stacks (see
+  // (a packed lower triangle of order rows - cols: packed_lower_size
+  // doubles, dense_kernels.h). Each group has its own pair of stacks (see
   // supernodal_factor.cpp) in [stack_ptr[g], stack_ptr[g + 1]).
   std::vector<int64_t> update_offset;
   std::vector<int64_t> stack_ptr;  // threads + 2
