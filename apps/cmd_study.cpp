@@ -111,6 +111,7 @@ Status study_one(const std::string& path, const std::string& ordering, int64_t u
       out->true_touched_avg /= static_cast<double>(seq.size());
     }
   }
+  GAB_RETURN_IF_ERROR(chol.prepare_updates());  // not inside the first update's time
   for (size_t u = 0; u < seq.size(); u += static_cast<size_t>(batch)) {
     const int32_t count = static_cast<int32_t>(std::min<size_t>(batch, seq.size() - u));
     UpdateRecord rec;

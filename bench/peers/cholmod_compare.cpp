@@ -196,6 +196,8 @@ void compare(const std::string& path) {
   single.factorize(a);
   batch.analyze(a, options);
   batch.factorize(a);
+  single.prepare_updates();  // not inside the first update's time
+  batch.prepare_updates();
   std::vector<double> g_single, g_batch;
   double touched_single = 0.0;
   for (int u = 0; u < kUpdates; ++u) {

@@ -236,7 +236,8 @@ Status read_obj(const std::string& path, Mesh* mesh) {
 
 std::string format_obj(const Mesh& mesh) {
   std::string out = "# written by gab\n";
-  out.reserve(static_cast<size_t>(mesh.num_vertices()) * 42 + static_cast<size_t>(mesh.num_triangles()) * 26);
+  out.reserve(out.size() + static_cast<size_t>(mesh.num_vertices()) * (2 + 3 * (mesh_detail::kMaxRealChars + 1)) +
+              static_cast<size_t>(mesh.num_triangles()) * (2 + 3 * (mesh_detail::kMaxIndexChars + 1)));
   for (size_t i = 0; i < mesh.positions.size(); ++i) {
     if (i % 3 == 0) out += "v";
     out += ' ';

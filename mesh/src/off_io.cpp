@@ -156,7 +156,8 @@ std::string format_off(const Mesh& mesh) {
   using mesh_detail::append_int;
   using mesh_detail::append_real;
   std::string out = "OFF\n";
-  out.reserve(static_cast<size_t>(mesh.num_vertices()) * 40 + static_cast<size_t>(mesh.num_triangles()) * 24);
+  out.reserve(64 + mesh.positions.size() * (mesh_detail::kMaxRealChars + 1) +
+              static_cast<size_t>(mesh.num_triangles()) * (2 + 3 * (mesh_detail::kMaxIndexChars + 1)));
   append_int(&out, mesh.num_vertices());
   out += ' ';
   append_int(&out, mesh.num_triangles());

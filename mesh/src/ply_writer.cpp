@@ -39,7 +39,8 @@ std::string format_ply(const Mesh& mesh, const PlyWriteOptions& options) {
                     std::to_string(mesh.num_vertices()) + "\nproperty " + real + " x\nproperty " + real +
                     " y\nproperty " + real + " z\nelement face " + std::to_string(mesh.num_triangles()) +
                     "\nproperty list uchar int vertex_indices\nend_header\n";
-  out.reserve(out.size() + mesh.positions.size() * (ascii ? 20 : 8) + mesh.triangles.size() / 3 * (ascii ? 26 : 13));
+  out.reserve(out.size() + mesh.positions.size() * (ascii ? mesh_detail::kMaxRealChars + 1 : 8) +
+              mesh.triangles.size() / 3 * (ascii ? 2 + 3 * (mesh_detail::kMaxIndexChars + 1) : 13));
   for (size_t i = 0; i < mesh.positions.size(); ++i) {
     const double x = mesh.positions[i];
     if (ascii) {

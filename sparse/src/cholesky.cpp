@@ -30,10 +30,10 @@ Status Cholesky::analyze(const CscMatrix& lower, const AnalyzeOptions& options) 
                       {work_.data(), sizeof(double) * static_cast<size_t>(work)}});
   }
   map_assembly(lower, &symbolic_);
-  // The updater's workspace is small (about 11 n doubles): set it up now so
-  // the first anchor update does not pay for allocation and page faults.
+  // The updater's workspace waits for the first update (prepare_updates):
+  // a caller that only factors and solves (a decoder that refactors) would
+  // otherwise fault in ~11 n doubles it never uses.
   update_ready_ = false;
-  GAB_RETURN_IF_ERROR(prepare_update_workspace());
   analyzed_ = true;
   return Status::Ok();
 }

@@ -1,7 +1,8 @@
 // Cholesky: the engine's front door. Analyze a pattern once, factor (and
 // refactor) values with that pattern, solve for one or several right-hand
-// sides. Owns its buffers: all allocation happens in analyze() and the first
-// factorize(); later factorize() and solve() calls allocate nothing.
+// sides. Owns its buffers: all allocation happens in analyze(), the first
+// factorize(), the first solve() with a given number of right-hand sides and
+// the first update; later calls allocate nothing.
 //
 //   gab::Cholesky chol;
 //   GAB_RETURN_IF_ERROR(chol.analyze(lower));      // ordering + symbolic
@@ -37,9 +38,9 @@ class Cholesky {
 
   // In place, the factor of A + w^2 e_j e_j^T (j in the original
   // numbering): Givens rotations along the elimination-tree path, no change
-  // of structure, no allocation after the first call. Cost: the entries of
-  // L on the path (reported in *stats when given). Solves afterwards see the
-  // updated matrix.
+  // of structure, no allocation after the first update (prepare_updates).
+  // Cost: the entries of L on the path (reported in *stats when given).
+  // Solves afterwards see the updated matrix.
   Status add_anchor(int32_t j, double weight, UpdateStats* stats = nullptr);
   // Batch form of add_anchor: count anchors, swept over the union of their
   // paths up to 8 at a time (stats sum the sweeps).
@@ -47,6 +48,10 @@ class Cholesky {
   // The factor of A - w^2 e_j e_j^T; if that matrix would not be positive
   // definite, kNotPositiveDefinite and the factor is unchanged.
   Status remove_anchor(int32_t j, double weight, UpdateStats* stats = nullptr);
+  // Sets up the updaters' workspace (about 11 n doubles) now; otherwise
+  // the first update after analyze() does, so a caller timing updates calls
+  // this first. Requires a successful factorize().
+  Status prepare_updates() { return prepare_update(); }
 
   void set_kernels(const DenseKernels& kernels) { kernels_ = &kernels; }
   bool factorized() const { return factorized_; }
