@@ -71,7 +71,7 @@ Status RelaxedReconstruction::init(const EdgeGraph& graph, double weight,
                                " has no anchor (every component needs one)");
     }
   }
-  GAB_RETURN_IF_ERROR(assemble_normal_matrix(graph, anchors, weight, &matrix_));
+  GAB_RETURN_IF_ERROR(assemble_normal_matrix(graph, anchors, weight, &matrix_, threads_));
   AnalyzeOptions options;
   options.threads = threads_;
   GAB_RETURN_IF_ERROR(chol_.analyze(matrix_, options));

@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include "gab/mesh/edge_graph.h"
+#include "mesh_test_util.h"
 
 namespace gab {
 namespace {
@@ -50,6 +53,21 @@ TEST(NormalMatrixTest, EqualsDenseLaplacianSquaredPlusAnchors) {
   }
   for (int32_t i = 0; i < n; ++i)
     for (int32_t j = 0; j <= i; ++j) EXPECT_EQ(got[i * n + j], expect[i * n + j]) << i << "," << j;
+}
+
+TEST(NormalMatrixTest, TwoThreadsAssembleTheSameBits) {
+  // Large enough (20,800 vertices) for the second thread to take part.
+  const Mesh mesh = testing_util::grid(160, 130);
+  const EdgeGraph g = build_edge_graph(mesh);
+  const std::vector<int32_t> anchors = benchmark_anchors(g, 300);
+  CscMatrix one, two;
+  ASSERT_TRUE(assemble_normal_matrix(g, anchors, 100.0, &one, 1).ok());
+  ASSERT_TRUE(assemble_normal_matrix(g, anchors, 100.0, &two, 2).ok());
+  EXPECT_EQ(one.colptr, two.colptr);
+  EXPECT_EQ(one.rowind, two.rowind);
+  ASSERT_EQ(one.values.size(), two.values.size());
+  EXPECT_EQ(std::memcmp(one.values.data(), two.values.data(), sizeof(double) * one.values.size()), 0);
+  EXPECT_TRUE(check_csc(two).ok());
 }
 
 TEST(NormalMatrixTest, RejectsBadAnchors) {

@@ -17,8 +17,10 @@ namespace gab {
 // of every vertex plus the full diagonal (kept even where a value is zero,
 // e.g. isolated vertices, so the pattern never depends on the anchors).
 // Anchors must be distinct and in range. O(sum of squared degrees).
+// threads >= 2 splits the columns between two threads on large meshes; the
+// matrix is bit-identical either way.
 Status assemble_normal_matrix(const EdgeGraph& graph, const std::vector<int32_t>& anchors,
-                              double weight, CscMatrix* lower);
+                              double weight, CscMatrix* lower, int32_t threads = 1);
 
 // The benchmark anchor rule of DESIGN.md section 6: k0 anchors at vertices
 // floor(j n / k0), j = 0..k0-1 (distinct), then the smallest vertex of each
