@@ -100,8 +100,8 @@ namespace {
 
 TEST(CliStudyTest, JsonCsvAndSvg) {
   const std::string path = write_temp("octa_study.off", kOctahedron);
-  const std::string csv = ::testing::TempDir() + "/" + std::to_string(getpid()) + "_study.csv";
-  const std::string svg = ::testing::TempDir() + "/" + std::to_string(getpid()) + "_study.svg";
+  const std::string csv = gab_test::scratch_path("study.csv");
+  const std::string svg = gab_test::scratch_path("study.svg");
   const CommandResult r = run_gab("study " + path + " --anchors 1 --updates 4 --json --csv " + csv + " --svg " + svg);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* key : {"\"n\": 6", "\"nnz_L\":", "\"updates\": 4", "\"path_len_avg\":", "\"path_len_max\":",

@@ -235,7 +235,7 @@ TEST(CodecCliTest, UnreachableTargetWarnsAndStillWrites) {
 }
 
 TEST(CodecCliTest, DemoRunsOnAGivenMeshAndWritesItsFiles) {
-  const std::string dir = ::testing::TempDir() + "/gab_demo_" + std::to_string(getpid());
+  const std::string dir = gab_test::scratch_path("demo");
   const std::string mesh = write_temp("demo.off", torus_off(40, 20));
   CommandResult r = run_gab("demo", "mkdir -p " + dir + " && cd " + dir + " && GAB_DEMO_MESH=" + mesh);
   ASSERT_EQ(r.exit_code, 0) << r.err;

@@ -7,9 +7,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <system_error>
 
 namespace gab_test {
 
@@ -41,9 +43,28 @@ inline CommandResult run_gab(const std::string& args, const std::string& prefix 
   return r;
 }
 
-// Writes `text` to a file in the test temp dir, unique per process; returns its path.
+// This process's scratch folder in the test temp dir: made on first use and
+// removed, with whatever the tests and the binary wrote in it, when the
+// process exits (ctest runs each test in a process of its own).
+inline const std::string& scratch_dir() {
+  struct Dir {
+    std::string path = ::testing::TempDir() + "/gab_cli_" + std::to_string(getpid());
+    Dir() { std::filesystem::create_directories(path); }
+    ~Dir() {
+      std::error_code ignored;
+      std::filesystem::remove_all(path, ignored);
+    }
+  };
+  static const Dir dir;
+  return dir.path;
+}
+
+// A path in the scratch folder.
+inline std::string scratch_path(const std::string& name) { return scratch_dir() + "/" + name; }
+
+// Writes `text` to a file in the scratch folder; returns its path.
 inline std::string write_temp(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + "/" + std::to_string(getpid()) + "_" + name;
+  const std::string path = scratch_path(name);
   std::ofstream(path, std::ios::binary) << text;
   return path;
 }
