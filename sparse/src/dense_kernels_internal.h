@@ -115,6 +115,23 @@ inline void pack_panels(const double* a, ptrdiff_t lda, int32_t rows, int32_t k,
   }
 }
 
+// Where column j of a lower triangle C lives: a column-major square (ld
+// ldc), or packed panels (packed_lower_column, dense_kernels.h). A tile's
+// kNr columns start at a multiple of kNr, so they always share one panel
+// and one leading dimension.
+struct SquareColumns {
+  double* c;
+  int32_t ldc;
+  double* column(int32_t j) const { return c + static_cast<ptrdiff_t>(j) * ldc; }
+  int32_t ld(int32_t) const { return ldc; }
+};
+struct PackedColumns {
+  double* c;
+  int32_t n;
+  double* column(int32_t j) const { return packed_lower_column(c, n, j); }
+  int32_t ld(int32_t j) const { return packed_lower_ld(n, j); }
+};
+
 // Blocking drivers over a register tile. T provides:
 //   kMr, kNr         register tile (rows x columns of C); kNr divides kMr
 //   kKc, kMc, kNc    cache blocks: inner-dimension slice, rows of a packed A
@@ -138,22 +155,6 @@ inline void pack_panels(const double* a, ptrdiff_t lda, int32_t rows, int32_t k,
 // inner step still touches exactly one 64-byte line of it (kNr doubles at an
 // offset that is a multiple of kNr), so it costs the same L1 room as a
 // dedicated kNr-wide packing, and SYRK packs its single operand only once.
-// Where column j of a lower triangle C lives: a column-major square (ld
-// ldc), or packed panels (packed_lower.h). A tile's kNr columns start at a
-// multiple of kNr, so they always share one panel and one leading dimension.
-struct SquareColumns {
-  double* c;
-  int32_t ldc;
-  double* column(int32_t j) const { return c + static_cast<ptrdiff_t>(j) * ldc; }
-  int32_t ld(int32_t) const { return ldc; }
-};
-struct PackedColumns {
-  double* c;
-  int32_t n;
-  double* column(int32_t j) const { return packed_lower_column(c, n, j); }
-  int32_t ld(int32_t j) const { return packed_lower_ld(n, j); }
-};
-
 template <class T>
 struct Blocked {
   static_assert(T::kMr % T::kNr == 0 && T::kMc % T::kMr == 0 && T::kNc % T::kMr == 0,
@@ -206,7 +207,7 @@ struct Blocked {
     syrk_into(n, k, a, lda, PackedColumns{c, n});
   }
 
-  // SYRK into the lower triangle of C, its columns placed by `cols`
+  // SYRK into the lower triangle of C, its columns placed by `ccols`
   // (SquareColumns or PackedColumns): the same tiles in the same order
   // either way, so both forms give the same bits.
   template <class Columns>

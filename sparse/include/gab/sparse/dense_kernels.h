@@ -19,7 +19,6 @@
 // dimension and a leading dimension are formed in ptrdiff_t.
 #pragma once
 
-#include <cstddef>
 #include <cstdint>
 
 namespace gab {
@@ -31,14 +30,15 @@ namespace gab {
 // every column stays contiguous and every panel a plain column-major block.
 // The multifrontal update matrices are stored this way.
 constexpr int32_t kPackedLowerPanel = 16;
-// Doubles the packed lower triangle of an n x n matrix takes.
+// Doubles before panel J, that is before column J * kPackedLowerPanel.
+constexpr int64_t packed_lower_panel_offset(int64_t n, int64_t panel) {
+  return kPackedLowerPanel * (panel * n - kPackedLowerPanel * (panel * (panel - 1) / 2));
+}
+// Doubles the packed lower triangle of an n x n matrix takes: the full
+// panels, then the narrower last one.
 constexpr int64_t packed_lower_size(int64_t n) {
-  const int64_t panels = (n + kPackedLowerPanel - 1) / kPackedLowerPanel;
-  // sum over panels J of width_J (n - J P), the last one narrower.
-  const int64_t full = n / kPackedLowerPanel;
-  int64_t size = kPackedLowerPanel * (full * n - kPackedLowerPanel * (full * (full - 1) / 2));
-  if (panels > full) size += (n - full * kPackedLowerPanel) * (n - full * kPackedLowerPanel);
-  return size;
+  const int64_t rest = n % kPackedLowerPanel;
+  return packed_lower_panel_offset(n, n / kPackedLowerPanel) + rest * rest;
 }
 // Leading dimension of column j's panel.
 constexpr int32_t packed_lower_ld(int32_t n, int32_t j) { return n - j / kPackedLowerPanel * kPackedLowerPanel; }
@@ -46,8 +46,7 @@ constexpr int32_t packed_lower_ld(int32_t n, int32_t j) { return n - j / kPacked
 // packed_lower_column(c, n, j)[i].
 inline double* packed_lower_column(double* c, int32_t n, int32_t j) {
   const int64_t panel = j / kPackedLowerPanel, first = panel * kPackedLowerPanel;
-  return c + kPackedLowerPanel * (panel * n - kPackedLowerPanel * (panel * (panel - 1) / 2)) +
-         (j - first) * (n - first) - first;
+  return c + packed_lower_panel_offset(n, panel) + (j - first) * (n - first) - first;
 }
 inline const double* packed_lower_column(const double* c, int32_t n, int32_t j) {
   return packed_lower_column(const_cast<double*>(c), n, j);
