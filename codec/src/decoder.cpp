@@ -129,10 +129,8 @@ Status add_chunk(int32_t chunk, const std::vector<int32_t>& anchors, const std::
   const auto t = std::chrono::steady_clock::now();
   if (chunk == 0) {
     const Status s = st->rec.init(st->graph, st->header.weight, anchors, coefficients);
+    if (s.code() == StatusCode::kOutOfMemory) return corrupt(s.message());  // max_factor_entries
     if (!s.ok()) return corrupt("chunk 0: " + s.message());
-    if (st->rec.cholesky().symbolic().stored_L > st->options.max_factor_entries) {
-      return corrupt("the factor would exceed " + std::to_string(st->options.max_factor_entries) + " entries");
-    }
     st->stats->factor_s += seconds_since(t);
   } else {
     bool refactor = false;
@@ -251,6 +249,7 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
   AnchorChunkCoder coder(header.quantizer, &models);
   ChunkDecoding state(header, graph, options, stats);
   state.rec.set_threads(options.threads);
+  state.rec.set_max_factor_entries(options.max_factor_entries);
   if (header.levels()) {
     GAB_RETURN_IF_ERROR(decode_level_chunks(&in, &coder, &state));
   } else {

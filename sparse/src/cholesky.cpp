@@ -11,6 +11,10 @@ Status Cholesky::analyze(const CscMatrix& lower, const AnalyzeOptions& options) 
   analyzed_ = factorized_ = false;
   populator_.finish();  // the buffers may move
   GAB_RETURN_IF_ERROR(analyze_structure(lower, options, &symbolic_));
+  if (symbolic_.stored_L > options.max_factor_entries) {
+    return Status::Error(StatusCode::kOutOfMemory,
+                         "the factor would exceed " + std::to_string(options.max_factor_entries) + " entries");
+  }
   const int64_t values = symbolic_.value_ptr[symbolic_.num_supernodes];
   schedule_ = plan_factor_schedule(symbolic_, options.threads);
   // The solves split the tree by their own work (entries, not flops): the

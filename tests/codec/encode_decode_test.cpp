@@ -225,6 +225,23 @@ TEST(EncodeDecode, FlatAndPointLikeMeshes) {
   for (double x : out.positions) EXPECT_DOUBLE_EQ(x, 1.5);
 }
 
+TEST(EncodeDecode, DecoderRefusesAFactorOverItsLimit) {
+  const Mesh torus = testing_util::bumpy_torus(24, 12);
+  EncodeOptions eo;
+  eo.max_anchors = 30;
+  EncodeStats es;
+  const std::vector<uint8_t> file = testing_util::encode_or_die(torus, eo, &es);
+  DecodeOptions options;
+  options.max_factor_entries = 1000;  // the torus's factor stores several thousand
+  Mesh out;
+  DecodeStats ds;
+  const Status s = decode_mesh(file.data(), file.size(), options, &out, &ds);
+  EXPECT_EQ(s.code(), StatusCode::kParseError);
+  EXPECT_EQ(s.message(), "the factor would exceed 1000 entries");
+  options.max_factor_entries = DecodeOptions().max_factor_entries;
+  EXPECT_TRUE(decode_mesh(file.data(), file.size(), options, &out, &ds).ok());
+}
+
 TEST(EncodeDecode, OptionErrors) {
   const Mesh mesh = bumpy_torus(8, 6);
   std::vector<uint8_t> file;

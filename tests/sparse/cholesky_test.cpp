@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "gab/sparse/oracles.h"
 #include "test_matrices.h"
@@ -165,6 +166,27 @@ TEST(CholeskyTest, IndefiniteInsideALargeSupernodeIsReported) {
   Cholesky chol;
   ASSERT_TRUE(chol.analyze(a).ok());
   EXPECT_EQ(chol.factorize(a).code(), StatusCode::kNotPositiveDefinite);
+}
+
+TEST(CholeskyTest, FactorLimitRefusesBeforeAnyStorageIsReserved) {
+  const CscMatrix a = testing_util::grid_laplacian(60, 50);
+  AnalyzeOptions options;
+  options.threads = 2;
+  Cholesky probe;
+  ASSERT_TRUE(probe.analyze(a, options).ok());
+  const int64_t stored = probe.symbolic().stored_L;
+
+  options.max_factor_entries = stored - 1;
+  Cholesky chol;
+  const Status s = chol.analyze(a, options);
+  EXPECT_EQ(s.code(), StatusCode::kOutOfMemory);
+  EXPECT_EQ(s.message(), "the factor would exceed " + std::to_string(stored - 1) + " entries");
+  EXPECT_EQ(chol.values(), nullptr);
+  EXPECT_EQ(chol.factorize(a).message(), "factorize before analyze");
+
+  options.max_factor_entries = stored;  // the bound itself is allowed
+  ASSERT_TRUE(chol.analyze(a, options).ok());
+  ASSERT_TRUE(chol.factorize(a).ok());
 }
 
 TEST(CholeskyTest, FactorizeRejectsAnotherPattern) {

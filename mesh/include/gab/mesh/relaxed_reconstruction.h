@@ -69,6 +69,11 @@ class RelaxedReconstruction {
   // call before init. The factor, hence every shape, is bit-identical for
   // any count (factor_schedule.h): an encoder and a decoder may differ.
   void set_threads(int32_t threads) { threads_ = threads; }
+  // A bound on the factor's stored entries, checked by init right after the
+  // analysis, before the factor's storage is reserved or factored (see
+  // AnalyzeOptions::max_factor_entries): over it, init fails with
+  // kOutOfMemory. For decoders of untrusted files. Default: none.
+  void set_max_factor_entries(int64_t entries) { max_factor_entries_ = entries; }
 
   double weight() const { return weight_; }
   int32_t num_vertices() const { return n_; }
@@ -86,6 +91,7 @@ class RelaxedReconstruction {
   int32_t n_ = 0;
   double weight_ = 0.0;
   int32_t threads_ = 1;
+  int64_t max_factor_entries_ = INT64_MAX;
   Cholesky chol_;
   CscMatrix matrix_;  // lower triangle of L^T L + w^2 E^T E for the anchors so far
   std::vector<int32_t> anchors_;
