@@ -129,7 +129,8 @@ Status add_chunk(int32_t chunk, const std::vector<int32_t>& anchors, const std::
   const auto t = std::chrono::steady_clock::now();
   if (chunk == 0) {
     const Status s = st->rec.init(st->graph, st->header.weight, anchors, coefficients);
-    if (s.code() == StatusCode::kOutOfMemory) return corrupt(s.message());  // max_factor_entries
+    // The factor is over max_factor_entries, or its memory cannot be had.
+    if (s.code() == StatusCode::kOutOfMemory) return corrupt(s.message());
     if (!s.ok()) return corrupt("chunk 0: " + s.message());
     st->stats->factor_s += seconds_since(t);
   } else {
