@@ -71,6 +71,14 @@ TEST(GoldenFiles, SeedsDecodeToTheirPinnedShapes) {
   }
 }
 
+// A fresh encoding's header against a seed's, byte for byte.
+void expect_same_header(const std::vector<uint8_t>& fresh, const std::vector<uint8_t>& golden) {
+  ASSERT_GE(fresh.size(), kGabHeaderBytes);
+  ASSERT_GE(golden.size(), kGabHeaderBytes);
+  EXPECT_EQ(std::vector<uint8_t>(fresh.begin(), fresh.begin() + kGabHeaderBytes),
+            std::vector<uint8_t>(golden.begin(), golden.begin() + kGabHeaderBytes));
+}
+
 TEST(GoldenFiles, EncoderWritesThePinnedHeader) {
   EncodeOptions options;
   options.max_anchors = 20;
@@ -79,10 +87,7 @@ TEST(GoldenFiles, EncoderWritesThePinnedHeader) {
   EncodeStats es;
   const std::vector<uint8_t> fresh = testing_util::encode_or_die(gab_fuzz::seed_torus(), options, &es);
   const std::vector<uint8_t> golden = seed("torus-full");
-  ASSERT_GE(fresh.size(), kGabHeaderBytes);
-  ASSERT_GE(golden.size(), kGabHeaderBytes);
-  EXPECT_EQ(std::vector<uint8_t>(fresh.begin(), fresh.begin() + kGabHeaderBytes),
-            std::vector<uint8_t>(golden.begin(), golden.begin() + kGabHeaderBytes));
+  expect_same_header(fresh, golden);
 }
 
 TEST(GoldenFiles, EncoderWritesThePinnedLevelHeader) {
@@ -97,10 +102,7 @@ TEST(GoldenFiles, EncoderWritesThePinnedLevelHeader) {
   const std::vector<uint8_t> fresh = testing_util::encode_or_die(gab_fuzz::seed_torus(), options, &es);
   EXPECT_EQ(es.chunk_anchors, (std::vector<int32_t>{4, 8, 8, 10, 10}));
   const std::vector<uint8_t> golden = seed("torus-levels");
-  ASSERT_GE(fresh.size(), kGabHeaderBytes);
-  ASSERT_GE(golden.size(), kGabHeaderBytes);
-  EXPECT_EQ(std::vector<uint8_t>(fresh.begin(), fresh.begin() + kGabHeaderBytes),
-            std::vector<uint8_t>(golden.begin(), golden.begin() + kGabHeaderBytes));
+  expect_same_header(fresh, golden);
 }
 
 TEST(GoldenFiles, LevelPrefixSeedDecodesItsFirstLevel) {
