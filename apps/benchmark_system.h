@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "gab/sparse/csc.h"
-#include "gab/sparse/status.h"
+#include "gab/status.h"
 
 namespace gab {
 namespace cli {

@@ -8,6 +8,7 @@
 #include <map>
 #include <string>
 
+#include "bench_check.h"
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/normal_matrix.h"
 #include "gab/mesh/off_io.h"
@@ -62,7 +63,7 @@ void BM_Order(benchmark::State& state, std::string name) {
   const System* s = load(name);
   if (!s) return state.SkipWithError("input not available");
   std::vector<int32_t> perm;
-  for (auto _ : state) gab::amd_order(s->lower, &perm);
+  for (auto _ : state) gab_bench::check(gab::amd_order(s->lower, &perm), "amd_order");
 }
 
 void BM_Symbolic(benchmark::State& state, std::string name) {
@@ -70,9 +71,9 @@ void BM_Symbolic(benchmark::State& state, std::string name) {
   if (!s) return state.SkipWithError("input not available");
   gab::AnalyzeOptions options;
   options.ordering = gab::Ordering::kGiven;
-  gab::amd_order(s->lower, &options.given_perm);
+  gab_bench::check(gab::amd_order(s->lower, &options.given_perm), "amd_order");
   gab::SymbolicFactor f;
-  for (auto _ : state) gab::analyze(s->lower, options, &f);
+  for (auto _ : state) gab_bench::check(gab::analyze(s->lower, options, &f), "analyze");
   state.counters["nnz_L"] = static_cast<double>(f.nnz_L);
   state.counters["supernodes"] = f.num_supernodes;
 }
@@ -81,7 +82,7 @@ void BM_Factor(benchmark::State& state, std::string name) {
   const System* s = load(name);
   if (!s) return state.SkipWithError("input not available");
   gab::Cholesky chol;
-  chol.analyze(s->lower);
+  gab_bench::check(chol.analyze(s->lower), "analyze");
   for (auto _ : state) {
     if (!chol.factorize(s->lower).ok()) return state.SkipWithError("factorization failed");
   }
@@ -93,15 +94,15 @@ void BM_Solve3(benchmark::State& state, std::string name) {
   const System* s = load(name);
   if (!s) return state.SkipWithError("input not available");
   gab::Cholesky chol;
-  chol.analyze(s->lower);
-  chol.factorize(s->lower);
+  gab_bench::check(chol.analyze(s->lower), "analyze");
+  gab_bench::check(chol.factorize(s->lower), "factorize");
   std::vector<double> x;
   const int32_t n = s->lower.ncols;
   for (auto _ : state) {
     state.PauseTiming();
     x = s->rhs;
     state.ResumeTiming();
-    chol.solve(x.data(), 3, n);
+    gab_bench::check(chol.solve(x.data(), 3, n), "solve");
   }
 }
 

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_check.h"
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/normal_matrix.h"
 #include "gab/mesh/off_io.h"
@@ -35,33 +36,33 @@ void row(const std::string& path, int updates) {
   const gab::EdgeGraph g = gab::build_edge_graph(mesh);
   const std::vector<int32_t> anchors = gab::benchmark_anchors(g, 100);
   gab::CscMatrix a;
-  gab::assemble_normal_matrix(g, anchors, 1.0, &a);
+  gab_bench::check(gab::assemble_normal_matrix(g, anchors, 1.0, &a), "table1: assembly");
   const int32_t n = a.ncols;
   gab::Cholesky chol;
-  chol.analyze(a);
+  gab_bench::check(chol.analyze(a), "table1: analyze");
   std::vector<double> tf, ts;
   for (int r = 0; r < 3; ++r) {
     double t0 = now();
-    chol.factorize(a);
+    gab_bench::check(chol.factorize(a), "table1: factorize");
     tf.push_back(now() - t0);
   }
   std::vector<double> b = gab::anchor_right_hand_sides(mesh, anchors, 1.0);
   for (int r = 0; r < 5; ++r) {
     std::vector<double> x(b.begin(), b.begin() + n);
     double t0 = now();
-    chol.solve(x.data(), 1, n);
+    gab_bench::check(chol.solve(x.data(), 1, n), "table1: solve");
     ts.push_back(now() - t0);
   }
   std::vector<char> anchored(n, 0);
   for (int32_t v : anchors) anchored[v] = 1;
-  chol.prepare_updates();  // not inside the first update's time
+  gab_bench::check(chol.prepare_updates(), "table1: prepare_updates");  // not inside the first update's time
   std::vector<double> tu;
   for (uint64_t t = 1; static_cast<int>(tu.size()) < updates && static_cast<int>(tu.size()) < n - 200; ++t) {
     const int32_t v = static_cast<int32_t>((t * 2654435761ull) % static_cast<uint64_t>(n));
     if (anchored[v]) continue;
     anchored[v] = 1;
     double t0 = now();
-    chol.add_anchor(v, 1.0);
+    gab_bench::check(chol.add_anchor(v, 1.0), "table1: add_anchor");
     tu.push_back(now() - t0);
   }
   auto avg = [&](size_t lo, size_t hi) {

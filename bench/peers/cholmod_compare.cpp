@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "../bench_check.h"
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/normal_matrix.h"
 #include "gab/mesh/off_io.h"
@@ -85,7 +86,7 @@ void compare(const std::string& path) {
   const gab::EdgeGraph g = gab::build_edge_graph(mesh);
   const std::vector<int32_t> anchors = gab::benchmark_anchors(g, 100);
   gab::CscMatrix a;
-  gab::assemble_normal_matrix(g, anchors, 1.0, &a);
+  gab_bench::check(gab::assemble_normal_matrix(g, anchors, 1.0, &a), "cholmod_compare: gab::assemble_normal_matrix");
   const std::vector<double> rhs = gab::anchor_right_hand_sides(mesh, anchors, 1.0);
   const int32_t n = a.ncols;
 
@@ -95,21 +96,21 @@ void compare(const std::string& path) {
   gab::Cholesky chol;
   for (int r = 0; r < kRepeat; ++r) {
     double t0 = now();
-    gab::amd_order(a, &perm);
+    gab_bench::check(gab::amd_order(a, &perm), "cholmod_compare: gab::amd_order");
     t_order.push_back(now() - t0);
   }
   gab::AnalyzeOptions options;
   options.ordering = gab::Ordering::kGiven;
   options.given_perm = perm;
   options.threads = g_threads;
-  chol.analyze(a, options);
+  gab_bench::check(chol.analyze(a, options), "cholmod_compare: chol.analyze");
   std::vector<double> x;
   for (int r = 0; r < kRepeat; ++r) {
     double t0 = now();
-    chol.factorize(a);
+    gab_bench::check(chol.factorize(a), "cholmod_compare: chol.factorize");
     double t1 = now();
     x = rhs;
-    chol.solve(x.data(), 3, n);
+    gab_bench::check(chol.solve(x.data(), 3, n), "cholmod_compare: chol.solve");
     double t2 = now();
     t_factor.push_back(t1 - t0);
     t_solve.push_back(t2 - t1);
@@ -192,24 +193,24 @@ void compare(const std::string& path) {
   cholmod_free_factor(&lbatch, &c);
 
   gab::Cholesky single, batch;
-  single.analyze(a, options);
-  single.factorize(a);
-  batch.analyze(a, options);
-  batch.factorize(a);
-  single.prepare_updates();  // not inside the first update's time
-  batch.prepare_updates();
+  gab_bench::check(single.analyze(a, options), "cholmod_compare: single.analyze");
+  gab_bench::check(single.factorize(a), "cholmod_compare: single.factorize");
+  gab_bench::check(batch.analyze(a, options), "cholmod_compare: batch.analyze");
+  gab_bench::check(batch.factorize(a), "cholmod_compare: batch.factorize");
+  gab_bench::check(single.prepare_updates(), "cholmod_compare: single.prepare_updates");  // not timed
+  gab_bench::check(batch.prepare_updates(), "cholmod_compare: batch.prepare_updates");
   std::vector<double> g_single, g_batch;
   double touched_single = 0.0;
   for (int u = 0; u < kUpdates; ++u) {
     gab::UpdateStats st;
     double t0 = now();
-    single.add_anchor(seq[u], 1.0, &st);
+    gab_bench::check(single.add_anchor(seq[u], 1.0, &st), "cholmod_compare: single.add_anchor");
     g_single.push_back(now() - t0);
     touched_single += static_cast<double>(st.touched);
   }
   for (int u = 0; u + 8 <= kUpdates; u += 8) {
     double t0 = now();
-    batch.add_anchors(seq.data() + u, 8, 1.0);
+    gab_bench::check(batch.add_anchors(seq.data() + u, 8, 1.0), "cholmod_compare: batch.add_anchors");
     g_batch.push_back((now() - t0) / 8.0);
   }
   double sum_cs = 0, sum_gs = 0, sum_cb = 0, sum_gb = 0;

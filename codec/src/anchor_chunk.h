@@ -30,7 +30,7 @@
 #include "gab/codec/int_coder.h"
 #include "gab/codec/quantizer.h"
 #include "gab/codec/range_coder.h"
-#include "gab/sparse/status.h"
+#include "gab/status.h"
 
 namespace gab {
 

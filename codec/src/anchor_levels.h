@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "gab/mesh/edge_graph.h"
-#include "gab/sparse/status.h"
+#include "gab/status.h"
 
 namespace gab {
 

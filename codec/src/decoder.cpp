@@ -129,8 +129,10 @@ Status add_chunk(int32_t chunk, const std::vector<int32_t>& anchors, const std::
   const auto t = std::chrono::steady_clock::now();
   if (chunk == 0) {
     const Status s = st->rec.init(st->graph, st->header.weight, anchors, coefficients);
-    // The factor is over max_factor_entries, or its memory cannot be had.
-    if (s.code() == StatusCode::kOutOfMemory) return corrupt(s.message());
+    // The factor is over max_factor_entries (kResourceExhausted), or its
+    // memory cannot be had (kOutOfMemory): the caller's limits, not the
+    // file's fault, so the code goes through unchanged.
+    if (s.code() == StatusCode::kResourceExhausted || s.code() == StatusCode::kOutOfMemory) return s;
     if (!s.ok()) return corrupt("chunk 0: " + s.message());
     st->stats->factor_s += seconds_since(t);
   } else {
@@ -242,8 +244,9 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
   out.positions.assign(static_cast<size_t>(n) * 3, 0.0);
   const EdgeGraph graph = build_edge_graph(out);
   if (matrix_entries_bound(graph) > options.max_matrix_entries) {
-    return corrupt("connectivity is too irregular: its least-squares matrix would exceed " +
-                   std::to_string(options.max_matrix_entries) + " entries");
+    return Status::Error(StatusCode::kResourceExhausted,
+                         "connectivity is too irregular: its least-squares matrix would exceed " +
+                             std::to_string(options.max_matrix_entries) + " entries");
   }
 
   AnchorModels models;

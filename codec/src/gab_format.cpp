@@ -14,6 +14,11 @@ Status header_error(const std::string& what) {
   return Status::Error(StatusCode::kParseError, "bad .gab header: " + what);
 }
 
+std::string hex_byte(unsigned byte) {
+  const char* digits = "0123456789abcdef";
+  return std::string("0x") + digits[(byte >> 4) & 15] + digits[byte & 15];
+}
+
 }  // namespace
 
 void write_gab_header(const GabHeader& h, ByteWriter* out) {
@@ -47,14 +52,20 @@ Status read_gab_header(ByteReader* in, size_t file_size, GabHeader* h) {
     return header_error("file ends inside the header");
   }
   if (version != kGabVersion) {
-    return Status::Error(StatusCode::kParseError, "unsupported .gab version " + std::to_string(version) +
+    return Status::Error(StatusCode::kUnsupported, "unsupported .gab version " + std::to_string(version) +
                                                       " (this build reads version " +
                                                       std::to_string(kGabVersion) + ")");
   }
   const size_t covered = in->offset();
   if (!in->u32(&crc)) return header_error("file ends inside the header");
   if (crc != crc32(raw, covered)) return header_error("checksum mismatch (the header is corrupt)");
-  if ((flags & ~(kGabFlagGeometryOnly | kGabFlagRefined | kGabFlagLevels)) != 0 || zero != 0) return header_error("unknown flags");
+  // The header's checksum holds, so unknown flags come from a newer writer,
+  // not from damage.
+  const unsigned known = kGabFlagGeometryOnly | kGabFlagRefined | kGabFlagLevels;
+  if ((flags & ~known) != 0 || zero != 0) {
+    return Status::Error(StatusCode::kUnsupported, "unsupported .gab flags " + hex_byte(flags) + " " + hex_byte(zero) +
+                                                       " (this build knows " + hex_byte(known) + " 0x00)");
+  }
   if (bits < kGabMinBits || bits > kGabMaxBits) return header_error("bits " + std::to_string(bits) + " out of range");
   if (n < 1 || n > 0x7FFFFFFFu || faces < 1 || faces > 0x7FFFFFFFu / 3) {
     return header_error("vertex or triangle count out of range");

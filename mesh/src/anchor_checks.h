@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "gab/sparse/status.h"
+#include "gab/status.h"
 
 namespace gab {
 

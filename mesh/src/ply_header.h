@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "gab/mesh/ply_io.h"
-#include "gab/sparse/status.h"
+#include "gab/status.h"
 
 namespace gab {
 namespace mesh_detail {

@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include "gab/sparse/status.h"
+#include "gab/status.h"
 
 namespace gab {
 namespace mesh_detail {

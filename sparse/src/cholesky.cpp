@@ -12,7 +12,7 @@ Status Cholesky::analyze(const CscMatrix& lower, const AnalyzeOptions& options) 
   populator_.finish();  // the buffers may move
   GAB_RETURN_IF_ERROR(analyze_structure(lower, options, &symbolic_));
   if (symbolic_.stored_L > options.max_factor_entries) {
-    return Status::Error(StatusCode::kOutOfMemory,
+    return Status::Error(StatusCode::kResourceExhausted,
                          "the factor would exceed " + std::to_string(options.max_factor_entries) + " entries");
   }
   const int64_t values = symbolic_.value_ptr[symbolic_.num_supernodes];

@@ -179,7 +179,7 @@ TEST(CholeskyTest, FactorLimitRefusesBeforeAnyStorageIsReserved) {
   options.max_factor_entries = stored - 1;
   Cholesky chol;
   const Status s = chol.analyze(a, options);
-  EXPECT_EQ(s.code(), StatusCode::kOutOfMemory);
+  EXPECT_EQ(s.code(), StatusCode::kResourceExhausted);
   EXPECT_EQ(s.message(), "the factor would exceed " + std::to_string(stored - 1) + " entries");
   EXPECT_EQ(chol.values(), nullptr);
   EXPECT_EQ(chol.factorize(a).message(), "factorize before analyze");

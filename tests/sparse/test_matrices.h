@@ -2,6 +2,8 @@
 // sparse suites.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -56,7 +58,7 @@ inline CscMatrix random_spd(int32_t n, double density, uint32_t seed, int32_t de
   }
   for (int32_t i = 0; i < n; ++i) t.push_back({i, i, rowsum[i] + 1.0 + std::abs(val(rng))});
   CscMatrix a;
-  csc_from_triplets(n, n, t, &a);
+  EXPECT_TRUE(csc_from_triplets(n, n, t, &a).ok());
   return a;
 }
 
@@ -74,7 +76,7 @@ inline CscMatrix grid_laplacian(int32_t nx, int32_t ny, double shift = 0.01) {
     }
   }
   CscMatrix a;
-  csc_from_triplets(nx * ny, nx * ny, t, &a);
+  EXPECT_TRUE(csc_from_triplets(nx * ny, nx * ny, t, &a).ok());
   return a;
 }
 

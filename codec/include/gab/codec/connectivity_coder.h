@@ -13,7 +13,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "gab/sparse/status.h"
+#include "gab/status.h"
 
 namespace gab {
 

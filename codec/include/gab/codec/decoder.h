@@ -3,8 +3,11 @@
 //
 // Contract on untrusted input: every malformed, corrupted or forged file
 // gets a kParseError naming what is wrong (header field, connectivity block,
-// chunk number); nothing is read outside the buffer; allocations are bounded
-// by the file's size and DecodeOptions' limits. A file cut short decodes to
+// chunk number); a well-formed file of a newer format (version or flags)
+// gets kUnsupported; a file whose matrix or factor exceeds DecodeOptions'
+// limits gets kResourceExhausted, and one whose factor's memory cannot be
+// had kOutOfMemory. Nothing is read outside the buffer; allocations are
+// bounded by the file's size and DecodeOptions' limits. A file cut short decodes to
 // the shape of its complete chunks and says so (DecodeStats::truncated).
 #pragma once
 
@@ -15,7 +18,7 @@
 #include <vector>
 
 #include "gab/mesh/mesh.h"
-#include "gab/sparse/status.h"
+#include "gab/status.h"
 
 namespace gab {
 

@@ -10,7 +10,7 @@
 
 #include "gab/mesh/greedy_anchors.h"
 #include "gab/mesh/mesh.h"
-#include "gab/sparse/status.h"
+#include "gab/status.h"
 
 namespace gab {
 

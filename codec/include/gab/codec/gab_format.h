@@ -57,7 +57,7 @@
 
 #include "gab/codec/byte_io.h"
 #include "gab/codec/quantizer.h"
-#include "gab/sparse/status.h"
+#include "gab/status.h"
 
 namespace gab {
 

@@ -10,7 +10,7 @@
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/mesh.h"
 #include "gab/mesh/relaxed_reconstruction.h"
-#include "gab/sparse/status.h"
+#include "gab/status.h"
 
 namespace gab {
 

@@ -14,7 +14,7 @@
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/interpolatory_system.h"
 #include "gab/sparse/cholesky.h"
-#include "gab/sparse/status.h"
+#include "gab/status.h"
 
 namespace gab {
 

@@ -7,7 +7,7 @@
 
 #include "gab/mesh/mesh.h"
 #include "gab/mesh/ply_io.h"
-#include "gab/sparse/status.h"
+#include "gab/status.h"
 
 namespace gab {
 

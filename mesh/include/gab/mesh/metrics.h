@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "gab/mesh/mesh.h"
-#include "gab/sparse/status.h"
+#include "gab/status.h"
 
 namespace gab {
 

@@ -9,7 +9,7 @@
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/mesh.h"
 #include "gab/sparse/csc.h"
-#include "gab/sparse/status.h"
+#include "gab/status.h"
 
 namespace gab {
 

@@ -5,7 +5,7 @@
 #include <string_view>
 
 #include "gab/mesh/mesh.h"
-#include "gab/sparse/status.h"
+#include "gab/status.h"
 
 namespace gab {
 

@@ -12,7 +12,7 @@
 
 #include "gab/mesh/mesh.h"
 #include "gab/mesh/relaxed_reconstruction.h"
-#include "gab/sparse/status.h"
+#include "gab/status.h"
 
 namespace gab {
 

@@ -11,7 +11,7 @@
 
 #include "gab/mesh/edge_graph.h"
 #include "gab/sparse/cholesky.h"
-#include "gab/sparse/status.h"
+#include "gab/status.h"
 
 namespace gab {
 
@@ -72,7 +72,7 @@ class RelaxedReconstruction {
   // A bound on the factor's stored entries, checked by init right after the
   // analysis, before the factor's storage is reserved or factored (see
   // AnalyzeOptions::max_factor_entries): over it, init fails with
-  // kOutOfMemory. For decoders of untrusted files. Default: none.
+  // kResourceExhausted. For decoders of untrusted files. Default: none.
   void set_max_factor_entries(int64_t entries) { max_factor_entries_ = entries; }
 
   double weight() const { return weight_; }

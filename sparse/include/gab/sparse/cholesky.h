@@ -17,7 +17,7 @@
 #include "gab/sparse/dense_kernels.h"
 #include "gab/sparse/factor_schedule.h"
 #include "gab/sparse/large_buffer.h"
-#include "gab/sparse/status.h"
+#include "gab/status.h"
 #include "gab/sparse/symbolic.h"
 #include "gab/sparse/update.h"
 

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "gab/sparse/status.h"
+#include "gab/status.h"
 
 namespace gab {
 

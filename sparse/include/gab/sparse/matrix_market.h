@@ -17,7 +17,7 @@
 #include <string>
 
 #include "gab/sparse/csc.h"
-#include "gab/sparse/status.h"
+#include "gab/status.h"
 
 namespace gab {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "gab/sparse/csc.h"
-#include "gab/sparse/status.h"
+#include "gab/status.h"
 
 namespace gab {
 

@@ -9,7 +9,7 @@
 #include "gab/sparse/csc.h"
 #include "gab/sparse/dense_kernels.h"
 #include "gab/sparse/factor_schedule.h"
-#include "gab/sparse/status.h"
+#include "gab/status.h"
 #include "gab/sparse/symbolic.h"
 
 namespace gab {

@@ -9,7 +9,7 @@
 
 #include "gab/sparse/csc.h"
 #include "gab/sparse/etree.h"
-#include "gab/sparse/status.h"
+#include "gab/status.h"
 
 namespace gab {
 
@@ -33,7 +33,7 @@ struct AnalyzeOptions {
   // independent subtrees run concurrently. The factor is bit-identical for
   // every count; 1 runs everything on the caller's thread.
   int32_t threads = 1;
-  // Cholesky::analyze refuses (kOutOfMemory, "the factor would exceed N
+  // Cholesky::analyze refuses (kResourceExhausted, "the factor would exceed N
   // entries") a factor storing more entries than this, before it reserves
   // or touches any of its storage: for callers facing untrusted input.
   int64_t max_factor_entries = INT64_MAX;

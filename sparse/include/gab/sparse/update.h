@@ -9,7 +9,7 @@
 #include <cstdint>
 
 #include "gab/sparse/dense_kernels.h"
-#include "gab/sparse/status.h"
+#include "gab/status.h"
 #include "gab/sparse/symbolic.h"
 
 namespace gab {

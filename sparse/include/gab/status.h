@@ -1,6 +1,8 @@
-// Status: how every engine routine that can fail reports it. No exceptions
-// cross the engine's boundary (it builds with -fno-exceptions); a failure is
-// a value carrying a code and a one-line message meant for a human.
+// Status: how every gab routine that can fail reports it, in every layer
+// (engine, mesh, codec). No exceptions cross the engine's boundary (it builds
+// with -fno-exceptions); a failure is a value carrying a code, for programs,
+// and a one-line message, for humans. A Status must be looked at: dropping
+// one is a compile-time warning ([[nodiscard]]).
 #pragma once
 
 #include <string>
@@ -16,9 +18,13 @@ enum class StatusCode {
   kNotPositiveDefinite, // Cholesky met a non-positive pivot (message names the column)
   kOverflow,            // a count exceeds the int32 index limit
   kOutOfMemory,         // storage for the factor or a workspace could not be had
+  kResourceExhausted,   // the work would exceed a limit the caller set (e.g. a decoder's
+                        // max_factor_entries): the input may be fine, the limit refused it
+  kUnsupported,         // well-formed input this build cannot read (a newer format
+                        // version or an unknown format flag)
 };
 
-class Status {
+class [[nodiscard]] Status {
  public:
   Status() = default;  // ok
   static Status Ok() { return Status(); }
