@@ -9,6 +9,8 @@
 #include "commands.h"
 #include "gab/sparse/amd.h"
 #include "gab/sparse/cholesky.h"
+#include "gab/sparse/dense_kernels.h"
+#include "gab/sparse/factor_schedule.h"
 
 namespace gab {
 namespace cli {

@@ -19,6 +19,7 @@
 #include "commands.h"
 #include "gab/mesh/file_io.h"
 #include "gab/sparse/cholesky.h"
+#include "gab/sparse/factor_schedule.h"
 #include "svg_plot.h"
 
 namespace gab {

@@ -3,26 +3,64 @@
 
 #include <string>
 
+#include "gab/sparse/dense_kernels.h"
+#include "gab/sparse/factor_schedule.h"
+#include "gab/sparse/large_buffer.h"
 #include "gab/sparse/supernodal.h"
+#include "gab/sparse/update.h"
 
 namespace gab {
 
+struct Cholesky::State {
+  SymbolicFactor symbolic;
+  FactorSchedule schedule;        // the factorization's split (flops)
+  FactorSchedule solve_schedule;  // the solves' split (entries)
+  const DenseKernels* kernels = nullptr;
+  bool analyzed = false;
+  bool factorized = false;
+  LargeBuffer<double> values;
+  LargeBuffer<double> work;  // multifrontal update stacks
+  LargeBuffer<int32_t> iwork;
+  LargeBuffer<double> solve_rhs;  // permuted right-hand sides
+  LargeBuffer<double> solve_work;
+  LargeBuffer<double> update_work;  // see update_workspace_doubles
+  LargeBuffer<int32_t> update_iwork;
+  PagePopulator populator;  // after the buffers: stops before they are freed
+  bool update_ready = false;
+
+  Status prepare_update();
+  Status prepare_update_workspace();
+};
+
+Cholesky::Cholesky() : state_(new State) {}
+Cholesky::~Cholesky() = default;
+
+void Cholesky::set_kernels(const DenseKernels& kernels) { state_->kernels = &kernels; }
+bool Cholesky::factorized() const { return state_->factorized; }
+const SymbolicFactor& Cholesky::symbolic() const { return state_->symbolic; }
+const FactorSchedule& Cholesky::schedule() const { return state_->schedule; }
+const FactorSchedule& Cholesky::solve_schedule() const { return state_->solve_schedule; }
+const double* Cholesky::values() const { return state_->values.data(); }
+double* Cholesky::mutable_values() { return state_->values.data(); }
+Status Cholesky::prepare_updates() { return state_->prepare_update(); }
+
 Status Cholesky::analyze(const CscMatrix& lower, const AnalyzeOptions& options) {
-  analyzed_ = factorized_ = false;
-  populator_.finish();  // the buffers may move
-  GAB_RETURN_IF_ERROR(analyze_structure(lower, options, &symbolic_));
-  if (symbolic_.stored_L > options.max_factor_entries) {
+  State& s = *state_;
+  s.analyzed = s.factorized = false;
+  s.populator.finish();  // the buffers may move
+  GAB_RETURN_IF_ERROR(analyze_structure(lower, options, &s.symbolic));
+  if (s.symbolic.stored_L > options.max_factor_entries) {
     return Status::Error(StatusCode::kResourceExhausted,
                          "the factor would exceed " + std::to_string(options.max_factor_entries) + " entries");
   }
-  const int64_t values = symbolic_.value_ptr[symbolic_.num_supernodes];
-  schedule_ = plan_factor_schedule(symbolic_, options.threads);
+  const int64_t values = s.symbolic.value_ptr[s.symbolic.num_supernodes];
+  s.schedule = plan_factor_schedule(s.symbolic, options.threads);
   // The solves split the tree by their own work (entries, not flops): the
   // flops' split leaves the solves' groups unbalanced.
-  solve_schedule_ = plan_factor_schedule(symbolic_, options.threads, ScheduleBalance::kSolveEntries);
-  const int64_t work = factor_workspace_doubles(schedule_);
-  if (!values_.reserve(values) || !work_.reserve(work) ||
-      !iwork_.reserve(factor_workspace_ints(symbolic_, schedule_))) {
+  s.solve_schedule = plan_factor_schedule(s.symbolic, options.threads, ScheduleBalance::kSolveEntries);
+  const int64_t work = factor_workspace_doubles(s.schedule);
+  if (!s.values.reserve(values) || !s.work.reserve(work) ||
+      !s.iwork.reserve(factor_workspace_ints(s.symbolic, s.schedule))) {
     return Status::Error(StatusCode::kOutOfMemory,
                          "cannot allocate " + std::to_string((values + work) * 8 >> 20) +
                              " MiB for the factor and its workspace");
@@ -30,93 +68,98 @@ Status Cholesky::analyze(const CscMatrix& lower, const AnalyzeOptions& options) 
   // With threads to spare, fault in the factor and its stacks while the
   // assembly map is built (and whatever the caller does before factorize).
   if (options.threads >= 2) {
-    populator_.start({{values_.data(), sizeof(double) * static_cast<size_t>(values)},
-                      {work_.data(), sizeof(double) * static_cast<size_t>(work)}});
+    s.populator.start({{s.values.data(), sizeof(double) * static_cast<size_t>(values)},
+                      {s.work.data(), sizeof(double) * static_cast<size_t>(work)}});
   }
-  map_assembly(lower, &symbolic_);
+  map_assembly(lower, &s.symbolic);
   // The updater's workspace waits for the first update (prepare_updates):
   // a caller that only factors and solves (a decoder that refactors) would
   // otherwise fault in ~11 n doubles it never uses.
-  update_ready_ = false;
-  analyzed_ = true;
+  s.update_ready = false;
+  s.analyzed = true;
   return Status::Ok();
 }
 
 Status Cholesky::factorize(const CscMatrix& lower) {
-  if (!analyzed_) return Status::Error(StatusCode::kInvalidArgument, "factorize before analyze");
-  factorized_ = false;
-  populator_.finish();
-  if (kernels_ == nullptr) kernels_ = &dense_kernels();
-  GAB_RETURN_IF_ERROR(factorize_supernodal(symbolic_, schedule_, lower, *kernels_, values_.data(),
-                                           work_.data(), iwork_.data()));
-  factorized_ = true;
+  State& s = *state_;
+  if (!s.analyzed) return Status::Error(StatusCode::kInvalidArgument, "factorize before analyze");
+  s.factorized = false;
+  s.populator.finish();
+  if (s.kernels == nullptr) s.kernels = &dense_kernels();
+  GAB_RETURN_IF_ERROR(factorize_supernodal(s.symbolic, s.schedule, lower, *s.kernels, s.values.data(),
+                                           s.work.data(), s.iwork.data()));
+  s.factorized = true;
   return Status::Ok();
 }
 
 Status Cholesky::solve(double* b, int32_t nrhs, int32_t ldb) {
-  if (!factorized_) return Status::Error(StatusCode::kInvalidArgument, "solve before factorize");
-  const int32_t n = symbolic_.n;
+  State& s = *state_;
+  if (!s.factorized) return Status::Error(StatusCode::kInvalidArgument, "solve before factorize");
+  const int32_t n = s.symbolic.n;
   if (nrhs < 0 || ldb < n) {
     return Status::Error(StatusCode::kInvalidArgument,
                          "solve needs nrhs >= 0 and ldb >= n (" + std::to_string(n) + ")");
   }
-  if (!solve_rhs_.reserve(static_cast<int64_t>(n) * nrhs) ||
-      !solve_work_.reserve(solve_scheduled_work(symbolic_, solve_schedule_, nrhs))) {
+  if (!s.solve_rhs.reserve(static_cast<int64_t>(n) * nrhs) ||
+      !s.solve_work.reserve(solve_scheduled_work(s.symbolic, s.solve_schedule, nrhs))) {
     return Status::Error(StatusCode::kOutOfMemory, "cannot allocate the solve's workspace");
   }
-  const int32_t* perm = symbolic_.perm.data();
+  const int32_t* perm = s.symbolic.perm.data();
   for (int32_t r = 0; r < nrhs; ++r) {
     const double* src = b + static_cast<int64_t>(r) * ldb;
-    double* dst = solve_rhs_.data() + static_cast<int64_t>(r) * n;
+    double* dst = s.solve_rhs.data() + static_cast<int64_t>(r) * n;
     for (int32_t k = 0; k < n; ++k) dst[k] = src[perm[k]];
   }
-  solve_lower_scheduled(symbolic_, solve_schedule_, values_.data(), solve_rhs_.data(), nrhs, n,
-                        solve_work_.data(), kernels_->level);
-  solve_upper_scheduled(symbolic_, solve_schedule_, values_.data(), solve_rhs_.data(), nrhs, n,
-                        solve_work_.data(), kernels_->level);
+  solve_lower_scheduled(s.symbolic, s.solve_schedule, s.values.data(), s.solve_rhs.data(), nrhs, n,
+                        s.solve_work.data(), s.kernels->level);
+  solve_upper_scheduled(s.symbolic, s.solve_schedule, s.values.data(), s.solve_rhs.data(), nrhs, n,
+                        s.solve_work.data(), s.kernels->level);
   for (int32_t r = 0; r < nrhs; ++r) {
-    const double* src = solve_rhs_.data() + static_cast<int64_t>(r) * n;
+    const double* src = s.solve_rhs.data() + static_cast<int64_t>(r) * n;
     double* dst = b + static_cast<int64_t>(r) * ldb;
     for (int32_t k = 0; k < n; ++k) dst[perm[k]] = src[k];
   }
   return Status::Ok();
 }
 
-Status Cholesky::prepare_update_workspace() {
-  if (!update_work_.reserve(update_workspace_doubles(symbolic_)) ||
-      !update_iwork_.reserve(update_workspace_ints(symbolic_))) {
+Status Cholesky::State::prepare_update_workspace() {
+  if (!update_work.reserve(update_workspace_doubles(symbolic)) ||
+      !update_iwork.reserve(update_workspace_ints(symbolic))) {
     return Status::Error(StatusCode::kOutOfMemory, "cannot allocate the updater's workspace");
   }
   // The updates keep these invariants (see update.h).
-  const int64_t zeros = update_workspace_zero_prefix(symbolic_);
-  for (int64_t i = 0; i < zeros; ++i) update_work_.data()[i] = 0.0;
-  const int64_t ints = update_workspace_ints(symbolic_);
-  for (int64_t i = 0; i < ints; ++i) update_iwork_.data()[i] = -1;
-  update_ready_ = true;
+  const int64_t zeros = update_workspace_zero_prefix(symbolic);
+  for (int64_t i = 0; i < zeros; ++i) update_work.data()[i] = 0.0;
+  const int64_t ints = update_workspace_ints(symbolic);
+  for (int64_t i = 0; i < ints; ++i) update_iwork.data()[i] = -1;
+  update_ready = true;
   return Status::Ok();
 }
 
-Status Cholesky::prepare_update() {
-  if (!factorized_) return Status::Error(StatusCode::kInvalidArgument, "update before factorize");
-  return update_ready_ ? Status::Ok() : prepare_update_workspace();
+Status Cholesky::State::prepare_update() {
+  if (!factorized) return Status::Error(StatusCode::kInvalidArgument, "update before factorize");
+  return update_ready ? Status::Ok() : prepare_update_workspace();
 }
 
 Status Cholesky::add_anchor(int32_t j, double weight, UpdateStats* stats) {
-  GAB_RETURN_IF_ERROR(prepare_update());
-  return add_anchor_supernodal(symbolic_, values_.data(), j, weight, kernels_->level,
-                               update_work_.data(), stats);
+  State& s = *state_;
+  GAB_RETURN_IF_ERROR(s.prepare_update());
+  return add_anchor_supernodal(s.symbolic, s.values.data(), j, weight, s.kernels->level,
+                               s.update_work.data(), stats);
 }
 
 Status Cholesky::add_anchors(const int32_t* j, int32_t count, double weight, UpdateStats* stats) {
-  GAB_RETURN_IF_ERROR(prepare_update());
-  return add_anchors_supernodal(symbolic_, values_.data(), j, count, weight, kernels_->level,
-                                update_work_.data(), update_iwork_.data(), stats);
+  State& s = *state_;
+  GAB_RETURN_IF_ERROR(s.prepare_update());
+  return add_anchors_supernodal(s.symbolic, s.values.data(), j, count, weight, s.kernels->level,
+                                s.update_work.data(), s.update_iwork.data(), stats);
 }
 
 Status Cholesky::remove_anchor(int32_t j, double weight, UpdateStats* stats) {
-  GAB_RETURN_IF_ERROR(prepare_update());
-  return remove_anchor_supernodal(symbolic_, values_.data(), j, weight, kernels_->level,
-                                  update_work_.data(), update_iwork_.data(), stats);
+  State& s = *state_;
+  GAB_RETURN_IF_ERROR(s.prepare_update());
+  return remove_anchor_supernodal(s.symbolic, s.values.data(), j, weight, s.kernels->level,
+                                  s.update_work.data(), s.update_iwork.data(), stats);
 }
 
 }  // namespace gab

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <string>
 
-#include "gab/sparse/oracles.h"
+#include "common/oracles.h"
 #include "test_matrices.h"
 
 namespace gab {

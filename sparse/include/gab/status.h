@@ -2,7 +2,8 @@
 // (engine, mesh, codec). No exceptions cross the engine's boundary (it builds
 // with -fno-exceptions); a failure is a value carrying a code, for programs,
 // and a one-line message, for humans. A Status must be looked at: dropping
-// one is a compile-time warning ([[nodiscard]]).
+// one is a compile-time diagnostic ([[nodiscard]]; gab builds with
+// -Werror=unused-result).
 #pragma once
 
 #include <string>

@@ -11,20 +11,32 @@
 #pragma once
 
 #include <cstdint>
-#include <vector>
+#include <memory>
 
 #include "gab/sparse/csc.h"
-#include "gab/sparse/dense_kernels.h"
-#include "gab/sparse/factor_schedule.h"
-#include "gab/sparse/large_buffer.h"
-#include "gab/status.h"
 #include "gab/sparse/symbolic.h"
-#include "gab/sparse/update.h"
+#include "gab/status.h"
 
 namespace gab {
 
+struct DenseKernels;    // the SIMD kernels (internal: dense_kernels.h)
+struct FactorSchedule;  // the threads' split of the tree (internal: factor_schedule.h)
+
+// What one anchor update cost.
+struct UpdateStats {
+  int32_t path_columns = 0;     // columns of L on the path (rotations)
+  int32_t path_supernodes = 0;  // supernodes the path crosses
+  int64_t touched = 0;          // entries of L read and written
+  double flops = 0.0;           // floating-point operations
+};
+
 class Cholesky {
  public:
+  Cholesky();
+  ~Cholesky();
+  Cholesky(const Cholesky&) = delete;  // owns large buffers and a helper thread
+  Cholesky& operator=(const Cholesky&) = delete;
+
   // Ordering and symbolic analysis of the lower triangle's pattern; also
   // reserves the factor's storage (kOutOfMemory when it cannot be had).
   Status analyze(const CscMatrix& lower, const AnalyzeOptions& options = AnalyzeOptions());
@@ -51,36 +63,22 @@ class Cholesky {
   // Sets up the updaters' workspace (about 11 n doubles) now; otherwise
   // the first update after analyze() does, so a caller timing updates calls
   // this first. Requires a successful factorize().
-  Status prepare_updates() { return prepare_update(); }
+  Status prepare_updates();
 
-  void set_kernels(const DenseKernels& kernels) { kernels_ = &kernels; }
-  bool factorized() const { return factorized_; }
-  const SymbolicFactor& symbolic() const { return symbolic_; }
-  const FactorSchedule& schedule() const { return schedule_; }
-  const FactorSchedule& solve_schedule() const { return solve_schedule_; }
+  // The kernels of another SIMD level than the best one (tests compare them).
+  void set_kernels(const DenseKernels& kernels);
+  bool factorized() const;
+  const SymbolicFactor& symbolic() const;
+  const FactorSchedule& schedule() const;        // the factorization's split (flops)
+  const FactorSchedule& solve_schedule() const;  // the solves' split (entries)
   // The supernode blocks (see SymbolicFactor), symbolic().value_ptr.back()
-  // doubles: for inspection and in-place updates.
-  const double* values() const { return values_.data(); }
-  double* mutable_values() { return values_.data(); }
+  // doubles: for inspection and in-place updates. nullptr before analyze().
+  const double* values() const;
+  double* mutable_values();
 
  private:
-  SymbolicFactor symbolic_;
-  FactorSchedule schedule_;        // the factorization's split (flops)
-  FactorSchedule solve_schedule_;  // the solves' split (entries)
-  const DenseKernels* kernels_ = nullptr;
-  bool analyzed_ = false;
-  bool factorized_ = false;
-  LargeBuffer<double> values_;
-  LargeBuffer<double> work_;        // multifrontal update stacks
-  LargeBuffer<int32_t> iwork_;
-  LargeBuffer<double> solve_rhs_;   // permuted right-hand sides
-  LargeBuffer<double> solve_work_;
-  LargeBuffer<double> update_work_;  // see update_workspace_doubles
-  LargeBuffer<int32_t> update_iwork_;
-  PagePopulator populator_;  // after the buffers: stops before they are freed
-  bool update_ready_ = false;
-  Status prepare_update();
-  Status prepare_update_workspace();
+  struct State;  // buffers, schedules and flags (cholesky.cpp)
+  std::unique_ptr<State> state_;
 };
 
 }  // namespace gab

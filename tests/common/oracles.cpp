@@ -1,6 +1,6 @@
 // Textbook Cholesky variants used as oracles (Golub & Van Loan, alg. 4.2.1;
 // Davis, "Direct Methods", sec. 4.8 for the left-looking sparse form).
-#include "gab/sparse/oracles.h"
+#include "common/oracles.h"
 
 #include <algorithm>
 #include <cmath>

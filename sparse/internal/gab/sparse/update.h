@@ -8,19 +8,12 @@
 
 #include <cstdint>
 
+#include "gab/sparse/cholesky.h"  // UpdateStats
 #include "gab/sparse/dense_kernels.h"
 #include "gab/status.h"
 #include "gab/sparse/symbolic.h"
 
 namespace gab {
-
-// What one update cost.
-struct UpdateStats {
-  int32_t path_columns = 0;     // columns of L on the path (rotations)
-  int32_t path_supernodes = 0;  // supernodes the path crosses
-  int64_t touched = 0;          // entries of L read and written
-  double flops = 0.0;           // floating-point operations
-};
 
 // Workspace the updates need. The first update_workspace_zero_prefix()
 // doubles must be zero before the first update, and the ints must all be
