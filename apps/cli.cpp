@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <thread>
 
+#include "commands.h"
 #include "gab/sparse/factor_schedule.h"
 
 namespace gab {
@@ -17,8 +18,10 @@ int fail(const std::string& message) {
   return kExitFailure;
 }
 
-int usage_error(const std::string& command, const std::string& message, const char* usage) {
-  std::fprintf(stderr, "gab %s: %s\nusage: %s\n", command.c_str(), message.c_str(), usage);
+int usage_error(const std::string& command, const std::string& message) {
+  const Command* c = find_command(command);
+  std::fprintf(stderr, "gab %s: %s\nusage: %s\n", command.c_str(), message.c_str(),
+               c != nullptr ? usage_text(*c).c_str() : "gab help");
   return kExitUsage;
 }
 
@@ -131,6 +134,8 @@ void JsonObject::add(const std::string& key, double value) {
 void JsonObject::add(const std::string& key, const std::string& value) {
   fields_.emplace_back(key, quote(value));
 }
+
+void JsonObject::add_bool(const std::string& key, bool value) { fields_.emplace_back(key, value ? "true" : "false"); }
 
 void JsonObject::add_null(const std::string& key) { fields_.emplace_back(key, "null"); }
 

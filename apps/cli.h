@@ -18,8 +18,9 @@ constexpr int kExitUsage = 2;
 
 // Prints "gab: error: <message>" on stderr and returns kExitFailure.
 int fail(const std::string& message);
-// Prints "gab <command>: <message>" and the usage line on stderr; returns kExitUsage.
-int usage_error(const std::string& command, const std::string& message, const char* usage);
+// Prints "gab <command>: <message>" and the command's usage (commands.h) on
+// stderr; returns kExitUsage.
+int usage_error(const std::string& command, const std::string& message);
 
 // Options of one sub-command: "--name value" pairs, flags, positionals.
 class Args {
@@ -54,6 +55,8 @@ class JsonObject {
   void add(const std::string& key, int64_t value);
   void add(const std::string& key, double value);
   void add(const std::string& key, const std::string& value);
+  void add_bool(const std::string& key, bool value);  // true / false (not an overload of add:
+                                                      // a string literal would convert to bool)
   void add_null(const std::string& key);
   std::string str() const;
 

@@ -1,7 +1,5 @@
-// gab compress -i IN -o OUT.gab [--anchors K | --error E | --linf E] [--bits Q]
-//              [--weight W] [--geometry-only] [--json]
-// Greedy geometry-aware anchors, quantized and range coded (DESIGN.md
-// sections 5 and 6). Without a stopping rule: --error 0.001.
+// gab compress (options: commands.cpp): greedy geometry-aware anchors,
+// quantized and range coded. Without a stopping rule: --error 0.001.
 #include <cstdio>
 #include <string>
 #include <unistd.h>
@@ -18,11 +16,6 @@ namespace cli {
 
 namespace {
 
-const char* kUsage =
-    "gab compress -i IN -o OUT.gab [--anchors K | --error E | --linf E] [--bits Q] [--weight W]\n"
-    "             [--geometry-only] [--threads T] [--json]\n"
-    "             (tuning: --batch F --chunk-growth G --initial K --refine --layout smaller|levels|selection)";
-
 constexpr double kDefaultError = 1e-3;
 
 }  // namespace
@@ -32,12 +25,12 @@ int run_compress(int argc, char** argv) {
   if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--error", "--linf", "--bits", "--weight", "--batch", "--chunk-growth",
                    "--initial", "--threads", "--layout"},
                   {"--json", "--geometry-only", "--refine"})) {
-    return usage_error("compress", args.error(), kUsage);
+    return usage_error("compress", args.error());
   }
-  if (!args.positionals().empty()) return usage_error("compress", "unexpected argument " + args.positionals()[0], kUsage);
-  if (!args.has("-i") || !args.has("-o")) return usage_error("compress", "need -i IN and -o OUT.gab", kUsage);
+  if (!args.positionals().empty()) return usage_error("compress", "unexpected argument " + args.positionals()[0]);
+  if (!args.has("-i") || !args.has("-o")) return usage_error("compress", "need -i IN and -o OUT.gab");
   const int rules = args.has("--anchors") + args.has("--error") + args.has("--linf");
-  if (rules > 1) return usage_error("compress", "give at most one of --anchors, --error, --linf", kUsage);
+  if (rules > 1) return usage_error("compress", "give at most one of --anchors, --error, --linf");
   EncodeOptions options;
   int64_t anchors = 0, bits = options.bits, initial = 0;
   double error = rules == 0 ? kDefaultError : 0.0, linf = 0.0;
@@ -47,7 +40,7 @@ int run_compress(int argc, char** argv) {
       !args.get_double("--batch", 0.0, 1.0, &options.batch_fraction) ||
       !args.get_double("--chunk-growth", 1.01, 1e9, &options.chunk_growth) ||
       !args.get_int("--initial", 1, 0x7FFFFFFF, &initial) || !args.get_threads(&options.threads)) {
-    return usage_error("compress", args.error(), kUsage);
+    return usage_error("compress", args.error());
   }
   options.max_anchors = static_cast<int32_t>(anchors);
   options.initial_anchors = static_cast<int32_t>(initial);
@@ -63,7 +56,7 @@ int run_compress(int argc, char** argv) {
   } else if (layout == "selection") {
     options.layout = FileLayout::kSelectionOrder;
   } else if (layout != "smaller") {
-    return usage_error("compress", "--layout must be smaller, levels or selection, got '" + layout + "'", kUsage);
+    return usage_error("compress", "--layout must be smaller, levels or selection, got '" + layout + "'");
   }
   const bool json = args.has("--json");
   const std::string in = args.get("-i"), out = args.get("-o");
@@ -107,11 +100,11 @@ int run_compress(int argc, char** argv) {
     o.add("encode_s", stats.encode_s);
     o.add("chunks", static_cast<int64_t>(stats.chunks));
     o.add("weight", options.weight);
-    o.add("target_met", std::string(stats.target_met ? "yes" : "no"));
-    o.add("refined", std::string(stats.refined ? "yes" : "no"));
+    o.add_bool("target_met", stats.target_met);
+    o.add_bool("refined", stats.refined);
     o.add("refinement_bytes", static_cast<int64_t>(stats.refinement_bytes));
     o.add("unrefined_rms_rel", stats.unrefined_rms_rel);
-    o.add("levels", std::string(stats.levels ? "yes" : "no"));
+    o.add_bool("levels", stats.levels);
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }

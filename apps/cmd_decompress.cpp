@@ -1,4 +1,4 @@
-// gab decompress -i IN.gab -o OUT [--anchors K] [--connectivity MESH] [--json]
+// gab decompress (its options: commands.cpp)
 // Decodes a .gab file (or its first K anchors: a coarser level of detail)
 // and writes the mesh (.obj .off .ply by extension), vertex order kept.
 #include <unistd.h>
@@ -17,29 +17,26 @@ namespace cli {
 
 namespace {
 
-const char* kUsage =
-    "gab decompress -i IN.gab -o OUT [--anchors K] [--connectivity MESH] [--threads T] [--json]";
-
 }  // namespace
 
 int run_decompress(int argc, char** argv) {
   Args args;
   if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--connectivity", "--threads"}, {"--json"})) {
-    return usage_error("decompress", args.error(), kUsage);
+    return usage_error("decompress", args.error());
   }
   if (!args.positionals().empty()) {
-    return usage_error("decompress", "unexpected argument " + args.positionals()[0], kUsage);
+    return usage_error("decompress", "unexpected argument " + args.positionals()[0]);
   }
-  if (!args.has("-i") || !args.has("-o")) return usage_error("decompress", "need -i IN.gab and -o OUT", kUsage);
+  if (!args.has("-i") || !args.has("-o")) return usage_error("decompress", "need -i IN.gab and -o OUT");
   int64_t anchors = -1;
   int32_t threads = 1;
   if (!args.get_int("--anchors", 0, 0x7FFFFFFF, &anchors) || !args.get_threads(&threads)) {
-    return usage_error("decompress", args.error(), kUsage);
+    return usage_error("decompress", args.error());
   }
   const std::string in = args.get("-i"), out = args.get("-o");
   const std::string ext = extension(out);
   if (ext != "obj" && ext != "off" && ext != "ply") {
-    return usage_error("decompress", "output must be .obj, .off or .ply: " + out, kUsage);
+    return usage_error("decompress", "output must be .obj, .off or .ply: " + out);
   }
 
   std::string bytes;
@@ -83,9 +80,9 @@ int run_decompress(int argc, char** argv) {
     o.add("anchors_in_file", static_cast<int64_t>(stats.anchors_in_file));
     o.add("chunks", static_cast<int64_t>(stats.chunks));
     o.add("chunks_in_file", static_cast<int64_t>(stats.chunks_in_file));
-    o.add("truncated", std::string(stats.truncated ? "yes" : "no"));
+    o.add_bool("truncated", stats.truncated);
     o.add("refactorizations", static_cast<int64_t>(stats.refactorizations));
-    o.add("refined", std::string(stats.refined ? "yes" : "no"));
+    o.add_bool("refined", stats.refined);
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }

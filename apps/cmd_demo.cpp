@@ -1,4 +1,4 @@
-// gab demo
+// gab demo (its options: commands.cpp)
 // The main job of the quick start: a real mesh (libcgal-demo's camel, which
 // scripts/setup-and-run.sh unpacks into data/meshes/; else $GAB_DEMO_MESH;
 // else a bumpy sphere made in code) compressed at several anchor counts, a
@@ -26,7 +26,6 @@ namespace cli {
 
 namespace {
 
-const char* kUsage = "gab demo";
 const char* kOutDir = "gab-demo";
 
 bool exists(const std::string& path) {
@@ -53,7 +52,7 @@ Status demo_input(Mesh* mesh, std::string* name) {
 int run_demo(int argc, char** argv) {
   Args args;
   if (!args.parse(argc, argv, {}, {}) || !args.positionals().empty()) {
-    return usage_error("demo", args.error().empty() ? "takes no arguments" : args.error(), kUsage);
+    return usage_error("demo", args.error().empty() ? "takes no arguments" : args.error());
   }
   Mesh mesh;
   std::string name;

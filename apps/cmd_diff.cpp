@@ -1,7 +1,7 @@
-// gab diff A B [--samples N] [--json]
+// gab diff (its options: commands.cpp)
 // Compares two meshes: per-vertex distances (when the vertex counts match)
 // and the Metro-style symmetric surface distance, absolute and relative to
-// the bounding-box diagonal of A (DESIGN.md section 6).
+// the bounding-box diagonal of A.
 #include <cmath>
 #include <cstdio>
 
@@ -15,8 +15,6 @@ namespace cli {
 
 namespace {
 
-const char* kUsage = "gab diff A B [--samples N] [--json]";
-
 // value / diagonal, or NaN (printed as null) when the diagonal is 0.
 double relative(double value, double diagonal) { return diagonal > 0 ? value / diagonal : std::nan(""); }
 
@@ -24,10 +22,10 @@ double relative(double value, double diagonal) { return diagonal > 0 ? value / d
 
 int run_diff(int argc, char** argv) {
   Args args;
-  if (!args.parse(argc, argv, {"--samples"}, {"--json"})) return usage_error("diff", args.error(), kUsage);
-  if (args.positionals().size() != 2) return usage_error("diff", "expected two mesh files", kUsage);
+  if (!args.parse(argc, argv, {"--samples"}, {"--json"})) return usage_error("diff", args.error());
+  if (args.positionals().size() != 2) return usage_error("diff", "expected two mesh files");
   int64_t samples = -1;
-  if (!args.get_int("--samples", 0, 1000000000, &samples)) return usage_error("diff", args.error(), kUsage);
+  if (!args.get_int("--samples", 0, 1000000000, &samples)) return usage_error("diff", args.error());
   const bool json = args.has("--json");
   const std::string& path_a = args.positionals()[0];
   const std::string& path_b = args.positionals()[1];

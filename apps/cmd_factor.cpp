@@ -1,4 +1,4 @@
-// gab factor IN [--ordering amd|natural] [--anchors K] [--repeat R] [--threads T] [--json]
+// gab factor (its options: commands.cpp)
 // Orders, analyzes, factors and solves (3 right-hand sides) the benchmark
 // matrix of IN, reporting the median time of each phase over R runs.
 #include <cmath>
@@ -17,27 +17,24 @@ namespace cli {
 
 namespace {
 
-const char* kUsage =
-    "gab factor IN [--ordering amd|natural] [--anchors K] [--repeat R] [--threads T] [--json]";
-
 }  // namespace
 
 int run_factor(int argc, char** argv) {
   Args args;
   if (!args.parse(argc, argv, {"--ordering", "--anchors", "--repeat", "--threads"}, {"--json"})) {
-    return usage_error("factor", args.error(), kUsage);
+    return usage_error("factor", args.error());
   }
-  if (args.positionals().size() != 1) return usage_error("factor", "expected one input file", kUsage);
+  if (args.positionals().size() != 1) return usage_error("factor", "expected one input file");
   // One thread by default: the factorization figures compare with
   // single-threaded peers.
   int64_t anchors = 100, repeat = 5, threads = 1;
   if (!args.get_int("--anchors", 1, INT32_MAX, &anchors) || !args.get_int("--repeat", 1, 1000, &repeat) ||
       !args.get_int("--threads", 1, kMaxFactorThreads, &threads)) {
-    return usage_error("factor", args.error(), kUsage);
+    return usage_error("factor", args.error());
   }
   const std::string ordering_name = args.get("--ordering", "amd");
   if (ordering_name != "amd" && ordering_name != "natural") {
-    return usage_error("factor", "--ordering must be amd or natural, got '" + ordering_name + "'", kUsage);
+    return usage_error("factor", "--ordering must be amd or natural, got '" + ordering_name + "'");
   }
   const bool json = args.has("--json");
   const std::string& path = args.positionals()[0];

@@ -1,4 +1,4 @@
-// gab info IN.gab [--json]
+// gab info (its options: commands.cpp)
 // What a .gab file holds, from its header and chunk frames (checksums
 // verified), without decoding it.
 #include <cstdio>
@@ -14,14 +14,12 @@ namespace cli {
 
 namespace {
 
-const char* kUsage = "gab info IN.gab [--json]";
-
 }  // namespace
 
 int run_info(int argc, char** argv) {
   Args args;
-  if (!args.parse(argc, argv, {}, {"--json"})) return usage_error("info", args.error(), kUsage);
-  if (args.positionals().size() != 1) return usage_error("info", "expected one .gab file", kUsage);
+  if (!args.parse(argc, argv, {}, {"--json"})) return usage_error("info", args.error());
+  if (args.positionals().size() != 1) return usage_error("info", "expected one .gab file");
   const std::string in = args.positionals()[0];
   std::string bytes;
   Status status = read_file(in, &bytes);
@@ -38,17 +36,17 @@ int run_info(int argc, char** argv) {
     o.add("anchors", static_cast<int64_t>(info.anchors));
     o.add("chunks", static_cast<int64_t>(info.chunks));
     o.add("chunks_present", static_cast<int64_t>(info.chunks_present));
-    o.add("truncated", std::string(info.truncated ? "yes" : "no"));
+    o.add_bool("truncated", info.truncated);
     o.add("bits", static_cast<int64_t>(info.bits));
     o.add("weight", info.weight);
-    o.add("geometry_only", std::string(info.geometry_only ? "yes" : "no"));
+    o.add_bool("geometry_only", info.geometry_only);
     o.add("bytes", static_cast<int64_t>(info.bytes));
     o.add("geometry_bytes", static_cast<int64_t>(info.geometry_bytes));
     o.add("connectivity_bytes", static_cast<int64_t>(info.connectivity_bytes));
     o.add("bpv_geometry", bpv);
-    o.add("refined", std::string(info.refined ? "yes" : "no"));
+    o.add_bool("refined", info.refined);
     o.add("refinement_bytes", static_cast<int64_t>(info.refinement_bytes));
-    o.add("levels", std::string(info.levels ? "yes" : "no"));
+    o.add_bool("levels", info.levels);
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }

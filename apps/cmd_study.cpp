@@ -1,5 +1,4 @@
-// gab study IN... [--ordering amd|natural] [--updates U] [--batch B]
-//                 [--anchors K] [--subdivide K] [--threads T] [--csv F] [--svg F] [--json]
+// gab study (its options: commands.cpp)
 // Factors each input's benchmark matrix, then adds U anchors by the
 // benchmark update rule (v_t = t * 2654435761 mod n, skipping anchored
 // vertices) through the Givens updater, B at a time, and reports what every
@@ -27,10 +26,6 @@ namespace cli {
 
 namespace {
 
-const char* kUsage =
-    "gab study IN... [--ordering amd|natural] [--updates U] [--batch B] [--anchors K] "
-    "[--subdivide K] [--threads T] [--csv F] [--svg F] [--json]";
-
 struct UpdateRecord {
   int64_t first_update;  // 1-based number of the batch's first anchor
   int32_t vertex;        // its vertex
@@ -52,7 +47,7 @@ struct StudyResult {
   std::vector<UpdateRecord> records;
 };
 
-// The benchmark update sequence (DESIGN.md section 6).
+// The benchmark update sequence (README, "The command-line tool", gab study).
 std::vector<int32_t> update_sequence(int32_t n, const std::vector<int32_t>& initial, int64_t count) {
   std::vector<char> anchored(n, 0);
   for (int32_t a : initial) anchored[a] = 1;
@@ -206,7 +201,7 @@ JsonObject summary(const StudyResult& r, int64_t batch, int64_t threads) {
   j.add("true_touched_avg", r.true_touched_avg);
   // Factor bytes read and written per second while updating.
   j.add("update_gbytes_per_s", time_sum > 0 ? touched_sum * 16.0 / time_sum * 1e-9 : 0.0);
-  j.add("diagonal_positive", std::string(r.diagonal_positive ? "yes" : "no"));
+  j.add_bool("diagonal_positive", r.diagonal_positive);
   return j;
 }
 
@@ -282,18 +277,18 @@ int run_study(int argc, char** argv) {
   if (!args.parse(argc, argv, {"--ordering", "--updates", "--batch", "--anchors", "--subdivide", "--threads",
                                     "--csv", "--svg"},
                   {"--json"})) {
-    return usage_error("study", args.error(), kUsage);
+    return usage_error("study", args.error());
   }
-  if (args.positionals().empty()) return usage_error("study", "expected at least one input file", kUsage);
+  if (args.positionals().empty()) return usage_error("study", "expected at least one input file");
   int64_t updates = 1000, batch = 1, anchors = 100, subdivide = 0, threads = 1;
   if (!args.get_int("--updates", 0, INT32_MAX, &updates) || !args.get_int("--batch", 1, 4096, &batch) ||
       !args.get_int("--anchors", 1, INT32_MAX, &anchors) || !args.get_int("--subdivide", 0, 6, &subdivide) ||
       !args.get_int("--threads", 1, kMaxFactorThreads, &threads)) {
-    return usage_error("study", args.error(), kUsage);
+    return usage_error("study", args.error());
   }
   const std::string ordering = args.get("--ordering", "amd");
   if (ordering != "amd" && ordering != "natural") {
-    return usage_error("study", "--ordering must be amd or natural, got '" + ordering + "'", kUsage);
+    return usage_error("study", "--ordering must be amd or natural, got '" + ordering + "'");
   }
   const bool json = args.has("--json");
   std::vector<StudyResult> results;

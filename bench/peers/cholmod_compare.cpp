@@ -62,7 +62,7 @@ double copy_bandwidth() {
   return 2.0 * n * sizeof(double) / median(t);
 }
 
-// The benchmark update sequence of DESIGN.md section 6.
+// The benchmark update sequence (README, "The command-line tool", gab study).
 std::vector<int32_t> update_sequence(int32_t n, const std::vector<int32_t>& initial, int count) {
   std::vector<char> anchored(n, 0);
   for (int32_t a : initial) anchored[a] = 1;

@@ -1,4 +1,4 @@
-// The CLI contract of DESIGN.md section 6, by running the gab binary.
+// The CLI contract (README, "The command-line tool"), by running the gab binary.
 #include <gtest/gtest.h>
 #include <unistd.h>
 

@@ -1,4 +1,4 @@
-// `gab compress / decompress / info / demo` (DESIGN.md section 6), by running
+// `gab compress / decompress / info / demo` (the CLI contract), by running
 // the gab binary.
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -97,14 +97,14 @@ TEST(CodecCliTest, RefineAddsALeastSquaresChunkThatDecompressApplies) {
   CommandResult b = run_gab("compress -i " + in + " -o " + refined + " --anchors 60 --refine --json");
   ASSERT_EQ(a.exit_code, 0) << a.err;
   ASSERT_EQ(b.exit_code, 0) << b.err;
-  EXPECT_NE(a.out.find("\"refined\": \"no\""), std::string::npos) << a.out;
-  EXPECT_NE(b.out.find("\"refined\": \"yes\""), std::string::npos) << b.out;
+  EXPECT_NE(a.out.find("\"refined\": false"), std::string::npos) << a.out;
+  EXPECT_NE(b.out.find("\"refined\": true"), std::string::npos) << b.out;
   EXPECT_LT(json_number(b.out, "rms_rel"), json_number(a.out, "rms_rel"));
   EXPECT_EQ(json_number(b.out, "unrefined_rms_rel"), json_number(a.out, "rms_rel"));
   EXPECT_GT(json_number(b.out, "refinement_bytes"), 0);
   CommandResult d = run_gab("decompress -i " + refined + " -o " + out + " --json");
   ASSERT_EQ(d.exit_code, 0) << d.err;
-  EXPECT_NE(d.out.find("\"refined\": \"yes\""), std::string::npos) << d.out;
+  EXPECT_NE(d.out.find("\"refined\": true"), std::string::npos) << d.out;
   CommandResult diff = run_gab("diff " + in + " " + out + " --json --samples 0");
   EXPECT_NEAR(json_number(diff.out, "rms_rel"), json_number(b.out, "rms_rel"), 1e-9);
   CommandResult info = run_gab("info " + refined);
@@ -148,7 +148,7 @@ TEST(CodecCliTest, DecodingAtAnotherSimdLevelGivesTheSameAnchors) {
 
 TEST(CodecCliTest, ThreadCountChangesNeitherTheFileNorTheShape) {
   // --threads only spreads the factorizations; the bytes and the decoded
-  // coordinates are the same (DESIGN.md: the encoder and decoder compute
+  // coordinates are the same (the encoder and decoder compute
   // bit-identical shapes), here also with huge-page malloc turned off.
   const std::string in = write_temp("thr.off", torus_off(80, 40));
   const std::string one = write_temp("thr-1.gab", ""), three = write_temp("thr-3.gab", "");
@@ -178,7 +178,7 @@ TEST(CodecCliTest, TruncatedFileDecodesItsCompleteChunksWithAWarning) {
   EXPECT_NE(d.err.find("gab decompress: warning: " + cut + " is truncated: decoded "), std::string::npos) << d.err;
   CommandResult i = run_gab("info " + cut + " --json");
   EXPECT_EQ(i.exit_code, 0) << i.err;
-  EXPECT_NE(i.out.find("\"truncated\": \"yes\""), std::string::npos);
+  EXPECT_NE(i.out.find("\"truncated\": true"), std::string::npos);
 }
 
 TEST(CodecCliTest, GeometryOnlyFilesNeedTheirConnectivity) {
@@ -231,7 +231,7 @@ TEST(CodecCliTest, UnreachableTargetWarnsAndStillWrites) {
   EXPECT_NE(r.err.find("gab compress: warning: the error target is out of reach: every vertex is an anchor"),
             std::string::npos)
       << r.err;
-  EXPECT_NE(r.out.find("\"target_met\": \"no\""), std::string::npos);
+  EXPECT_NE(r.out.find("\"target_met\": false"), std::string::npos);
 }
 
 TEST(CodecCliTest, DemoRunsOnAGivenMeshAndWritesItsFiles) {

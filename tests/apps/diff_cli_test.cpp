@@ -1,4 +1,4 @@
-// `gab diff` (DESIGN.md section 6), by running the gab binary.
+// `gab diff`, by running the gab binary.
 #include <gtest/gtest.h>
 #include <unistd.h>
 

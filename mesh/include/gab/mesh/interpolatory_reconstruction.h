@@ -1,5 +1,5 @@
-// The interpolatory geometry-aware basis (Sorkine et al. 2005, section 3;
-// DESIGN.md section 1) as a reconstruction object: hard anchors are kept
+// The interpolatory geometry-aware basis (Sorkine et al. 2005, section 3)
+// as a reconstruction object: hard anchors are kept
 // exactly, x_A = c, and the free vertices F minimize ||L x||^2, i.e. solve
 //   (L^T L)_FF x_F = -(L^T L)_FA c.
 // Relaxed anchors can be added on top (the paper: relaxed anchors refine an

@@ -1,5 +1,5 @@
 // The interpolatory variant of the geometry-aware least-squares system
-// (DESIGN.md section 1): anchors are hard constraints x_a = c_a, and the free
+// (Sorkine et al. 2005, section 3): anchors are hard constraints x_a = c_a, and the free
 // vertices F solve (L^T L)_FF x_F = -(L^T L)_FA c, a principal submatrix of
 // the relaxed system's L^T L.
 #pragma once

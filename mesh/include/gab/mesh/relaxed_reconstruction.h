@@ -1,5 +1,4 @@
-// The relaxed geometry-aware basis (Sorkine et al. 2005, eq. 1; DESIGN.md
-// section 1): the shape  x~ = argmin ||L x||^2 + w^2 sum_a (x_a - c_a)^2  for
+// The relaxed geometry-aware basis (Sorkine et al. 2005, eq. 1): the shape  x~ = argmin ||L x||^2 + w^2 sum_a (x_a - c_a)^2  for
 // x, y and z, L the uniform Laplacian of the connectivity. The matrix
 // L^T L + w^2 E^T E is analyzed and factored once; further anchors enter
 // through the engine's Givens updater (no refactorization), which is what an

@@ -1,5 +1,5 @@
 // Hop distances on the edge graph, and farthest-point sampling with them
-// (the "well-spread" initial anchors of DESIGN.md section 1).
+// (the "well-spread" initial anchors of Sorkine et al. 2005's anchor selection).
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-// The least-squares system of geometry-aware bases (DESIGN.md section 1):
+// The least-squares system of geometry-aware bases (Sorkine et al. 2005, eq. 1):
 // M = L^T L + w^2 sum_a e_a e_a^T with L = D - A the uniform Laplacian of
 // the edge graph, assembled straight into the engine's lower-triangle CSC.
 #pragma once
@@ -22,7 +22,7 @@ namespace gab {
 Status assemble_normal_matrix(const EdgeGraph& graph, const std::vector<int32_t>& anchors,
                               double weight, CscMatrix* lower, int32_t threads = 1);
 
-// The benchmark anchor rule of DESIGN.md section 6: k0 anchors at vertices
+// The benchmark anchor rule (README, "The command-line tool", gab factor): k0 anchors at vertices
 // floor(j n / k0), j = 0..k0-1 (distinct), then the smallest vertex of each
 // connected component that has none. O(V + E).
 std::vector<int32_t> benchmark_anchors(const EdgeGraph& graph, int32_t k0);

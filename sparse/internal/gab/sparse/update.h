@@ -1,8 +1,8 @@
 // Anchor updates of a supernodal Cholesky factor, in place: the factor of
 // M + w^2 e_j e_j^T (add) or M - w^2 e_j e_j^T (remove) from the factor of
 // M, by Givens rotations along the elimination-tree path of pivot
-// inverse_perm[j]. The nonzero structure never changes (DESIGN.md section 3,
-// step 5). Allocation-free: the caller supplies the workspace; cholesky.h
+// inverse_perm[j]. The nonzero structure never changes (Sorkine et al.
+// 2005: the incremental update of the factorization). Allocation-free: the caller supplies the workspace; cholesky.h
 // wraps these in Cholesky::add_anchor / remove_anchor.
 #pragma once
 

@@ -1,0 +1,56 @@
+#include "commands.h"
+
+#include <cstring>
+
+namespace gab {
+namespace cli {
+
+const std::vector<Command>& commands() {
+  static const std::vector<Command> table = {
+      {"compress", run_compress,
+       {"-i IN -o OUT.gab [--anchors K | --error E | --linf E] [--bits Q] [--weight W]",
+        "[--geometry-only] [--refine] [--threads T] [--json]",
+        "(tuning: --batch F --chunk-growth G --initial K --layout smaller|levels|selection)"},
+       "compress a mesh's geometry with geometry-aware anchors (default --error 0.001: relative\n"
+       "vertex RMS over the bounding-box diagonal; q picked from the target, 12 for --anchors)"},
+      {"decompress", run_decompress,
+       {"-i IN.gab -o OUT [--anchors K] [--connectivity MESH] [--threads T] [--json]"},
+       "decode a .gab file (its first K anchors only: a coarser level of detail)"},
+      {"info", run_info, {"IN.gab [--json]"}, "what a .gab file holds (checksums verified, nothing decoded)"},
+      {"demo", run_demo, {""}, "compress a real mesh at several anchor counts, print a table, write the meshes"},
+      {"factor", run_factor, {"IN [--ordering amd|natural] [--anchors K] [--repeat R] [--threads T] [--json]"},
+       "order, analyze, factor and solve the least-squares matrix of a mesh (.obj .off .ply)\n"
+       "or a Matrix Market file (.mtx); report sizes and median phase times"},
+      {"study", run_study,
+       {"IN... [--ordering amd|natural] [--updates U] [--batch B] [--anchors K]",
+        "[--subdivide K] [--threads T] [--csv F] [--svg F] [--json]"},
+       "add U anchors to the factor one (or B) at a time by Givens rotations along the\n"
+       "elimination tree; report path lengths, entries touched, times, drift"},
+      {"diff", run_diff, {"A B [--samples N] [--json]"},
+       "distances between two meshes (.obj .off .ply): per vertex when the vertex counts\n"
+       "match, and the symmetric surface distance (mean, RMS, Hausdorff) from N samples"},
+  };
+  return table;
+}
+
+const Command* find_command(const std::string& name) {
+  for (const Command& c : commands()) {
+    if (name == c.name) return &c;
+  }
+  return nullptr;
+}
+
+std::string usage_text(const Command& command) {
+  const std::string head = std::string("gab ") + command.name + " ";
+  std::string text;
+  for (size_t i = 0; i < command.synopsis.size(); ++i) {
+    if (i > 0) text += "\n" + std::string(head.size(), ' ');
+    text += command.synopsis[i];
+  }
+  text = head + text;
+  while (!text.empty() && text.back() == ' ') text.pop_back();  // "gab demo"
+  return text;
+}
+
+}  // namespace cli
+}  // namespace gab
