@@ -12,7 +12,7 @@ namespace {
 
 using gab_test::CommandResult;
 using gab_test::run_gab;
-using gab_test::write_temp;
+using gab_test::write_scratch_file;
 
 // A closed octahedron: 6 vertices, 8 faces.
 const char* kOctahedron =
@@ -20,7 +20,7 @@ const char* kOctahedron =
     "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n";
 
 TEST(CliTest, FactorJsonHasTheContractKeys) {
-  const std::string path = write_temp("octa.off", kOctahedron);
+  const std::string path = write_scratch_file("octa.off", kOctahedron);
   const CommandResult r = run_gab("factor " + path + " --json --anchors 2 --repeat 2");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* key : {"\"n\": 6", "\"nnz_A\": 21", "\"nnz_L\":", "\"flops\":", "\"supernodes\":",
@@ -34,7 +34,7 @@ TEST(CliTest, FactorJsonHasTheContractKeys) {
 }
 
 TEST(CliTest, FactorReportsItsThreadsAndTheSameResidualWithAny) {
-  const std::string path = write_temp("octa-t.off", kOctahedron);
+  const std::string path = write_scratch_file("octa-t.off", kOctahedron);
   const CommandResult one = run_gab("factor " + path + " --json --anchors 2 --repeat 1");
   const CommandResult two = run_gab("factor " + path + " --json --anchors 2 --repeat 1 --threads 2");
   ASSERT_EQ(one.exit_code, 0) << one.err;
@@ -48,7 +48,7 @@ TEST(CliTest, FactorReportsItsThreadsAndTheSameResidualWithAny) {
 }
 
 TEST(CliTest, FactorMatrixMarketResidualIsTiny) {
-  const std::string path = write_temp(
+  const std::string path = write_scratch_file(
       "spd.mtx", "%%MatrixMarket matrix coordinate real symmetric\n3 3 5\n1 1 4\n2 1 1\n2 2 4\n3 2 1\n3 3 4\n");
   const CommandResult r = run_gab("factor " + path + " --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -62,14 +62,14 @@ TEST(CliTest, BadInputExitsOneWithOneLine) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(r.err, "gab: error: /nonexistent/x.off: cannot open: No such file or directory\n");
   EXPECT_EQ(r.out, "");
-  const std::string bad = write_temp("bad.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+  const std::string bad = write_scratch_file("bad.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
   const CommandResult r2 = run_gab("factor " + bad + " --json");
   EXPECT_EQ(r2.exit_code, 1);
   EXPECT_EQ(r2.err, "gab: error: " + bad + ":6: face 0: vertex index 7 out of range [0, 3)\n");
 }
 
 TEST(CliTest, NotPositiveDefiniteIsAFailureNamingTheColumn) {
-  const std::string path = write_temp(
+  const std::string path = write_scratch_file(
       "indef.mtx", "%%MatrixMarket matrix coordinate real symmetric\n2 2 2\n1 1 1\n2 2 -1\n");
   const CommandResult r = run_gab("factor " + path + " --ordering natural");
   EXPECT_EQ(r.exit_code, 1);
@@ -99,7 +99,7 @@ TEST(CliTest, UnsupportedExtensionIsBadInput) {
 namespace {
 
 TEST(CliStudyTest, JsonCsvAndSvg) {
-  const std::string path = write_temp("octa_study.off", kOctahedron);
+  const std::string path = write_scratch_file("octa_study.off", kOctahedron);
   const std::string csv = gab_test::scratch_path("study.csv");
   const std::string svg = gab_test::scratch_path("study.svg");
   const CommandResult r = run_gab("study " + path + " --anchors 1 --updates 4 --json --csv " + csv + " --svg " + svg);
@@ -148,7 +148,7 @@ TEST(CliStudyTest, TwoThreadsGiveTheSameUpdatesAndDrift) {
     }
   }
   mtx += std::to_string(n) + " " + std::to_string(n) + " " + std::to_string(count) + "\n" + entries;
-  const std::string path = write_temp("grid3d_study.mtx", mtx);
+  const std::string path = write_scratch_file("grid3d_study.mtx", mtx);
   const CommandResult one = run_gab("study " + path + " --updates 60 --json");
   const CommandResult two = run_gab("study " + path + " --updates 60 --threads 2 --json");
   ASSERT_EQ(one.exit_code, 0) << one.err;
@@ -162,7 +162,7 @@ TEST(CliStudyTest, TwoThreadsGiveTheSameUpdatesAndDrift) {
 }
 
 TEST(CliStudyTest, UpdatesStopWhenEveryVertexIsAnchored) {
-  const std::string path = write_temp("octa_all.off", kOctahedron);
+  const std::string path = write_scratch_file("octa_all.off", kOctahedron);
   const CommandResult r = run_gab("study " + path + " --anchors 2 --updates 100 --batch 3 --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("\"updates\": 4"), std::string::npos) << r.out;  // 6 vertices, 2 anchored

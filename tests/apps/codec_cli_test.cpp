@@ -15,7 +15,7 @@ namespace {
 using gab_test::CommandResult;
 using gab_test::json_number;
 using gab_test::run_gab;
-using gab_test::write_temp;
+using gab_test::write_scratch_file;
 
 // A bumpy torus as OFF text (n x m vertices).
 std::string torus_off(int n, int m) {
@@ -50,9 +50,9 @@ bool is_one_json_line(const std::string& out) {
 }
 
 TEST(CodecCliTest, CompressDecompressInfoRoundTrip) {
-  const std::string in = write_temp("rt.off", torus_off(40, 20));
-  const std::string gab = write_temp("rt.gab", "");
-  const std::string out = write_temp("rt-out.ply", "");
+  const std::string in = write_scratch_file("rt.off", torus_off(40, 20));
+  const std::string gab = write_scratch_file("rt.gab", "");
+  const std::string out = write_scratch_file("rt-out.ply", "");
   CommandResult c = run_gab("compress -i " + in + " -o " + gab + " --anchors 60 --json");
   ASSERT_EQ(c.exit_code, 0) << c.err;
   ASSERT_TRUE(is_one_json_line(c.out)) << c.out;
@@ -90,9 +90,9 @@ TEST(CodecCliTest, CompressDecompressInfoRoundTrip) {
 }
 
 TEST(CodecCliTest, RefineAddsALeastSquaresChunkThatDecompressApplies) {
-  const std::string in = write_temp("refine.off", torus_off(40, 20));
-  const std::string plain = write_temp("refine-plain.gab", ""), refined = write_temp("refine.gab", "");
-  const std::string out = write_temp("refine-out.off", "");
+  const std::string in = write_scratch_file("refine.off", torus_off(40, 20));
+  const std::string plain = write_scratch_file("refine-plain.gab", ""), refined = write_scratch_file("refine.gab", "");
+  const std::string out = write_scratch_file("refine-out.off", "");
   CommandResult a = run_gab("compress -i " + in + " -o " + plain + " --anchors 60 --json");
   CommandResult b = run_gab("compress -i " + in + " -o " + refined + " --anchors 60 --refine --json");
   ASSERT_EQ(a.exit_code, 0) << a.err;
@@ -115,12 +115,12 @@ TEST(CodecCliTest, RefineAddsALeastSquaresChunkThatDecompressApplies) {
 }
 
 TEST(CodecCliTest, LevelOfDetailFromOneFile) {
-  const std::string in = write_temp("lod.off", torus_off(40, 20));
-  const std::string gab = write_temp("lod.gab", "");
+  const std::string in = write_scratch_file("lod.off", torus_off(40, 20));
+  const std::string gab = write_scratch_file("lod.gab", "");
   ASSERT_EQ(run_gab("compress -i " + in + " -o " + gab + " --anchors 150").exit_code, 0);
   double previous = 1.0;
   for (int k : {20, 60, 150}) {
-    const std::string out = write_temp("lod-" + std::to_string(k) + ".off", "");
+    const std::string out = write_scratch_file("lod-" + std::to_string(k) + ".off", "");
     CommandResult d = run_gab("decompress -i " + gab + " -o " + out + " --anchors " + std::to_string(k) + " --json");
     ASSERT_EQ(d.exit_code, 0) << d.err;
     EXPECT_EQ(json_number(d.out, "anchors"), k);
@@ -135,9 +135,9 @@ TEST(CodecCliTest, DecodingAtAnotherSimdLevelGivesTheSameAnchors) {
   // Predictions are rounded with a guard band, so a decoder whose floating
   // point differs (scalar kernels here) still decodes the same coefficients:
   // the shapes agree to rounding, not just to the quantization step.
-  const std::string in = write_temp("simd.off", torus_off(60, 30));
-  const std::string gab = write_temp("simd.gab", "");
-  const std::string a = write_temp("simd-a.off", ""), b = write_temp("simd-b.off", "");
+  const std::string in = write_scratch_file("simd.off", torus_off(60, 30));
+  const std::string gab = write_scratch_file("simd.gab", "");
+  const std::string a = write_scratch_file("simd-a.off", ""), b = write_scratch_file("simd-b.off", "");
   ASSERT_EQ(run_gab("compress -i " + in + " -o " + gab + " --error 0.002").exit_code, 0);
   ASSERT_EQ(run_gab("decompress -i " + gab + " -o " + a).exit_code, 0);
   ASSERT_EQ(run_gab("decompress -i " + gab + " -o " + b, "GAB_SIMD=scalar").exit_code, 0);
@@ -150,9 +150,9 @@ TEST(CodecCliTest, ThreadCountChangesNeitherTheFileNorTheShape) {
   // --threads only spreads the factorizations; the bytes and the decoded
   // coordinates are the same (the encoder and decoder compute
   // bit-identical shapes), here also with huge-page malloc turned off.
-  const std::string in = write_temp("thr.off", torus_off(80, 40));
-  const std::string one = write_temp("thr-1.gab", ""), three = write_temp("thr-3.gab", "");
-  const std::string a = write_temp("thr-a.off", ""), b = write_temp("thr-b.off", "");
+  const std::string in = write_scratch_file("thr.off", torus_off(80, 40));
+  const std::string one = write_scratch_file("thr-1.gab", ""), three = write_scratch_file("thr-3.gab", "");
+  const std::string a = write_scratch_file("thr-a.off", ""), b = write_scratch_file("thr-b.off", "");
   ASSERT_EQ(run_gab("compress -i " + in + " -o " + one + " --threads 1").exit_code, 0);
   ASSERT_EQ(run_gab("compress -i " + in + " -o " + three + " --threads 3").exit_code, 0);
   EXPECT_EQ(read_all(one), read_all(three));
@@ -166,12 +166,12 @@ TEST(CodecCliTest, ThreadCountChangesNeitherTheFileNorTheShape) {
 }
 
 TEST(CodecCliTest, TruncatedFileDecodesItsCompleteChunksWithAWarning) {
-  const std::string in = write_temp("cut.off", torus_off(40, 20));
-  const std::string gab = write_temp("cut.gab", "");
+  const std::string in = write_scratch_file("cut.off", torus_off(40, 20));
+  const std::string gab = write_scratch_file("cut.gab", "");
   ASSERT_EQ(run_gab("compress -i " + in + " -o " + gab + " --anchors 100").exit_code, 0);
   const std::string bytes = read_all(gab);
-  const std::string cut = write_temp("cut-short.gab", bytes.substr(0, bytes.size() - 10));
-  const std::string out = write_temp("cut-out.off", "");
+  const std::string cut = write_scratch_file("cut-short.gab", bytes.substr(0, bytes.size() - 10));
+  const std::string out = write_scratch_file("cut-out.off", "");
   CommandResult d = run_gab("decompress -i " + cut + " -o " + out + " --json");
   ASSERT_EQ(d.exit_code, 0) << d.err;
   EXPECT_LT(json_number(d.out, "anchors"), 100);
@@ -182,10 +182,10 @@ TEST(CodecCliTest, TruncatedFileDecodesItsCompleteChunksWithAWarning) {
 }
 
 TEST(CodecCliTest, GeometryOnlyFilesNeedTheirConnectivity) {
-  const std::string in = write_temp("geo.off", torus_off(30, 12));
-  const std::string other = write_temp("geo-other.off", torus_off(12, 30));
-  const std::string gab = write_temp("geo.gab", "");
-  const std::string out = write_temp("geo-out.obj", "");
+  const std::string in = write_scratch_file("geo.off", torus_off(30, 12));
+  const std::string other = write_scratch_file("geo-other.off", torus_off(12, 30));
+  const std::string gab = write_scratch_file("geo.gab", "");
+  const std::string out = write_scratch_file("geo-out.obj", "");
   ASSERT_EQ(run_gab("compress -i " + in + " -o " + gab + " --anchors 30 --geometry-only").exit_code, 0);
   CommandResult d = run_gab("decompress -i " + gab + " -o " + out);
   EXPECT_EQ(d.exit_code, 1);
@@ -199,8 +199,8 @@ TEST(CodecCliTest, GeometryOnlyFilesNeedTheirConnectivity) {
 }
 
 TEST(CodecCliTest, UsageAndInputErrors) {
-  const std::string in = write_temp("err.off", torus_off(10, 6));
-  const std::string gab = write_temp("err.gab", "");
+  const std::string in = write_scratch_file("err.off", torus_off(10, 6));
+  const std::string gab = write_scratch_file("err.gab", "");
   CommandResult r = run_gab("compress -i " + in + " -o " + gab + " --anchors 5 --error 0.01");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("give at most one of --anchors, --error, --linf"), std::string::npos);
@@ -209,22 +209,22 @@ TEST(CodecCliTest, UsageAndInputErrors) {
   EXPECT_EQ(run_gab("decompress -i " + gab + " -o x.txt").exit_code, 2);
   EXPECT_EQ(run_gab("info").exit_code, 2);
   // Bad input: exit 1, one line, and no output file left behind.
-  const std::string missing = write_temp("missing-out.gab", "");
+  const std::string missing = write_scratch_file("missing-out.gab", "");
   std::remove(missing.c_str());
   r = run_gab("compress -i /nonexistent/mesh.off -o " + missing);
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(r.err.rfind("gab: error: ", 0), 0u);
   EXPECT_EQ(r.err.find('\n'), r.err.size() - 1);
   EXPECT_FALSE(std::ifstream(missing).good());
-  const std::string not_gab = write_temp("not.gab", "hello, world, this is not a gab file at all........");
+  const std::string not_gab = write_scratch_file("not.gab", "hello, world, this is not a gab file at all........");
   r = run_gab("info " + not_gab);
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(r.err, "gab: error: " + not_gab + ": not a .gab file (bad magic)\n");
 }
 
 TEST(CodecCliTest, UnreachableTargetWarnsAndStillWrites) {
-  const std::string in = write_temp("far.off", torus_off(12, 6));
-  const std::string gab = write_temp("far.gab", "");
+  const std::string in = write_scratch_file("far.off", torus_off(12, 6));
+  const std::string gab = write_scratch_file("far.gab", "");
   CommandResult r = run_gab("compress -i " + in + " -o " + gab + " --error 1e-9 --bits 6 --json");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(json_number(r.out, "anchors"), 72);  // every vertex
@@ -236,7 +236,7 @@ TEST(CodecCliTest, UnreachableTargetWarnsAndStillWrites) {
 
 TEST(CodecCliTest, DemoRunsOnAGivenMeshAndWritesItsFiles) {
   const std::string dir = gab_test::scratch_path("demo");
-  const std::string mesh = write_temp("demo.off", torus_off(40, 20));
+  const std::string mesh = write_scratch_file("demo.off", torus_off(40, 20));
   CommandResult r = run_gab("demo", "mkdir -p " + dir + " && cd " + dir + " && GAB_DEMO_MESH=" + mesh);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("anchors"), std::string::npos);

@@ -15,7 +15,7 @@ using gab_test::CommandResult;
 using gab_test::json_null;
 using gab_test::json_number;
 using gab_test::run_gab;
-using gab_test::write_temp;
+using gab_test::write_scratch_file;
 
 // The unit square (two triangles) at height z, as OFF; and as OBJ.
 std::string square_off(double z) {
@@ -24,8 +24,8 @@ std::string square_off(double z) {
 }
 
 TEST(DiffCliTest, JsonHasTheContractKeysAndKnownValues) {
-  const std::string a = write_temp("a.off", square_off(0));
-  const std::string b = write_temp("b.obj", "v 0 0 0.25\nv 1 0 0.25\nv 1 1 0.25\nv 0 1 0.25\nf 1 2 3\nf 1 3 4\n");
+  const std::string a = write_scratch_file("a.off", square_off(0));
+  const std::string b = write_scratch_file("b.obj", "v 0 0 0.25\nv 1 0 0.25\nv 1 1 0.25\nv 0 1 0.25\nf 1 2 3\nf 1 3 4\n");
   const CommandResult r = run_gab("diff " + a + " " + b + " --json --samples 5000");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   // Exactly one JSON object on one line, nothing else on stdout.
@@ -47,9 +47,9 @@ TEST(DiffCliTest, JsonHasTheContractKeysAndKnownValues) {
 }
 
 TEST(DiffCliTest, DifferentVertexCountsGiveNullVertexMetrics) {
-  const std::string a = write_temp("a2.off", square_off(0));
+  const std::string a = write_scratch_file("a2.off", square_off(0));
   // The same square as four triangles around a centre vertex, in ASCII PLY.
-  const std::string b = write_temp(
+  const std::string b = write_scratch_file(
       "b2.ply",
       "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
       "element face 4\nproperty list uchar int vertex_indices\nend_header\n"
@@ -65,8 +65,8 @@ TEST(DiffCliTest, DifferentVertexCountsGiveNullVertexMetrics) {
 }
 
 TEST(DiffCliTest, NoSamplesLeavesOnlyTheVertexHausdorff) {
-  const std::string a = write_temp("a5.off", square_off(0));
-  const std::string b = write_temp("b5.off", square_off(2));
+  const std::string a = write_scratch_file("a5.off", square_off(0));
+  const std::string b = write_scratch_file("b5.off", square_off(2));
   const CommandResult r = run_gab("diff " + a + " " + b + " --samples 0 --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(json_null(r.out, "metro_mean_rel"));
@@ -75,8 +75,8 @@ TEST(DiffCliTest, NoSamplesLeavesOnlyTheVertexHausdorff) {
 }
 
 TEST(DiffCliTest, HumanReadableOutput) {
-  const std::string a = write_temp("a3.off", square_off(0));
-  const std::string b = write_temp("b3.off", square_off(0.5));
+  const std::string a = write_scratch_file("a3.off", square_off(0));
+  const std::string b = write_scratch_file("b3.off", square_off(0.5));
   const CommandResult r = run_gab("diff " + a + " " + b + " --samples 100");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("vertex distance: max 0.5"), std::string::npos) << r.out;
@@ -84,8 +84,8 @@ TEST(DiffCliTest, HumanReadableOutput) {
 }
 
 TEST(DiffCliTest, BadInputExitsOneWithOneLine) {
-  const std::string a = write_temp("a4.off", square_off(0));
-  const std::string bad = write_temp("bad.ply", square_off(0));
+  const std::string a = write_scratch_file("a4.off", square_off(0));
+  const std::string bad = write_scratch_file("bad.ply", square_off(0));
   CommandResult r = run_gab("diff " + a + " " + bad + " --json");
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(r.out, "");
@@ -93,7 +93,7 @@ TEST(DiffCliTest, BadInputExitsOneWithOneLine) {
   r = run_gab("diff /nonexistent/a.obj " + a);
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(r.err, "gab: error: /nonexistent/a.obj: cannot open: No such file or directory\n");
-  const std::string hostile = write_temp("hostile.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 9\n");
+  const std::string hostile = write_scratch_file("hostile.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 9\n");
   r = run_gab("diff " + hostile + " " + a);
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(r.err, "gab: error: " + hostile + ":6: face 0: vertex index 9 out of range [0, 3)\n");
@@ -114,8 +114,8 @@ TEST(DiffCliTest, BadUsageExitsTwo) {
 }
 
 TEST(DiffCliTest, FactorReadsEveryMeshFormat) {
-  const std::string obj = write_temp("sq.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
-  const std::string ply = write_temp(
+  const std::string obj = write_scratch_file("sq.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
+  const std::string ply = write_scratch_file(
       "sq.ply",
       "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
       "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n");

@@ -194,7 +194,7 @@ TEST(MalformedCorpusTest, ReadMeshNamesPathAndExtensionProblems) {
   EXPECT_EQ(read_mesh("dir.v2/model", &m).message(),
             "dir.v2/model: unsupported mesh type '(no extension)' (expected .obj, .off or .ply)");
   EXPECT_EQ(read_mesh("/nonexistent/a.PLY", &m).message(), "/nonexistent/a.PLY: cannot open: No such file or directory");
-  const std::string dir = ::testing::TempDir() + "/gab_dir_" + std::to_string(getpid()) + ".obj";
+  const std::string dir = gab_test::scratch_path("dir.obj");
   ASSERT_EQ(::mkdir(dir.c_str(), 0700), 0);
   EXPECT_EQ(read_mesh(dir, &m).message(), dir + ": cannot open: Is a directory");
   ::rmdir(dir.c_str());

@@ -1,7 +1,6 @@
 // The format-dispatching entry points, atomic writes, and the real meshes.
 #include "gab/mesh/mesh_io.h"
 
-#include <dirent.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
@@ -15,19 +14,6 @@ namespace {
 
 using testing_util::exists;
 using testing_util::temp_path;
-
-// Names in `dir` that start with `prefix`.
-std::vector<std::string> entries(const std::string& dir, const std::string& prefix) {
-  std::vector<std::string> out;
-  DIR* d = opendir(dir.c_str());
-  if (d == nullptr) return out;
-  while (dirent* e = readdir(d)) {
-    const std::string name = e->d_name;
-    if (name.rfind(prefix, 0) == 0) out.push_back(name);
-  }
-  closedir(d);
-  return out;
-}
 
 std::string base_name(const std::string& path) { return path.substr(path.find_last_of('/') + 1); }
 
@@ -44,7 +30,7 @@ TEST(MeshIoTest, WriteThenReadEveryFormatByExtension) {
     for (size_t i = 0; i < m.positions.size(); ++i) {
       EXPECT_NEAR(back.positions[i], m.positions[i], 1e-15) << ext;  // OBJ: tinyobjloader's rounding
     }
-    EXPECT_TRUE(entries(::testing::TempDir(), base_name(path) + ".tmp").empty()) << "temporary file left behind";
+    EXPECT_TRUE(gab_test::scratch_entries(base_name(path) + ".tmp").empty()) << "temporary file left behind";
     std::remove(path.c_str());
   }
 }
@@ -66,7 +52,7 @@ TEST(MeshIoTest, PlyOptionsPassThrough) {
 
 TEST(MeshIoTest, AtomicWriteReplacesWholeOrNothing) {
   const std::string path = temp_path("replace.off");
-  testing_util::write_bytes(path, "old contents");
+  gab_test::write_file(path, "old contents");
   ASSERT_TRUE(write_mesh(path, testing_util::grid(1, 1)).ok());
   Mesh back;
   ASSERT_TRUE(read_mesh(path, &back).ok());
@@ -74,7 +60,7 @@ TEST(MeshIoTest, AtomicWriteReplacesWholeOrNothing) {
 
   // Failures: nothing is created, an existing target is untouched, no
   // temporary is left.
-  const std::string missing_dir = ::testing::TempDir() + "/gab_no_such_dir_" + std::to_string(getpid()) + "/a.off";
+  const std::string missing_dir = gab_test::scratch_path("no_such_dir/a.off");
   Status s = write_mesh(missing_dir, back);
   EXPECT_EQ(s.code(), StatusCode::kIoError);
   EXPECT_EQ(s.message(), missing_dir + ": cannot write: No such file or directory");
@@ -84,7 +70,7 @@ TEST(MeshIoTest, AtomicWriteReplacesWholeOrNothing) {
   s = write_mesh(dir, back);
   EXPECT_EQ(s.code(), StatusCode::kIoError);
   EXPECT_EQ(s.message(), dir + ": cannot write: Is a directory");
-  EXPECT_TRUE(entries(::testing::TempDir(), base_name(dir) + ".tmp").empty());
+  EXPECT_TRUE(gab_test::scratch_entries(base_name(dir) + ".tmp").empty());
   ::rmdir(dir.c_str());
 
   Mesh invalid = back;

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <string>
 
+#include "common/scratch_files.h"
 #include "gab/mesh/mesh.h"
 
 namespace gab {
@@ -50,14 +51,10 @@ inline Mesh torus(int n, int m, double R = 1.0, double r = 0.3) {
   return t;
 }
 
-// A path unique to this process and call, in the test temp folder.
+// A path unique to this call, in the process's scratch folder.
 inline std::string temp_path(const std::string& name) {
   static int calls = 0;
-  return ::testing::TempDir() + "/gab_mesh_" + std::to_string(getpid()) + "_" + std::to_string(++calls) + "_" + name;
-}
-
-inline void write_bytes(const std::string& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary) << bytes;
+  return gab_test::scratch_path(std::to_string(++calls) + "_" + name);
 }
 
 inline std::string shared_mesh(const std::string& name) { return std::string(GAB_SHARED_MESHES) + "/" + name; }

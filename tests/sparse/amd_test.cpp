@@ -218,16 +218,6 @@ int64_t factor_nnz_by_elimination(const CscMatrix& lower, const std::vector<int3
   return total;
 }
 
-bool is_valid_permutation(const std::vector<int32_t>& perm, int32_t n) {
-  if (perm.size() != static_cast<size_t>(n)) return false;
-  std::vector<char> seen(static_cast<size_t>(n), 0);
-  for (int32_t v : perm) {
-    if (v < 0 || v >= n || seen[v]) return false;
-    seen[v] = 1;
-  }
-  return true;
-}
-
 std::vector<int32_t> identity(int32_t n) {
   std::vector<int32_t> p(static_cast<size_t>(n));
   for (int32_t i = 0; i < n; ++i) p[i] = i;
@@ -242,8 +232,8 @@ int64_t order_and_check(const CscMatrix& a, const AmdOptions& options = AmdOptio
   AmdInfo info;
   const Status s = amd_order(a, &perm, options, &info);
   EXPECT_TRUE(s.ok()) << s.message();
-  EXPECT_TRUE(is_valid_permutation(perm, a.ncols));
-  if (!is_valid_permutation(perm, a.ncols)) return -1;
+  EXPECT_TRUE(is_permutation(perm, a.ncols));
+  if (!is_permutation(perm, a.ncols)) return -1;
   EXPECT_EQ(info.n, a.ncols);
   const std::vector<int64_t> counts = factor_column_counts(a, perm);
   int64_t nnz = 0;
@@ -422,7 +412,7 @@ TEST(AmdTest, DenseRowsAreOrderedLast) {
   std::vector<int32_t> perm;
   AmdInfo info;
   ASSERT_TRUE(amd_order(a, &perm, AmdOptions(), &info).ok());
-  ASSERT_TRUE(is_valid_permutation(perm, n));
+  ASSERT_TRUE(is_permutation(perm, n));
   EXPECT_EQ(info.dense_rows, 3);
   EXPECT_EQ(std::vector<int32_t>(perm.end() - 3, perm.end()), dense);
   const int64_t with_dense = order_and_check(a);

@@ -22,6 +22,8 @@
 #include <thread>
 #include <vector>
 
+#include "common/scratch_files.h"
+
 namespace gab {
 namespace {
 
@@ -99,8 +101,7 @@ class ScratchDir {
  public:
   ScratchDir() {
     const auto* test = testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::path(testing::TempDir()) / ("gab_mm_" + std::string(test->test_suite_name()) + "_" +
-                                            test->name() + "_" + std::to_string(getpid()));
+    path_ = fs::path(gab_test::scratch_dir()) / (std::string(test->test_suite_name()) + "_" + test->name());
     fs::remove_all(path_);
     fs::create_directories(path_);
   }
@@ -121,17 +122,6 @@ class ScratchDir {
   fs::path path_;
 };
 
-void write_text(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-}
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
 
 // ---------------------------------------------------------------------------
 // Reading: the accepted dialect.
@@ -453,7 +443,7 @@ TEST(MatrixMarketFile, DirectoryIsIoError) {
 TEST(MatrixMarketFile, ParseErrorsNameThePath) {
   ScratchDir dir;
   const std::string path = dir.file("bad.mtx");
-  write_text(path, g("3 3 2\n1 1 1\n2 2\n"));
+  gab_test::write_file(path, g("3 3 2\n1 1 1\n2 2\n"));
   CscMatrix a;
   const Status s = read_matrix_market(path, &a);
   EXPECT_EQ(s.code(), StatusCode::kParseError);
@@ -477,7 +467,7 @@ TEST(MatrixMarketFile, LargeFileMatchesInMemoryParse) {
   ScratchDir dir;
   const std::string path = dir.file("large.mtx");
   const std::string text = many_entries_text(150000);  // about 3 MB
-  write_text(path, text);
+  gab_test::write_file(path, text);
   CscMatrix from_file, from_memory;
   ASSERT_TRUE(read_matrix_market(path, &from_file).ok());
   ASSERT_TRUE(parse(text, &from_memory).ok());
@@ -491,7 +481,7 @@ TEST(MatrixMarketFile, LineNumbersStayExactAcrossBlocks) {
   const std::string path = dir.file("late_error.mtx");
   std::string text = many_entries_text(150000);
   text += "1 1 oops\n";  // line 150003, one entry more than declared
-  write_text(path, text);
+  gab_test::write_file(path, text);
   CscMatrix a;
   const Status s = read_matrix_market(path, &a);
   EXPECT_EQ(s.message(), path +
@@ -502,11 +492,11 @@ TEST(MatrixMarketFile, LineNumbersStayExactAcrossBlocks) {
 TEST(MatrixMarketFile, LineLongerThanTheReadWindow) {
   ScratchDir dir;
   const std::string path = dir.file("long_comment.mtx");
-  write_text(path, std::string(kGeneral) + "%" + std::string(3 << 20, 'c') + "\n2 2 1\n2 1 3\n");
+  gab_test::write_file(path, std::string(kGeneral) + "%" + std::string(3 << 20, 'c') + "\n2 2 1\n2 1 3\n");
   CscMatrix a;
   ASSERT_TRUE(read_matrix_market(path, &a).ok());
   EXPECT_EQ(a.values, (std::vector<double>{3.0}));
-  write_text(path, std::string(kGeneral) + "2 2 1\n2 1 3" + std::string(3 << 20, ' ') + "x\n");
+  gab_test::write_file(path, std::string(kGeneral) + "2 2 1\n2 1 3" + std::string(3 << 20, ' ') + "x\n");
   EXPECT_EQ(read_matrix_market(path, &a).message(),
             path + ":3: expected 3 fields (row col value), got 4");
 }
@@ -517,7 +507,7 @@ TEST(MatrixMarketFile, ReadsFromAPipe) {
   const std::string path = dir.file("fifo.mtx");
   ASSERT_EQ(mkfifo(path.c_str(), 0600), 0);
   const std::string text = many_entries_text(100000);
-  std::thread writer([&] { write_text(path, text); });
+  std::thread writer([&] { gab_test::write_file(path, text); });
   CscMatrix from_pipe, from_memory;
   const Status s = read_matrix_market(path, &from_pipe);
   writer.join();
@@ -547,7 +537,7 @@ TEST(MatrixMarketFile, RoundTripSymmetricIsBitExact) {
   const std::string path = dir.file("symmetric.mtx");
   const CscMatrix lower = random_matrix(41, 41, 0.15, /*lower=*/true, 7);
   ASSERT_TRUE(write_matrix_market(path, lower, /*symmetric=*/true).ok());
-  EXPECT_EQ(read_text(path).rfind("%%MatrixMarket matrix coordinate real symmetric\n41 41 ", 0),
+  EXPECT_EQ(gab_test::read_file(path).rfind("%%MatrixMarket matrix coordinate real symmetric\n41 41 ", 0),
             0u);
   CscMatrix b;
   MatrixMarketInfo info;
@@ -565,7 +555,7 @@ TEST(MatrixMarketFile, RoundTripPatternOnlyMatrix) {
   CscMatrix a = random_matrix(9, 12, 0.3, /*lower=*/false, 3);
   a.values.clear();
   ASSERT_TRUE(write_matrix_market(path, a, /*symmetric=*/false).ok());
-  EXPECT_EQ(read_text(path).rfind("%%MatrixMarket matrix coordinate pattern general\n", 0), 0u);
+  EXPECT_EQ(gab_test::read_file(path).rfind("%%MatrixMarket matrix coordinate pattern general\n", 0), 0u);
   CscMatrix b;
   MatrixMarketInfo info;
   ASSERT_TRUE(read_matrix_market(path, &b, &info).ok());
@@ -597,7 +587,7 @@ TEST(MatrixMarketFile, WrittenTextIsPinned) {
   CscMatrix a;
   ASSERT_TRUE(csc_from_triplets(3, 2, {{0, 0, 1.5}, {2, 0, -2.0}, {1, 1, 0.1}}, &a).ok());
   ASSERT_TRUE(write_matrix_market(path, a, false).ok());
-  EXPECT_EQ(read_text(path),
+  EXPECT_EQ(gab_test::read_file(path),
             "%%MatrixMarket matrix coordinate real general\n"
             "3 2 3\n"
             "1 1 1.5\n"
@@ -612,7 +602,7 @@ TEST(MatrixMarketFile, ValuesAreWrittenAsPrintf17g) {
   const std::string path = dir.file("g17.mtx");
   const CscMatrix a = random_matrix(30, 30, 0.3, /*lower=*/false, 11);
   ASSERT_TRUE(write_matrix_market(path, a, false).ok());
-  std::istringstream in(read_text(path));
+  std::istringstream in(gab_test::read_file(path));
   std::string line;
   std::getline(in, line);  // banner
   std::getline(in, line);  // size
@@ -631,7 +621,7 @@ TEST(MatrixMarketFile, ReadSymmetricFromSymmetricGeneralFile) {
   ScratchDir dir;
   const std::string path = dir.file("general_symmetric.mtx");
   // Values symmetric after duplicate summation: (2,1) = 1 + 2 = 3 = (1,2).
-  write_text(path, g("3 3 6\n1 1 4\n2 1 1\n1 2 3\n2 1 2\n3 3 5\n2 2 6\n"));
+  gab_test::write_file(path, g("3 3 6\n1 1 4\n2 1 1\n1 2 3\n2 1 2\n3 3 5\n2 2 6\n"));
   CscMatrix lower;
   ASSERT_TRUE(read_symmetric_matrix_market(path, &lower).ok());
   EXPECT_EQ(lower.colptr, (std::vector<int32_t>{0, 2, 3, 4}));
@@ -642,7 +632,7 @@ TEST(MatrixMarketFile, ReadSymmetricFromSymmetricGeneralFile) {
 TEST(MatrixMarketFile, ReadSymmetricRejectsUnequalMirror) {
   ScratchDir dir;
   const std::string path = dir.file("asym.mtx");
-  write_text(path, g("3 3 4\n1 1 4\n% c\n3 1 2\n1 3 2.5\n2 2 1\n"));
+  gab_test::write_file(path, g("3 3 4\n1 1 4\n% c\n3 1 2\n1 3 2.5\n2 2 1\n"));
   CscMatrix lower;
   const Status s = read_symmetric_matrix_market(path, &lower);
   EXPECT_EQ(s.code(), StatusCode::kParseError);
@@ -654,7 +644,7 @@ TEST(MatrixMarketFile, ReadSymmetricRejectsUnequalMirror) {
 TEST(MatrixMarketFile, ReadSymmetricRejectsMissingMirror) {
   ScratchDir dir;
   const std::string path = dir.file("one_sided.mtx");
-  write_text(path, g("2 2 2\n1 1 4\n2 1 -1\n"));
+  gab_test::write_file(path, g("2 2 2\n1 1 4\n2 1 -1\n"));
   CscMatrix lower;
   const Status s = read_symmetric_matrix_market(path, &lower);
   EXPECT_EQ(s.code(), StatusCode::kParseError);
@@ -662,7 +652,7 @@ TEST(MatrixMarketFile, ReadSymmetricRejectsMissingMirror) {
                              ":4: entry (2, 1) = -1 but (1, 2) is absent; a general file "
                              "read as symmetric must have symmetric values");
   // An explicit zero without a mirror is symmetric (missing counts as zero).
-  write_text(path, g("2 2 2\n1 1 4\n1 2 0\n"));
+  gab_test::write_file(path, g("2 2 2\n1 1 4\n1 2 0\n"));
   ASSERT_TRUE(read_symmetric_matrix_market(path, &lower).ok());
   EXPECT_EQ(lower.nnz(), 1);
 }
@@ -670,7 +660,7 @@ TEST(MatrixMarketFile, ReadSymmetricRejectsMissingMirror) {
 TEST(MatrixMarketFile, ReadSymmetricRejectsNonSquare) {
   ScratchDir dir;
   const std::string path = dir.file("rect.mtx");
-  write_text(path, g("% c\n3 2 1\n1 1 1\n"));
+  gab_test::write_file(path, g("% c\n3 2 1\n1 1 1\n"));
   CscMatrix lower;
   const Status s = read_symmetric_matrix_market(path, &lower);
   EXPECT_EQ(s.code(), StatusCode::kParseError);
@@ -680,7 +670,7 @@ TEST(MatrixMarketFile, ReadSymmetricRejectsNonSquare) {
 TEST(MatrixMarketFile, ReadSymmetricKeepsSymmetricFileAsLower) {
   ScratchDir dir;
   const std::string path = dir.file("sym.mtx");
-  write_text(path, std::string(kSymmetric) + "2 2 2\n1 2 -1\n2 2 3\n");
+  gab_test::write_file(path, std::string(kSymmetric) + "2 2 2\n1 2 -1\n2 2 3\n");
   CscMatrix lower;
   ASSERT_TRUE(read_symmetric_matrix_market(path, &lower).ok());
   EXPECT_EQ(lower.rowind, (std::vector<int32_t>{1, 1}));
@@ -737,7 +727,7 @@ TEST(MatrixMarketWrite, RenameFailureRemovesTemporary) {
   // rename fails, and the temporary must be gone afterwards.
   const std::string path = dir.file("target");
   fs::create_directories(path);
-  write_text(path + "/keep", "x");
+  gab_test::write_file(path + "/keep", "x");
   const CscMatrix a = random_matrix(5, 5, 0.5, false, 1);
   const Status s = write_matrix_market(path, a, false);
   EXPECT_EQ(s.code(), StatusCode::kIoError);
@@ -749,7 +739,7 @@ TEST(MatrixMarketWrite, RenameFailureRemovesTemporary) {
 TEST(MatrixMarketWrite, ReplacesExistingFileWhole) {
   ScratchDir dir;
   const std::string path = dir.file("m.mtx");
-  write_text(path, std::string(100000, 'x'));
+  gab_test::write_file(path, std::string(100000, 'x'));
   const CscMatrix a = random_matrix(4, 4, 0.5, false, 2);
   ASSERT_TRUE(write_matrix_market(path, a, false).ok());
   CscMatrix b;
@@ -761,11 +751,11 @@ TEST(MatrixMarketWrite, ReplacesExistingFileWhole) {
 TEST(MatrixMarketWrite, FailedWriteKeepsPreviousFile) {
   ScratchDir dir;
   const std::string path = dir.file("m.mtx");
-  write_text(path, "previous");
+  gab_test::write_file(path, "previous");
   CscMatrix a;
   ASSERT_TRUE(csc_from_triplets(2, 2, {{0, 1, 1.0}}, &a).ok());
   EXPECT_EQ(write_matrix_market(path, a, /*symmetric=*/true).code(), StatusCode::kInvalidArgument);
-  EXPECT_EQ(read_text(path), "previous");
+  EXPECT_EQ(gab_test::read_file(path), "previous");
   EXPECT_EQ(dir.listing(), std::vector<std::string>{"m.mtx"});
 }
 
