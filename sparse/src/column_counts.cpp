@@ -11,7 +11,7 @@
 // descendant.
 #include "gab/sparse/column_counts.h"
 
-#include "disjoint_set.h"
+#include "gab/sparse/disjoint_set.h"
 
 namespace gab {
 

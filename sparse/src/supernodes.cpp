@@ -1,7 +1,7 @@
 // Fundamental supernodes and relaxed amalgamation.
 #include "gab/sparse/supernodes.h"
 
-#include "disjoint_set.h"
+#include "gab/sparse/disjoint_set.h"
 
 namespace gab {
 

@@ -1,6 +1,7 @@
 // Disjoint-set forests (internal): parent links where a root points at
-// itself. Used by the column counts (the etree's "ancestor" forest) and by
-// relaxed amalgamation (groups of merged supernodes).
+// itself. Used by the column counts (the etree's "ancestor" forest), by
+// relaxed amalgamation (groups of merged supernodes) and by the mesh layer's
+// manifold cut (the corner fans around a vertex).
 #pragma once
 
 #include <cstdint>
