@@ -7,7 +7,7 @@
 #include <limits>
 #include <vector>
 
-#include "gab/codec/byte_io.h"
+#include "container/byte_io.h"
 
 namespace gab {
 namespace {

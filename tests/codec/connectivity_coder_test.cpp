@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "gab/codec/connectivity_coder.h"
+#include "connectivity/connectivity_coder.h"
 #include "gab/mesh/mesh_io.h"
 
 namespace gab {

@@ -5,7 +5,7 @@
 #include <random>
 #include <vector>
 
-#include "gab/codec/crc32.h"
+#include "container/crc32.h"
 
 namespace gab {
 namespace {

@@ -6,7 +6,9 @@
 #include <cmath>
 #include <string>
 
-#include "gab/codec/crc32.h"
+#include "container/crc32.h"
+#include "container/framing.h"
+#include "container/gab_header.h"
 #include "gab/codec/decoder.h"
 #include "gab/codec/encoder.h"
 #include "gab/codec/gab_format.h"

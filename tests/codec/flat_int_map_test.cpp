@@ -1,4 +1,4 @@
-#include "flat_int_map.h"
+#include "entropy/flat_int_map.h"
 
 #include <gtest/gtest.h>
 

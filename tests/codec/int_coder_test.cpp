@@ -10,7 +10,7 @@
 #include <random>
 #include <vector>
 
-#include "gab/codec/int_coder.h"
+#include "entropy/int_coder.h"
 
 namespace gab {
 namespace {

@@ -9,9 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "anchor_chunk.h"
-#include "anchor_levels.h"
-#include "gab/codec/byte_io.h"
+#include "anchors/anchor_chunk.h"
+#include "anchors/anchor_levels.h"
+#include "container/byte_io.h"
+#include "container/framing.h"
+#include "container/gab_header.h"
 #include "gab/codec/decoder.h"
 #include "gab/codec/encoder.h"
 #include "gab/codec/gab_format.h"
@@ -130,6 +132,7 @@ TEST(LevelLayout, TheSelectionOrderStaysWhereItCodesSmaller) {
 // Chunk 0 of a level file, read through the codec's internals.
 struct LevelHead {
   GabHeader header;
+  Quantizer quantizer;
   LevelPlan plan;
   std::vector<int32_t> spread, spread_grid, rest;
 };
@@ -138,6 +141,7 @@ LevelHead read_level_head(const std::vector<uint8_t>& file, int32_t n) {
   LevelHead h;
   ByteReader in(file.data(), file.size());
   EXPECT_TRUE(read_gab_header(&in, file.size(), &h.header).ok());
+  h.quantizer = Quantizer::from_grid(h.header.box_min, h.header.step, h.header.bits);
   const uint8_t* payload = nullptr;
   size_t size = 0;
   EXPECT_EQ(read_framed(&in, &payload, &size), FrameRead::kOk);  // connectivity
@@ -145,7 +149,7 @@ LevelHead read_level_head(const std::vector<uint8_t>& file, int32_t n) {
   size_t offset = 0;
   EXPECT_TRUE(parse_level_plan(payload, size, h.header.anchors, h.header.anchor_chunks(), &h.plan, &offset).ok());
   AnchorModels models;
-  AnchorChunkCoder coder(h.header.quantizer, &models);
+  AnchorChunkCoder coder(h.quantizer, &models);
   EXPECT_TRUE(
       coder.decode_level_head(payload + offset, size - offset, n, h.plan, &h.spread, &h.spread_grid, &h.rest).ok());
   return h;
@@ -190,7 +194,7 @@ TEST(LevelLayout, EveryLevelPrefixIsTheReconstructionFromItsAnchors) {
     for (int32_t v : anchors) {
       for (int a = 0; a < 3; ++a) {
         const double x = mesh.positions[3 * static_cast<size_t>(v) + a];
-        c.push_back(head.header.quantizer.dequantize(head.header.quantizer.quantize(x, a), a));
+        c.push_back(head.quantizer.dequantize(head.quantizer.quantize(x, a), a));
       }
     }
     return c;

@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "gab/codec/range_coder.h"
+#include "entropy/range_coder.h"
 
 namespace gab {
 namespace {

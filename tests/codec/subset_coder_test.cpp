@@ -10,7 +10,7 @@
 #include <set>
 #include <vector>
 
-#include "gab/codec/subset_coder.h"
+#include "entropy/subset_coder.h"
 
 namespace gab {
 namespace {

@@ -11,7 +11,7 @@
 // without a terminating 0 and the last remainder's alphabet shrinks to what
 // g_max allows, so a decoder cannot leave [0, u) whatever it reads, its
 // unary loops are bounded, and b = u costs nothing.
-#include "gab/codec/subset_coder.h"
+#include "entropy/subset_coder.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "anchor_levels.h"
+#include "anchors/anchor_levels.h"
 
 #include <algorithm>
 #include <cmath>

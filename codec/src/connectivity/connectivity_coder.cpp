@@ -22,15 +22,15 @@
 // third vertex of a triangle coded vertex by vertex, or the third vertex
 // after a cached edge). Measured on the shared meshes: see
 // tests/codec/connectivity_coder_test.cpp.
-#include "gab/codec/connectivity_coder.h"
+#include "connectivity/connectivity_coder.h"
 
 #include <algorithm>
 #include <array>
 #include <string>
 
-#include "flat_int_map.h"
-#include "gab/codec/int_coder.h"
-#include "gab/codec/range_coder.h"
+#include "entropy/flat_int_map.h"
+#include "entropy/int_coder.h"
+#include "entropy/range_coder.h"
 
 namespace gab {
 namespace {

@@ -4,11 +4,13 @@
 #include <chrono>
 #include <string>
 
-#include "anchor_chunk.h"
-#include "anchor_levels.h"
-#include "refinement_chunk.h"
-#include "gab/codec/connectivity_coder.h"
-#include "gab/codec/gab_format.h"
+#include "anchors/anchor_chunk.h"
+#include "anchors/anchor_levels.h"
+#include "anchors/quantizer.h"
+#include "anchors/refinement_chunk.h"
+#include "connectivity/connectivity_coder.h"
+#include "container/framing.h"
+#include "container/gab_header.h"
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/relaxed_reconstruction.h"
 
@@ -86,10 +88,11 @@ int64_t matrix_entries_bound(const EdgeGraph& g) {
 // the next chunk, every decoded anchor's grid indices in file order.
 struct ChunkDecoding {
   ChunkDecoding(const GabHeader& h, const EdgeGraph& g, const DecodeOptions& o, DecodeStats* s)
-      : header(h), graph(g), options(o), stats(s) {
+      : header(h), quantizer(Quantizer::from_grid(h.box_min, h.step, h.bits)), graph(g), options(o), stats(s) {
     wanted = o.max_anchors >= 0 ? std::min(o.max_anchors, h.anchors) : h.anchors;
   }
   const GabHeader& header;
+  const Quantizer quantizer;
   const EdgeGraph& graph;
   const DecodeOptions& options;
   DecodeStats* stats;
@@ -121,7 +124,7 @@ Status read_chunk_frame(ByteReader* in, int32_t chunk, ChunkDecoding* st, const 
 // `predict` (another chunk follows).
 Status add_chunk(int32_t chunk, const std::vector<int32_t>& anchors, const std::vector<int32_t>& grid, bool predict,
                  ChunkDecoding* st) {
-  const Quantizer& q = st->header.quantizer;
+  const Quantizer& q = st->quantizer;
   std::vector<double> coefficients(grid.size());
   for (size_t i = 0; i < anchors.size(); ++i) {
     for (int c = 0; c < 3; ++c) coefficients[3 * i + c] = q.dequantize(grid[3 * i + c], c);
@@ -250,8 +253,8 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
   }
 
   AnchorModels models;
-  AnchorChunkCoder coder(header.quantizer, &models);
   ChunkDecoding state(header, graph, options, stats);
+  AnchorChunkCoder coder(state.quantizer, &models);
   state.rec.set_threads(options.threads);
   state.rec.set_max_factor_entries(options.max_factor_entries);
   if (header.levels()) {
@@ -276,15 +279,15 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
       stats->truncated = true;
     } else {
       std::vector<int32_t> deltas;
-      Status s = decode_refinement(payload, payload_size, decoded, header.quantizer.max_index, &deltas);
+      Status s = decode_refinement(payload, payload_size, decoded, state.quantizer.max_index, &deltas);
       if (!s.ok()) return corrupt(name + ": " + s.message());
       std::vector<double> coefficients(deltas.size());
       for (size_t i = 0; i < deltas.size(); ++i) {
         const int64_t value = int64_t{file_grid[i]} + deltas[i];
-        if (value < 0 || value > header.quantizer.max_index) {
+        if (value < 0 || value > state.quantizer.max_index) {
           return corrupt(name + ": anchor #" + std::to_string(i / 3) + " is moved off the grid");
         }
-        coefficients[i] = header.quantizer.dequantize(static_cast<int32_t>(value), static_cast<int>(i % 3));
+        coefficients[i] = state.quantizer.dequantize(static_cast<int32_t>(value), static_cast<int>(i % 3));
       }
       GAB_RETURN_IF_ERROR(rec.set_coefficients(0, coefficients));
       stats->refined = true;
@@ -317,8 +320,8 @@ Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
   info->geometry_only = header.geometry_only();
   info->refined = header.refined();
   info->levels = header.levels();
-  for (int c = 0; c < 3; ++c) info->box_min[c] = header.quantizer.min[c];
-  info->step = header.quantizer.step;
+  for (int c = 0; c < 3; ++c) info->box_min[c] = header.box_min[c];
+  info->step = header.step;
   info->anchors = header.anchors;
   info->chunks = header.chunks;
   info->bytes = size;

@@ -1,5 +1,5 @@
 // Little-endian fixed-width fields and LEB128 varints for the .gab container.
-#include "gab/codec/byte_io.h"
+#include "container/byte_io.h"
 
 #include <cstring>
 

@@ -1,11 +1,10 @@
-#include "anchor_chunk.h"
+#include "anchors/anchor_chunk.h"
 
 #include <algorithm>
 #include <string>
 
-#include "axis_context.h"
-#include "gab/codec/byte_io.h"
-#include "gab/codec/subset_coder.h"
+#include "entropy/axis_context.h"
+#include "entropy/subset_coder.h"
 
 namespace gab {
 
@@ -193,12 +192,7 @@ Status AnchorChunkCoder::decode(const uint8_t* payload, size_t size, const std::
                                 std::vector<int32_t>* grid, int32_t* chunk_count) {
   ByteReader in(payload, size);
   uint64_t count = 0;
-  if (!in.varint(&count)) return Status::Error(StatusCode::kParseError, "anchor count is cut short");
-  const uint32_t free = free_count(anchored);
-  if (count < 1 || count > free) {
-    return Status::Error(StatusCode::kParseError, "anchor count " + std::to_string(count) + " out of range (" +
-                                                      std::to_string(free) + " free vertices)");
-  }
+  GAB_RETURN_IF_ERROR(read_chunk_anchor_count(&in, free_count(anchored), &count));
   *chunk_count = static_cast<int32_t>(count);
   RangeDecoder dec(payload + in.offset(), in.remaining());
   GAB_RETURN_IF_ERROR(decode_free_subset(&dec, static_cast<uint32_t>(count), anchored, anchors));
@@ -250,6 +244,15 @@ Status AnchorChunkCoder::decode_level(const uint8_t* payload, size_t size, const
                                       const double* prediction, const EdgeGraph& graph, std::vector<int32_t>* grid) {
   RangeDecoder dec(payload, size);
   return decode_positions(&dec, anchors, prediction, grid, &graph);
+}
+
+Status read_chunk_anchor_count(ByteReader* in, uint64_t limit, uint64_t* count) {
+  if (!in->varint(count)) return Status::Error(StatusCode::kParseError, "anchor count is cut short");
+  if (*count < 1 || *count > limit) {
+    return Status::Error(StatusCode::kParseError, "anchor count " + std::to_string(*count) + " out of range (" +
+                                                      std::to_string(limit) + " free vertices)");
+  }
+  return Status::Ok();
 }
 
 Status parse_level_plan(const uint8_t* payload, size_t size, int32_t anchors, int32_t anchor_chunks, LevelPlan* plan,

@@ -1,10 +1,10 @@
-#include "gab/codec/gab_format.h"
+#include "container/gab_header.h"
 
 #include <cmath>
 #include <cstring>
 #include <string>
 
-#include "gab/codec/crc32.h"
+#include "container/crc32.h"
 
 namespace gab {
 
@@ -31,8 +31,8 @@ void write_gab_header(const GabHeader& h, ByteWriter* out) {
   out->u32(static_cast<uint32_t>(h.num_vertices));
   out->u32(static_cast<uint32_t>(h.num_triangles));
   out->f64(h.weight);
-  for (int c = 0; c < 3; ++c) out->f64(h.quantizer.min[c]);
-  out->f64(h.quantizer.step);
+  for (int c = 0; c < 3; ++c) out->f64(h.box_min[c]);
+  out->f64(h.step);
   out->u32(static_cast<uint32_t>(h.anchors));
   out->u32(static_cast<uint32_t>(h.chunks));
   out->u32(crc32(out->data().data() + start, out->size() - start));
@@ -61,7 +61,7 @@ Status read_gab_header(ByteReader* in, size_t file_size, GabHeader* h) {
   if (crc != crc32(raw, covered)) return header_error("checksum mismatch (the header is corrupt)");
   // The header's checksum holds, so unknown flags come from a newer writer,
   // not from damage.
-  const unsigned known = kGabFlagGeometryOnly | kGabFlagRefined | kGabFlagLevels;
+  const unsigned known = known_gab_flags();
   if ((flags & ~known) != 0 || zero != 0) {
     return Status::Error(StatusCode::kUnsupported, "unsupported .gab flags " + hex_byte(flags) + " " + hex_byte(zero) +
                                                        " (this build knows " + hex_byte(known) + " 0x00)");
@@ -89,25 +89,11 @@ Status read_gab_header(ByteReader* in, size_t file_size, GabHeader* h) {
   h->num_vertices = static_cast<int32_t>(n);
   h->num_triangles = static_cast<int32_t>(faces);
   h->weight = weight;
-  h->quantizer = Quantizer::from_grid(min, step, bits);
+  for (int c = 0; c < 3; ++c) h->box_min[c] = min[c];
+  h->step = step;
   h->anchors = static_cast<int32_t>(anchors);
   h->chunks = static_cast<int32_t>(chunks);
   return Status::Ok();
-}
-
-void write_framed(const uint8_t* payload, size_t size, ByteWriter* out) {
-  out->u32(static_cast<uint32_t>(size));
-  out->u32(crc32(payload, size));
-  out->bytes(payload, size);
-}
-
-FrameRead read_framed(ByteReader* in, const uint8_t** payload, size_t* size) {
-  uint32_t length = 0, crc = 0;
-  if (!in->u32(&length) || !in->u32(&crc)) return FrameRead::kTruncated;
-  if (length > in->remaining()) return FrameRead::kTruncated;
-  in->bytes(length, payload);
-  *size = length;
-  return crc32(*payload, length) == crc ? FrameRead::kOk : FrameRead::kCorrupt;
 }
 
 }  // namespace gab

@@ -1,4 +1,4 @@
-// One chunk of anchors (DESIGN.md section 5), coded and decoded by the same
+// One chunk of anchors (gab/codec/gab_format.h), coded and decoded by the same
 // rules on both sides: the anchors as a sorted subset of the vertices not
 // anchored before the chunk (about log2 C(free, b) bits), then per anchor
 // and axis the quantized position as a residual from the rounded prediction
@@ -26,10 +26,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "anchor_levels.h"
-#include "gab/codec/int_coder.h"
-#include "gab/codec/quantizer.h"
-#include "gab/codec/range_coder.h"
+#include "anchors/anchor_levels.h"
+#include "anchors/quantizer.h"
+#include "container/byte_io.h"
+#include "entropy/int_coder.h"
+#include "entropy/range_coder.h"
 #include "gab/status.h"
 
 namespace gab {
@@ -124,6 +125,12 @@ class AnchorChunkCoder {
   const Quantizer& q_;
   AnchorModels* models_;
 };
+
+// The head of a selection-layout chunk: its anchor count, which must lie in
+// [1, limit] (decoding: the vertices still free; read_gab_info: the anchors
+// the header declares). The one rule both readers apply; kParseError
+// otherwise. O(1).
+Status read_chunk_anchor_count(ByteReader* in, uint64_t limit, uint64_t* count);
 
 // Reads the plan at the head of a level-layout chunk 0 and checks it against
 // the header: `anchors` in the file and `anchor_chunks` (chunk 0 and one per

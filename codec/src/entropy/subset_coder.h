@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "gab/codec/range_coder.h"
+#include "entropy/range_coder.h"
 
 namespace gab {
 

@@ -1,5 +1,5 @@
 // Adaptive Elias-gamma-like integer coding (see int_coder.h).
-#include "gab/codec/int_coder.h"
+#include "entropy/int_coder.h"
 
 #include <algorithm>
 #include <limits>

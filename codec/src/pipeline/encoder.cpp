@@ -6,11 +6,12 @@
 #include <functional>
 #include <string>
 
-#include "anchor_chunk.h"
-#include "anchor_levels.h"
-#include "refinement_chunk.h"
-#include "gab/codec/connectivity_coder.h"
-#include "gab/codec/gab_format.h"
+#include "anchors/anchor_chunk.h"
+#include "anchors/anchor_levels.h"
+#include "anchors/refinement_chunk.h"
+#include "connectivity/connectivity_coder.h"
+#include "container/framing.h"
+#include "container/gab_header.h"
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/graph_distance.h"
 #include "gab/mesh/metrics.h"
@@ -406,7 +407,8 @@ Status encode_on_grid(const Mesh& mesh, const EncodeOptions& options, const Box&
   header.num_vertices = n;
   header.num_triangles = mesh.num_triangles();
   header.weight = options.weight;
-  header.quantizer = quantizer;
+  for (int c = 0; c < 3; ++c) header.box_min[c] = quantizer.min[c];
+  header.step = quantizer.step;
   header.anchors = rec.num_anchors();
   header.chunks = static_cast<int32_t>(chunks.size());
   *file = assemble_file(header, mesh, chunks, stats);

@@ -1,4 +1,4 @@
-#include "gab/codec/quantizer.h"
+#include "anchors/quantizer.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 // Binary adaptive range coder: see range_coder.h for the state and the
 // stream-length argument behind overrun().
-#include "gab/codec/range_coder.h"
+#include "entropy/range_coder.h"
 
 #include <utility>
 

@@ -1,7 +1,7 @@
 // CRC-32, reflected form of the IEEE 802.3 polynomial (0x04C11DB7, bit-
 // reversed 0xEDB88320): register preset to all ones, bytes fed low bit
 // first, result complemented. One 256-entry table, one byte per step.
-#include "gab/codec/crc32.h"
+#include "container/crc32.h"
 
 #include <array>
 
