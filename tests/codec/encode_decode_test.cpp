@@ -7,6 +7,7 @@
 #include "gab/codec/decoder.h"
 #include "gab/codec/encoder.h"
 #include "gab/codec/gab_format.h"
+#include "gab/mesh/metrics.h"
 #include "gab_file_test_util.h"
 
 namespace gab {
@@ -261,26 +262,30 @@ TEST(EncodeDecode, OptionErrors) {
   EXPECT_FALSE(encode_mesh(empty, bits, &file, &es).ok());
 }
 
-TEST(EncodeDecode, DefaultsFollowTheMeasuredRules) {
-  // q: the best measured at 3e-3 / 1e-3 / 3e-4 on camel-head and horse.
-  EXPECT_EQ(default_bits(0.75, 3e-3, 0), 8);
-  EXPECT_EQ(default_bits(0.75, 1e-3, 0), 9);
-  EXPECT_EQ(default_bits(0.75, 3e-4, 0), 11);
-  EXPECT_EQ(default_bits(0.75, 0, 0), 12);
-  EXPECT_GE(default_bits(0.75, 0, 1e-3), default_bits(0.75, 1e-3, 0));  // L-inf wants the finer grid
-  EXPECT_EQ(default_bits(0.75, 1e-12, 0), kGabMaxBits);
-  // Batches, chunks and the spread set grow only for costly systems.
-  EXPECT_DOUBLE_EQ(default_batch_fraction(1e9), 0.05);
-  EXPECT_NEAR(default_batch_fraction(4e9), 0.087, 0.001);  // 0.05 * 2^0.8
-  EXPECT_DOUBLE_EQ(default_batch_fraction(2.16e10), 0.12);  // igea: at the cap
-  EXPECT_DOUBLE_EQ(default_chunk_growth(1e9), 4.0);
-  EXPECT_NEAR(default_chunk_growth(2.16e10), 16.7, 0.1);
-  EXPECT_DOUBLE_EQ(default_level_growth(1e9), 2.0);
-  EXPECT_NEAR(default_level_growth(2.16e10), 8.35, 0.05);
-  EXPECT_EQ(default_initial_anchors(11381), 11);
-  EXPECT_EQ(default_initial_anchors(134345), 2606);
-  EXPECT_EQ(default_initial_anchors(1000000), 20000);  // the n / 50 cap
-  EXPECT_EQ(default_initial_anchors(5), 1);
+TEST(EncodeDecode, TheEncodersGridFollowsTheTarget) {
+  // bits = 0: q from the error target, finer for a tighter one, the grid's
+  // own RMS (step / 2 over the diagonal) inside the target; 12 for an anchor
+  // count alone.
+  const Mesh mesh = bumpy_torus(40, 20);
+  int previous_bits = 0;
+  for (double target : {3e-3, 3e-4}) {
+    EncodeOptions options;
+    options.target_rms_rel = target;
+    EncodeStats es;
+    const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
+    EXPECT_TRUE(es.target_met) << target;
+    EXPECT_GT(es.bits, previous_bits) << target;
+    previous_bits = es.bits;
+    GabFileInfo info;
+    ASSERT_TRUE(read_gab_info(file.data(), file.size(), &info).ok());
+    EXPECT_EQ(info.bits, es.bits);
+    EXPECT_LE(info.step / 2 / bounding_box_diagonal(mesh), target) << target;
+  }
+  EncodeOptions count;
+  count.max_anchors = 50;
+  EncodeStats es;
+  encode_or_die(mesh, count, &es);
+  EXPECT_EQ(es.bits, 12);
 }
 
 TEST(EncodeDecode, FinerGridsCostMoreBitsAndErrLess) {

@@ -1,7 +1,8 @@
 // Uniform scalar quantization of vertex coordinates over the bounding box
-// (DESIGN.md section 5): q bits per coordinate, one step for all three axes
-// (the longest side over 2^q - 1), so the quantization error is isotropic
-// and the 3D error a user asks for maps to one grid.
+// (the grid whose origin and step a .gab header stores: gab_format.h): q bits
+// per coordinate, one step for all three axes (the longest side over
+// 2^q - 1), so the quantization error is isotropic and the 3D error a user
+// asks for maps to one grid.
 //
 // Also the codec's prediction rounding, which makes residual coding safe
 // without bit-identical floating point: see round_prediction.

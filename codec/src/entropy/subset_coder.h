@@ -1,6 +1,6 @@
 // A sorted set of b distinct positions out of a universe of u, coded in
-// about log2 C(u, b) bits (DESIGN.md section 5: "a sorted, gap-coded set")
-// instead of b log2 u: each gap is Golomb-coded with the parameter the
+// about log2 C(u, b) bits (a sorted, gap-coded set: the anchors of a .gab
+// chunk) instead of b log2 u: each gap is Golomb-coded with the parameter the
 // density b/u implies, its quotient bits adaptive.
 #pragma once
 

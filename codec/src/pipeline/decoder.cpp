@@ -8,7 +8,7 @@
 #include "anchors/anchor_levels.h"
 #include "anchors/quantizer.h"
 #include "anchors/refinement_chunk.h"
-#include "connectivity/connectivity_coder.h"
+#include "connectivity/connectivity_section.h"
 #include "container/framing.h"
 #include "container/gab_header.h"
 #include "gab/mesh/edge_graph.h"
@@ -23,52 +23,6 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 }
 
 Status corrupt(const std::string& what) { return Status::Error(StatusCode::kParseError, what); }
-
-// The connectivity section, checked but not decoded: the hash of a
-// geometry-only file, or the framed block.
-Status read_connectivity_section(ByteReader* in, const GabHeader& header, uint64_t* hash, const uint8_t** block,
-                                 size_t* size) {
-  if (header.geometry_only()) {
-    if (!in->u64(hash)) return corrupt("file ends inside the connectivity hash");
-    return Status::Ok();
-  }
-  switch (read_framed(in, block, size)) {
-    case FrameRead::kTruncated: return corrupt("file ends inside the connectivity block");
-    case FrameRead::kCorrupt: return corrupt("connectivity block is corrupt (checksum mismatch)");
-    case FrameRead::kOk: break;
-  }
-  return Status::Ok();
-}
-
-// The connectivity: decoded from the block, or taken from the mesh the
-// caller supplies for a geometry-only file (after checking its hash).
-Status read_connectivity(ByteReader* in, const GabHeader& header, const DecodeOptions& options,
-                         std::vector<int32_t>* triangles) {
-  uint64_t hash = 0;
-  const uint8_t* block = nullptr;
-  size_t size = 0;
-  GAB_RETURN_IF_ERROR(read_connectivity_section(in, header, &hash, &block, &size));
-  if (header.geometry_only()) {
-    if (!options.connectivity) {
-      return Status::Error(StatusCode::kInvalidArgument,
-                           "this file holds geometry only: give the mesh it was made from (--connectivity MESH)");
-    }
-    const Mesh& m = *options.connectivity;
-    if (m.num_vertices() != header.num_vertices || m.num_triangles() != header.num_triangles ||
-        connectivity_hash(m.num_vertices(), m.triangles) != hash) {
-      return Status::Error(StatusCode::kInvalidArgument,
-                           "the connectivity mesh is not the one this file was made from (" +
-                               std::to_string(m.num_vertices()) + " vertices, " + std::to_string(m.num_triangles()) +
-                               " triangles; the file expects " + std::to_string(header.num_vertices) + " and " +
-                               std::to_string(header.num_triangles) + ", and a matching hash)");
-    }
-    *triangles = m.triangles;
-    return Status::Ok();
-  }
-  Status s = decode_connectivity(block, size, header.num_vertices, header.num_triangles, triangles);
-  if (!s.ok()) return corrupt("connectivity block: " + s.message());
-  return Status::Ok();
-}
 
 // Entries of the lower triangle of L^T L: at most sum over vertices of
 // (2-ring size), bounded by sum (1 + d + sum of neighbour degrees).
@@ -225,6 +179,28 @@ Status decode_level_chunks(ByteReader* in, AnchorChunkCoder* coder, ChunkDecodin
   return Status::Ok();
 }
 
+// The refinement chunk (the whole anchor set decoded): moves every anchor's
+// coefficient; a file cut inside it leaves the unrefined shape (truncated).
+Status apply_refinement(ByteReader* in, ChunkDecoding* st) {
+  const int32_t chunk = st->header.anchor_chunks();
+  const std::string name = "refinement (chunk " + std::to_string(chunk) + ")";
+  const uint8_t* payload = nullptr;
+  size_t payload_size = 0;
+  const FrameRead frame = read_framed(in, &payload, &payload_size);
+  if (frame == FrameRead::kCorrupt) return corrupt(name + " is corrupt (checksum mismatch)");
+  if (frame == FrameRead::kTruncated) {
+    st->stats->truncated = true;
+    return Status::Ok();
+  }
+  std::vector<double> coefficients;
+  const Status s = decode_refinement_chunk(payload, payload_size, st->file_grid, st->quantizer, &coefficients);
+  if (!s.ok()) return corrupt(name + ": " + s.message());
+  GAB_RETURN_IF_ERROR(st->rec.set_coefficients(0, coefficients));
+  st->stats->refined = true;
+  st->stats->chunks = chunk + 1;
+  return Status::Ok();
+}
+
 }  // namespace
 
 Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& options, Mesh* mesh, DecodeStats* stats) {
@@ -243,7 +219,9 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
   stats->geometry_only = header.geometry_only();
 
   Mesh out;
-  GAB_RETURN_IF_ERROR(read_connectivity(&in, header, options, &out.triangles));
+  ConnectivitySection connectivity;
+  GAB_RETURN_IF_ERROR(read_connectivity_section(&in, header, &connectivity));
+  GAB_RETURN_IF_ERROR(decode_connectivity_section(connectivity, header, options.connectivity, &out.triangles));
   out.positions.assign(static_cast<size_t>(n) * 3, 0.0);
   const EdgeGraph graph = build_edge_graph(out);
   if (matrix_entries_bound(graph) > options.max_matrix_entries) {
@@ -262,115 +240,19 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
   } else {
     GAB_RETURN_IF_ERROR(decode_selection_chunks(&in, &coder, &state));
   }
-  RelaxedReconstruction& rec = state.rec;
-  std::vector<double>& shape = state.shape;
-  const std::vector<int32_t>& file_grid = state.file_grid;
-  const int32_t decoded = state.decoded;
-  const int32_t anchor_chunks = header.anchor_chunks();
-  // The refinement belongs to the whole anchor set: skipped for a level of
-  // detail; a file cut inside it still gives the unrefined shape.
-  if (header.refined() && !stats->truncated && decoded == header.anchors) {
-    const uint8_t* payload = nullptr;
-    size_t payload_size = 0;
-    const FrameRead frame = read_framed(&in, &payload, &payload_size);
-    const std::string name = "refinement (chunk " + std::to_string(anchor_chunks) + ")";
-    if (frame == FrameRead::kCorrupt) return corrupt(name + " is corrupt (checksum mismatch)");
-    if (frame == FrameRead::kTruncated) {
-      stats->truncated = true;
-    } else {
-      std::vector<int32_t> deltas;
-      Status s = decode_refinement(payload, payload_size, decoded, state.quantizer.max_index, &deltas);
-      if (!s.ok()) return corrupt(name + ": " + s.message());
-      std::vector<double> coefficients(deltas.size());
-      for (size_t i = 0; i < deltas.size(); ++i) {
-        const int64_t value = int64_t{file_grid[i]} + deltas[i];
-        if (value < 0 || value > state.quantizer.max_index) {
-          return corrupt(name + ": anchor #" + std::to_string(i / 3) + " is moved off the grid");
-        }
-        coefficients[i] = state.quantizer.dequantize(static_cast<int32_t>(value), static_cast<int>(i % 3));
-      }
-      GAB_RETURN_IF_ERROR(rec.set_coefficients(0, coefficients));
-      stats->refined = true;
-      stats->chunks = anchor_chunks + 1;
-    }
+  // The refinement belongs to the whole anchor set: skipped for a level of detail.
+  if (header.refined() && !stats->truncated && state.decoded == header.anchors) {
+    GAB_RETURN_IF_ERROR(apply_refinement(&in, &state));
   }
   const auto t_solve = std::chrono::steady_clock::now();
-  GAB_RETURN_IF_ERROR(rec.reconstruct(&shape));
+  GAB_RETURN_IF_ERROR(state.rec.reconstruct(&out.positions));
   stats->solve_s += seconds_since(t_solve);
-  if (!stats->truncated && decoded == header.anchors && in.remaining() != 0) {
+  if (!stats->truncated && state.decoded == header.anchors && in.remaining() != 0) {
     return corrupt("trailing bytes after the last chunk");
   }
-  out.positions = shape;
   *mesh = std::move(out);
-  stats->anchors = decoded;
+  stats->anchors = state.decoded;
   stats->decode_s = seconds_since(start);
-  return Status::Ok();
-}
-
-Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
-  *info = GabFileInfo();
-  ByteReader in(data, size);
-  GabHeader header;
-  GAB_RETURN_IF_ERROR(read_gab_header(&in, size, &header));
-  info->version = header.version;
-  info->num_vertices = header.num_vertices;
-  info->num_triangles = header.num_triangles;
-  info->bits = header.bits;
-  info->weight = header.weight;
-  info->geometry_only = header.geometry_only();
-  info->refined = header.refined();
-  info->levels = header.levels();
-  for (int c = 0; c < 3; ++c) info->box_min[c] = header.box_min[c];
-  info->step = header.step;
-  info->anchors = header.anchors;
-  info->chunks = header.chunks;
-  info->bytes = size;
-  const size_t before = in.offset();
-  uint64_t hash = 0;
-  const uint8_t* block = nullptr;
-  size_t block_size = 0;
-  GAB_RETURN_IF_ERROR(read_connectivity_section(&in, header, &hash, &block, &block_size));
-  info->connectivity_bytes = in.offset() - before;
-  std::vector<int32_t> level_anchors;  // level layout: anchors of chunks 1.. (from chunk 0's plan)
-  for (int32_t chunk = 0; chunk < header.chunks; ++chunk) {
-    const size_t at = in.offset();
-    const uint8_t* payload = nullptr;
-    size_t payload_size = 0;
-    const FrameRead frame = read_framed(&in, &payload, &payload_size);
-    if (frame == FrameRead::kTruncated) {
-      info->truncated = true;
-      break;
-    }
-    if (frame == FrameRead::kCorrupt) return corrupt("chunk " + std::to_string(chunk) + " is corrupt (checksum mismatch)");
-    const bool refinement = chunk == header.anchor_chunks();
-    uint64_t count = 0;
-    if (header.levels() && chunk == 0) {
-      LevelPlan plan;
-      size_t offset = 0;
-      const Status s = parse_level_plan(payload, payload_size, header.anchors, header.anchor_chunks(), &plan, &offset);
-      if (!s.ok()) return corrupt("chunk 0: " + s.message());
-      count = static_cast<uint64_t>(plan.spread);
-      level_anchors = plan.level_sizes();
-    } else if (header.levels() && !refinement) {
-      count = static_cast<uint64_t>(level_anchors[chunk - 1]);  // the plan made anchor_chunks - 1 levels
-    } else {
-      ByteReader chunk_in(payload, payload_size);
-      if (!chunk_in.varint(&count) || (refinement ? count != static_cast<uint64_t>(header.anchors)
-                                                  : count < 1 || count > static_cast<uint64_t>(header.anchors))) {
-        return corrupt("chunk " + std::to_string(chunk) + ": anchor count out of range");
-      }
-    }
-    if (refinement) {
-      info->refinement_bytes = in.offset() - at;
-      info->chunks_present = chunk + 1;
-      continue;
-    }
-    info->chunk_bytes.push_back(in.offset() - at);
-    info->chunk_anchors.push_back(static_cast<int32_t>(count));
-    info->chunks_present = chunk + 1;
-  }
-  if (!info->truncated && in.remaining() != 0) return corrupt("trailing bytes after the last chunk");
-  info->geometry_bytes = size - info->connectivity_bytes;
   return Status::Ok();
 }
 

@@ -1,22 +1,26 @@
+// The encoder: a short driver over the codec's layers, in the order the
+// decoder reads them back (decoder.cpp):
+//   select anchors (anchor_selection.h: greedy loop and refinement search, no bytes)
+//   -> code the anchor chunks in each layout (anchors/anchor_chunk.h, anchor_levels.h), keep one
+//   -> the refinement chunk (anchors/refinement_chunk.h)
+//   -> header (container/gab_header.h), connectivity section (connectivity/), chunks, framed.
 #include "gab/codec/encoder.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <functional>
 #include <string>
 
 #include "anchors/anchor_chunk.h"
 #include "anchors/anchor_levels.h"
 #include "anchors/refinement_chunk.h"
-#include "connectivity/connectivity_coder.h"
+#include "connectivity/connectivity_section.h"
 #include "container/framing.h"
 #include "container/gab_header.h"
 #include "gab/mesh/edge_graph.h"
-#include "gab/mesh/graph_distance.h"
-#include "gab/mesh/metrics.h"
-#include "gab/mesh/optimal_coefficients.h"
 #include "gab/mesh/relaxed_reconstruction.h"
+#include "pipeline/anchor_selection.h"
+#include "pipeline/encoder_tuning.h"
 
 namespace gab {
 
@@ -41,94 +45,6 @@ Status check_options(const EncodeOptions& o) {
   if (!std::isfinite(o.chunk_growth)) return bad("chunk growth must be finite");
   if (o.refine_iterations < 1) return bad("refinement iterations must be positive");
   return Status::Ok();
-}
-
-// Anchors to add in the next greedy step: the batch fraction of those so
-// far, but near an RMS target (0: none) only as many as the error curve's
-// last two points (rms ~ k^-alpha) say are still needed.
-int32_t next_batch(double target_rms_rel, double fraction, const std::vector<GreedyStep>& curve, int32_t cap) {
-  const int32_t k = curve.back().anchors;
-  int64_t wanted = fraction > 0 ? static_cast<int64_t>(std::ceil(fraction * k)) : 1;
-  if (target_rms_rel > 0 && curve.size() >= 2) {
-    const GreedyStep& a = curve[curve.size() - 2];
-    const GreedyStep& b = curve.back();
-    if (b.anchors > a.anchors && a.rms_rel > b.rms_rel && b.rms_rel > target_rms_rel) {
-      const double alpha = std::log(a.rms_rel / b.rms_rel) / std::log(static_cast<double>(b.anchors) / a.anchors);
-      const double needed = b.anchors * std::pow(b.rms_rel / target_rms_rel, 1.0 / alpha) - b.anchors;
-      if (std::isfinite(needed)) wanted = std::min<int64_t>(wanted, static_cast<int64_t>(std::ceil(needed)));
-    }
-  }
-  return static_cast<int32_t>(std::min<int64_t>(std::max<int64_t>(wanted, 1), cap - k));
-}
-
-// The refined coefficients of the current anchor set, as grid indices (3 per
-// anchor, in rec->anchors() order), and the errors of their reconstruction.
-struct Refinement {
-  std::vector<int32_t> grid;
-  double rms_rel = 0, linf_rel = 0;
-};
-
-// Least-squares coefficients from the quantized positions `rec` holds,
-// rounded to the grid (the decoder gets exactly these), and their shape's
-// errors; `rec` keeps its coefficients. Cost: 2 * iterations + 1 solves.
-Status refine_coefficients(RelaxedReconstruction* rec, const Mesh& mesh, const Quantizer& quantizer, int iterations,
-                           double scale, Refinement* out) {
-  const std::vector<double> positions = rec->coefficients();
-  std::vector<double> c = positions;
-  OptimalCoefficientsReport report;
-  GAB_RETURN_IF_ERROR(optimal_coefficients(rec, mesh, iterations, 0.0, &c, &report));
-  out->grid.resize(c.size());
-  for (size_t i = 0; i < c.size(); ++i) {
-    const int axis = static_cast<int>(i % 3);
-    out->grid[i] = quantizer.quantize(c[i], axis);
-    c[i] = quantizer.dequantize(out->grid[i], axis);
-  }
-  GAB_RETURN_IF_ERROR(rec->set_coefficients(0, c));
-  std::vector<double> shape, error2;
-  const Status solved = rec->reconstruct(&shape);
-  GAB_RETURN_IF_ERROR(rec->set_coefficients(0, positions));
-  GAB_RETURN_IF_ERROR(solved);
-  VertexDistance d;
-  squared_vertex_errors(mesh, shape, &error2, &d);
-  out->rms_rel = d.rms * scale;
-  out->linf_rel = d.linf * scale;
-  return Status::Ok();
-}
-
-// Refinement with an RMS target: the greedy loop first aims the unrefined
-// shape this much above the target (refinement bought 11-25% at q = 9 on
-// the shared meshes), then at what the last try measured.
-constexpr double kExpectedRefinementGain = 1.25;
-
-// The dense regime (see encode_mesh): past this fraction of the vertices as
-// anchors the encoder also tries the grid whose error alone is
-// kDenseGridShare of the RMS target, and keeps the smaller file. bunny-small
-// at 1e-3 (82% anchors at q = 9, whose grid errs 0.61 of the target), level
-// layout without its local correction: grid shares 0.8 / 0.9 / 0.95 / 0.98
-// gave 10.87 / 10.63 / 10.53 / 10.51 bits per vertex against 11.72, with
-// 86-94% anchors. The other shared meshes end at 2-35% anchors, where such a
-// grid costs (0.9 of the target: +1 to +4% on horse, max-planck, bunny,
-// feline and nefertiti; their best shares, 0.7-0.9, gain under 2%).
-constexpr double kDenseAnchorFraction = 0.5;
-constexpr double kDenseGridShare = 0.95;
-
-// Header, connectivity block (or its hash), chunks; sets the byte counts.
-std::vector<uint8_t> assemble_file(const GabHeader& header, const Mesh& mesh,
-                                   const std::vector<std::vector<uint8_t>>& chunks, EncodeStats* stats) {
-  ByteWriter out;
-  write_gab_header(header, &out);
-  const size_t before_connectivity = out.size();
-  if (header.geometry_only()) {
-    out.u64(connectivity_hash(mesh.num_vertices(), mesh.triangles));
-  } else {
-    const std::vector<uint8_t> block = encode_connectivity(mesh.num_vertices(), mesh.triangles);
-    write_framed(block.data(), block.size(), &out);
-  }
-  stats->connectivity_bytes = out.size() - before_connectivity;
-  for (const std::vector<uint8_t>& chunk : chunks) write_framed(chunk.data(), chunk.size(), &out);
-  stats->bytes = out.size();
-  stats->geometry_bytes = stats->bytes - stats->connectivity_bytes;
-  return out.take();
 }
 
 // The mesh's box: its low and high corners, longest side and diagonal.
@@ -162,6 +78,11 @@ struct ChunkLayout {
   std::vector<int32_t> file_order;
   std::vector<int32_t> chunk_anchors;
 
+  void add(std::vector<uint8_t> chunk, const std::vector<int32_t>& anchors) {
+    chunks.push_back(std::move(chunk));
+    file_order.insert(file_order.end(), anchors.begin(), anchors.end());
+    chunk_anchors.push_back(static_cast<int32_t>(anchors.size()));
+  }
   size_t bytes() const {
     size_t total = 0;
     for (const std::vector<uint8_t>& c : chunks) total += c.size() + kGabFrameBytes;
@@ -169,33 +90,49 @@ struct ChunkLayout {
   }
 };
 
-// The level layout (anchor_levels.h) of the anchors `rec` holds, the first
-// `spread_count` of them the spread set; `spread_shape` is the
-// reconstruction from the spread set alone (level 1's prediction). Cost:
-// the decoder's, less one factorization and one solve: levels - 1 solves
-// and updates (or refactorizations).
-Status encode_levels(const RelaxedReconstruction& rec, const EdgeGraph& graph, int32_t spread_count, double growth,
-                     int32_t threads, const std::vector<double>& spread_shape, const Quantizer& quantizer,
-                     const std::vector<int32_t>& grid,
-                     const std::function<std::vector<double>(const std::vector<int32_t>&)>& coefficients_of,
-                     ChunkLayout* out) {
-  const std::vector<int32_t>& all = rec.anchors();
-  std::vector<int32_t> spread(all.begin(), all.begin() + spread_count);
-  std::vector<int32_t> rest(all.begin() + spread_count, all.end());
+// The selection-order layout: chunk k the schedule's k-th cut, its anchors
+// a subset of the vertices the chunks before left free, predicted by the
+// reconstruction from those chunks (chunk 0: by the previous anchor). O(n)
+// per chunk plus the positions.
+ChunkLayout encode_selection_layout(const AnchorSchedule& schedule, const GridPositions& grid) {
+  ChunkLayout out;
+  AnchorModels models;
+  AnchorChunkCoder coder(grid.quantizer, &models);
+  std::vector<char> coded(grid.index.size() / 3, 0);  // anchored by the chunks written so far
+  int32_t begin = 0;
+  for (size_t k = 0; k < schedule.cuts.size(); ++k) {
+    std::vector<int32_t> anchors(schedule.order.begin() + begin, schedule.order.begin() + schedule.cuts[k]);
+    std::sort(anchors.begin(), anchors.end());
+    const double* prediction = k == 0 ? nullptr : schedule.shapes[k - 1].data();
+    out.add(coder.encode(anchors, coded, grid.index, prediction), anchors);
+    for (int32_t v : anchors) coded[v] = 1;
+    begin = schedule.cuts[k];
+  }
+  return out;
+}
+
+// The level layout (anchor_levels.h) of the schedule's anchors: chunk 0 the
+// spread set and the rest's subset, then one level's positions per chunk,
+// each predicted by the reconstruction from the levels before it (level 1:
+// from the spread set, the schedule's first shape). Cost: the decoder's,
+// less one factorization and one solve: levels - 1 solves and updates (or
+// refactorizations).
+Status encode_level_layout(const AnchorSchedule& schedule, const EdgeGraph& graph, double weight, double growth,
+                           int32_t threads, const GridPositions& grid, ChunkLayout* out) {
+  std::vector<int32_t> spread(schedule.order.begin(), schedule.order.begin() + schedule.spread);
+  std::vector<int32_t> rest(schedule.order.begin() + schedule.spread, schedule.order.end());
   std::sort(spread.begin(), spread.end());
   std::sort(rest.begin(), rest.end());
   LevelPlan plan;
-  plan.spread = spread_count;
+  plan.spread = schedule.spread;
   plan.rest = static_cast<int32_t>(rest.size());
   plan.growth16 = level_growth16(growth);
   const std::vector<int32_t> sizes = plan.level_sizes();
   std::vector<int32_t> order;
   GAB_RETURN_IF_ERROR(level_order(graph, spread, rest, plan.rest - (sizes.empty() ? 0 : sizes.back()), &order));
   AnchorModels models;
-  AnchorChunkCoder coder(quantizer, &models);
-  out->chunks.push_back(coder.encode_level_head(plan, spread, rest, grid));
-  out->file_order = spread;
-  out->chunk_anchors.push_back(spread_count);
+  AnchorChunkCoder coder(grid.quantizer, &models);
+  out->add(coder.encode_level_head(plan, spread, rest, grid.index), spread);
 
   LevelMembers members(order, rest, graph.num_vertices());
   RelaxedReconstruction levels;  // the decoder's reconstructions from level 2 on
@@ -206,216 +143,92 @@ Status encode_levels(const RelaxedReconstruction& rec, const EdgeGraph& graph, i
     std::vector<int32_t> level = members.next(sizes, k);
     if (k == 1) {
       before.insert(before.end(), previous.begin(), previous.end());
-      GAB_RETURN_IF_ERROR(levels.init(graph, rec.weight(), before, coefficients_of(before)));
+      GAB_RETURN_IF_ERROR(levels.init(graph, weight, before, grid.coefficients_of(before)));
     } else if (k > 1) {
-      GAB_RETURN_IF_ERROR(levels.add_anchors_cheapest(previous, coefficients_of(previous)));
+      GAB_RETURN_IF_ERROR(levels.add_anchors_cheapest(previous, grid.coefficients_of(previous)));
     }
     if (k > 0) GAB_RETURN_IF_ERROR(levels.reconstruct(&shape));
-    out->chunks.push_back(coder.encode_level(level, grid, k == 0 ? spread_shape.data() : shape.data(), graph));
-    out->file_order.insert(out->file_order.end(), level.begin(), level.end());
-    out->chunk_anchors.push_back(sizes[k]);
+    const double* prediction = k == 0 ? schedule.shapes[0].data() : shape.data();
+    out->add(coder.encode_level(level, grid.index, prediction, graph), level);
     previous = std::move(level);
   }
   return Status::Ok();
 }
 
-}  // namespace
-
-int32_t default_initial_anchors(int32_t n) {
-  const double scale = std::max(1.0, static_cast<double>(n) / 50000.0);
-  return static_cast<int32_t>(std::max(1.0, std::min(n / 1000.0 * scale * scale * scale, n / 50.0)));
+// Header, connectivity section, chunks; sets the byte counts.
+std::vector<uint8_t> assemble_file(const GabHeader& header, const Mesh& mesh,
+                                   const std::vector<std::vector<uint8_t>>& chunks, EncodeStats* stats) {
+  ByteWriter out;
+  write_gab_header(header, &out);
+  const size_t before_connectivity = out.size();
+  write_connectivity_section(mesh, header.geometry_only(), &out);
+  stats->connectivity_bytes = out.size() - before_connectivity;
+  for (const std::vector<uint8_t>& chunk : chunks) write_framed(chunk.data(), chunk.size(), &out);
+  stats->bytes = out.size();
+  stats->geometry_bytes = stats->bytes - stats->connectivity_bytes;
+  return out.take();
 }
 
-double default_batch_fraction(double flops) {
-  return std::min(0.12, 0.05 * std::pow(std::max(1.0, flops / 2e9), 0.8));
-}
-
-double default_chunk_growth(double flops) { return 4.0 * std::pow(std::max(1.0, flops / 2e9), 0.6); }
-
-double default_level_growth(double flops) { return 2.0 * std::pow(std::max(1.0, flops / 2e9), 0.6); }
-
-int default_bits(double extent_over_diagonal, double target_rms_rel, double target_linf_rel) {
-  if (!(target_rms_rel > 0) && !(target_linf_rel > 0)) return 12;
-  for (int q = kGabMinBits; q < kGabMaxBits; ++q) {
-    const double step = extent_over_diagonal / static_cast<double>((int64_t{1} << q) - 1);
-    const bool rms_ok = !(target_rms_rel > 0) || step / 2 <= 0.8 * target_rms_rel;
-    const bool linf_ok = !(target_linf_rel > 0) || step * std::sqrt(3.0) / 2 <= 0.5 * target_linf_rel;
-    if (rms_ok && linf_ok) return q;
-  }
-  return kGabMaxBits;
-}
-
-namespace {
-
-// Everything after the grid: greedy anchors, chunks, file. Sets every stat
-// but encode_s.
+// Everything after the grid: anchors, chunks, file. Sets every stat but encode_s.
 Status encode_on_grid(const Mesh& mesh, const EncodeOptions& options, const Box& box, const Quantizer& quantizer,
                       int bits, std::vector<uint8_t>* file, EncodeStats* stats) {
-  const int32_t n = mesh.num_vertices();
   *stats = EncodeStats();
-  stats->num_vertices = n;
+  stats->num_vertices = mesh.num_vertices();
   stats->num_triangles = mesh.num_triangles();
   stats->bits = bits;
-  // Every vertex's quantized position: what an anchor sends.
-  std::vector<int32_t> grid(static_cast<size_t>(n) * 3);
-  for (int32_t v = 0; v < n; ++v) {
-    for (int c = 0; c < 3; ++c) grid[3 * static_cast<size_t>(v) + c] = quantizer.quantize(mesh.positions[3 * static_cast<size_t>(v) + c], c);
-  }
-  auto coefficients_of = [&](const std::vector<int32_t>& anchors) {
-    std::vector<double> coefficients(anchors.size() * 3);
-    for (size_t i = 0; i < anchors.size(); ++i) {
-      for (int c = 0; c < 3; ++c) {
-        coefficients[3 * i + c] = quantizer.dequantize(grid[3 * static_cast<size_t>(anchors[i]) + c], c);
-      }
-    }
-    return coefficients;
-  };
-
-  EdgeGraph graph = build_edge_graph(mesh);
-  int32_t components = 0;
-  connected_components(graph, &components);
-  const int32_t cap = options.max_anchors > 0 ? std::min(options.max_anchors, n) : n;
-  // By default at most half the anchors are spread ones (measured best on
-  // igea, horse and feline at 1-10% of n): the greedy steps choose the rest.
-  int32_t initial = options.initial_anchors > 0 ? options.initial_anchors
-                                                : std::min(default_initial_anchors(n), std::max(1, cap / 2));
-  initial = std::min(std::max(initial, components), std::max(cap, components));
-  std::vector<int32_t> chosen;
-  GAB_RETURN_IF_ERROR(farthest_point_sampling(graph, initial, {}, &chosen));
-
+  const GridPositions grid(mesh, quantizer);
+  const EdgeGraph graph = build_edge_graph(mesh);
   RelaxedReconstruction rec;
-  rec.set_threads(options.threads);
-  GAB_RETURN_IF_ERROR(rec.init(graph, options.weight, chosen, coefficients_of(chosen)));
-  const double fraction = options.batch_fraction >= 0 ? options.batch_fraction
-                                                      : default_batch_fraction(rec.cholesky().symbolic().flops);
-  const double flops = rec.cholesky().symbolic().flops;
-  const double growth = options.chunk_growth > 0 ? options.chunk_growth : default_chunk_growth(flops);
-  const double level_growth = options.chunk_growth > 0 ? options.chunk_growth : default_level_growth(flops);
+  Selection selection;
+  GAB_RETURN_IF_ERROR(select_anchors(mesh, graph, options, grid, box.diagonal > 0 ? 1.0 / box.diagonal : 1.0, &rec,
+                                     &selection));
+  stats->curve = std::move(selection.curve);
 
-  // The first layout is coded as the greedy loop goes (each chunk is
-  // predicted by the shape when it opened); the level layout after it.
-  AnchorModels models;
-  AnchorChunkCoder coder(quantizer, &models);
-  std::vector<char> coded(n, 0);  // anchored by the chunks written so far
-  ChunkLayout selection;
-  auto close_chunk = [&](std::vector<int32_t> anchors, const double* prediction) {
-    std::sort(anchors.begin(), anchors.end());
-    selection.file_order.insert(selection.file_order.end(), anchors.begin(), anchors.end());
-    selection.chunks.push_back(coder.encode(anchors, coded, grid, prediction));
-    for (int32_t v : anchors) coded[v] = 1;
-    selection.chunk_anchors.push_back(static_cast<int32_t>(anchors.size()));
-  };
-  close_chunk(chosen, nullptr);
-
-  const double scale = box.diagonal > 0 ? 1.0 / box.diagonal : 1.0;
-  std::vector<double> shape, prediction, spread_shape, error2(n);
-  std::vector<int32_t> open;  // anchors of the chunk being gathered
-  int32_t chunk_opened_at = rec.num_anchors();
-  double rms_rel = 0, linf_rel = 0;
-  const double target = options.target_rms_rel;
-  const bool refine = options.refine;
-  double position_target = refine ? target * kExpectedRefinementGain : target;
-  Refinement refinement;
-  bool refined = false;
-  // Keeps a refinement that lowers the RMS without breaking an L-inf target
-  // the unrefined shape meets (least squares may raise the maximum).
-  auto acceptable = [&](const Refinement& r) {
-    const double linf_bound = std::max(options.target_linf_rel, linf_rel);
-    return r.rms_rel < rms_rel && (!(options.target_linf_rel > 0) || r.linf_rel <= linf_bound);
-  };
-  while (true) {
-    GAB_RETURN_IF_ERROR(rec.reconstruct(&shape));
-    VertexDistance distance;
-    squared_vertex_errors(mesh, shape, &error2, &distance);
-    rms_rel = distance.rms * scale;
-    linf_rel = distance.linf * scale;
-    stats->curve.push_back({rec.num_anchors(), rms_rel, linf_rel});
-    if (options.progress) options.progress(rec.num_anchors(), rms_rel);
-    if (spread_shape.empty()) spread_shape = shape;  // level 1's prediction
-    if (open.empty()) prediction = shape;  // what the decoder will hold when the next chunk starts
-    const bool rms_met = target > 0 && rms_rel <= target;
-    const bool linf_met = options.target_linf_rel > 0 && linf_rel <= options.target_linf_rel;
-    if (rms_met || linf_met) break;
-    if (rec.num_anchors() >= cap) {
-      // Out of anchors: refinement is the last way to get closer.
-      if (refine) {
-        GAB_RETURN_IF_ERROR(refine_coefficients(&rec, mesh, quantizer, options.refine_iterations, scale, &refinement));
-        refined = acceptable(refinement);
-      }
-      break;
-    }
-    if (refine && target > 0 && rms_rel <= position_target) {
-      GAB_RETURN_IF_ERROR(refine_coefficients(&rec, mesh, quantizer, options.refine_iterations, scale, &refinement));
-      if (acceptable(refinement) && refinement.rms_rel <= target) {
-        refined = true;
-        break;
-      }
-      // Aim at what this try says the refinement buys, a little beyond.
-      position_target = std::min(position_target, 0.99 * target * rms_rel / std::max(refinement.rms_rel, target));
-    }
-    const std::vector<int32_t> next =
-        pick_error_maxima(graph, error2, rec, next_batch(position_target, fraction, stats->curve, cap));
-    GAB_RETURN_IF_ERROR(rec.add_anchors_cheapest(next, coefficients_of(next)));
-    open.insert(open.end(), next.begin(), next.end());
-    if (rec.num_anchors() >= growth * chunk_opened_at) {
-      close_chunk(open, prediction.data());
-      open.clear();
-      chunk_opened_at = rec.num_anchors();
-    }
-  }
-  if (!open.empty()) close_chunk(open, prediction.data());
   // The level layout unless the selection order codes smaller (it can on
   // small smooth meshes, whose greedy order predicts best and whose extra
   // levels' frames weigh; never on the shared meshes).
-  ChunkLayout level_layout;
+  ChunkLayout in_selection_order, in_levels;
+  if (options.layout != FileLayout::kLevels) in_selection_order = encode_selection_layout(selection.schedule, grid);
   const bool try_levels = options.layout != FileLayout::kSelectionOrder;
   if (try_levels) {
-    GAB_RETURN_IF_ERROR(encode_levels(rec, graph, static_cast<int32_t>(chosen.size()), level_growth, options.threads,
-                                      spread_shape, quantizer, grid, coefficients_of, &level_layout));
+    const double growth = options.chunk_growth > 0 ? options.chunk_growth : default_level_growth(selection.flops);
+    GAB_RETURN_IF_ERROR(encode_level_layout(selection.schedule, graph, options.weight, growth, options.threads, grid,
+                                            &in_levels));
   }
-  const bool levels = options.layout == FileLayout::kLevels ||
-                      (try_levels && level_layout.bytes() <= selection.bytes());
-  ChunkLayout& layout = levels ? level_layout : selection;
-  std::vector<std::vector<uint8_t>>& chunks = layout.chunks;
-  const std::vector<int32_t>& file_order = layout.file_order;
+  const bool levels = try_levels && (options.layout == FileLayout::kLevels ||
+                                     in_levels.bytes() <= in_selection_order.bytes());
+  ChunkLayout& layout = levels ? in_levels : in_selection_order;
   stats->chunk_anchors = layout.chunk_anchors;
   stats->levels = levels;
-  stats->unrefined_rms_rel = rms_rel;
-  if (refined) {
-    // Corrections in file order: chunk by chunk, each in vertex order.
-    std::vector<int32_t> slot(n, -1);
-    for (size_t i = 0; i < rec.anchors().size(); ++i) slot[rec.anchors()[i]] = static_cast<int32_t>(i);
-    std::vector<int32_t> deltas(file_order.size() * 3);
-    for (size_t i = 0; i < file_order.size(); ++i) {
-      const size_t v = static_cast<size_t>(file_order[i]), s = static_cast<size_t>(slot[v]);
-      for (int c = 0; c < 3; ++c) deltas[3 * i + c] = refinement.grid[3 * s + c] - grid[3 * v + c];
-    }
-    chunks.push_back(encode_refinement(deltas));
-    stats->refinement_bytes = chunks.back().size() + kGabFrameBytes;
-    rms_rel = refinement.rms_rel;
-    linf_rel = refinement.linf_rel;
+
+  stats->unrefined_rms_rel = selection.rms_rel;
+  stats->rms_rel = selection.refined ? selection.refined_rms_rel : selection.rms_rel;
+  stats->linf_rel = selection.refined ? selection.refined_linf_rel : selection.linf_rel;
+  if (selection.refined) {
+    layout.chunks.push_back(
+        encode_refinement_chunk(layout.file_order, selection.schedule.order, selection.refined_grid, grid.index));
+    stats->refinement_bytes = layout.chunks.back().size() + kGabFrameBytes;
   }
-  stats->refined = refined;
-  stats->target_met = (options.target_rms_rel <= 0 || rms_rel <= options.target_rms_rel) &&
-                      (options.target_linf_rel <= 0 || linf_rel <= options.target_linf_rel);
-  if (options.max_anchors > 0 && options.target_rms_rel <= 0 && options.target_linf_rel <= 0) stats->target_met = true;
+  stats->refined = selection.refined;
+  // An anchor count alone is always met.
+  const bool rms_ok = options.target_rms_rel <= 0 || stats->rms_rel <= options.target_rms_rel;
+  const bool linf_ok = options.target_linf_rel <= 0 || stats->linf_rel <= options.target_linf_rel;
+  stats->target_met = rms_ok && linf_ok;
 
   GabHeader header;
   header.flags = static_cast<uint8_t>((options.geometry_only ? kGabFlagGeometryOnly : 0) |
-                                      (refined ? kGabFlagRefined : 0) | (levels ? kGabFlagLevels : 0));
+                                      (selection.refined ? kGabFlagRefined : 0) | (levels ? kGabFlagLevels : 0));
   header.bits = bits;
-  header.num_vertices = n;
+  header.num_vertices = mesh.num_vertices();
   header.num_triangles = mesh.num_triangles();
   header.weight = options.weight;
   for (int c = 0; c < 3; ++c) header.box_min[c] = quantizer.min[c];
   header.step = quantizer.step;
   header.anchors = rec.num_anchors();
-  header.chunks = static_cast<int32_t>(chunks.size());
-  *file = assemble_file(header, mesh, chunks, stats);
-  stats->anchors = rec.num_anchors();
+  header.chunks = static_cast<int32_t>(layout.chunks.size());
+  *file = assemble_file(header, mesh, layout.chunks, stats);
+  stats->anchors = header.anchors;
   stats->chunks = header.chunks;
-  stats->rms_rel = rms_rel;
-  stats->linf_rel = linf_rel;
   return Status::Ok();
 }
 
