@@ -21,7 +21,7 @@
 // Every decision has its own adaptive statistics per slot (first, second or
 // third vertex of a triangle coded vertex by vertex, or the third vertex
 // after a cached edge). Measured on the shared meshes: see
-// tests/codec/connectivity_coder_test.cpp.
+// tests/codec/connectivity/connectivity_coder_test.cpp.
 #include "connectivity/connectivity_coder.h"
 
 #include <algorithm>

@@ -17,13 +17,13 @@
 #include "gab/codec/encoder.h"
 #include "gab/codec/gab_format.h"
 #include "gab/mesh/file_io.h"
-#include "gab_file_test_util.h"
+#include "common/gab_files.h"
 
 namespace gab {
 namespace {
 
 const std::string kCorpus = [] {
-  const std::string here = __FILE__;  // .../tests/codec/golden_file_test.cpp
+  const std::string here = __FILE__;  // .../tests/codec/pipeline/golden_file_test.cpp
   return here.substr(0, here.rfind("/codec/")) + "/fuzz/corpus/gab";
 }();
 

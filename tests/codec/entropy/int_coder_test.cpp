@@ -1,6 +1,6 @@
 // UIntCoder / SIntCoder: exact round trips (edges of the ranges included,
-// across contexts), size near the entropy of geometric sources, and no
-// crash or out-of-contract value on garbage.
+// across contexts), size near the entropy of geometric sources, and
+// garbage decoding to values that round trip (saturated where out of range).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -100,7 +100,11 @@ TEST(IntCoder, SignedGeometricCostNearEntropy) {
   EXPECT_LE(bits, entropy * 1.04 + 0.06 * values.size());
 }
 
-TEST(IntCoder, GarbageDecodesWithoutUndefinedBehaviour) {
+TEST(IntCoder, GarbageDecodesToValuesThatRoundTrip) {
+  // Whatever a corrupt stream decodes to is a value the coders can code:
+  // coded afresh, the values decode back the same, in as many bytes as the
+  // encoder wrote (and no undefined behaviour on the way: the sanitizer
+  // builds run this).
   std::mt19937 rng(5);
   for (int trial = 0; trial < 100; ++trial) {
     std::vector<uint8_t> garbage(rng() % 128);
@@ -108,11 +112,29 @@ TEST(IntCoder, GarbageDecodesWithoutUndefinedBehaviour) {
     RangeDecoder dec(garbage.data(), garbage.size());
     UIntCoder u(2);
     SIntCoder s(2);
+    std::vector<uint32_t> unsigned_values;
+    std::vector<int32_t> signed_values;
     for (int i = 0; i < 500; ++i) {
-      u.decode(&dec, i & 1);
-      const int32_t v = s.decode(&dec, i & 1);
-      ASSERT_TRUE(v >= kMin32 && v <= kMax32);
+      unsigned_values.push_back(u.decode(&dec, i & 1));
+      signed_values.push_back(s.decode(&dec, i & 1));
     }
+    RangeEncoder enc;
+    UIntCoder u_enc(2);
+    SIntCoder s_enc(2);
+    for (int i = 0; i < 500; ++i) {
+      u_enc.encode(&enc, unsigned_values[i], i & 1);
+      s_enc.encode(&enc, signed_values[i], i & 1);
+    }
+    const std::vector<uint8_t> bytes = enc.finish();
+    RangeDecoder again(bytes.data(), bytes.size());
+    UIntCoder u_dec(2);
+    SIntCoder s_dec(2);
+    for (int i = 0; i < 500; ++i) {
+      ASSERT_EQ(u_dec.decode(&again, i & 1), unsigned_values[i]) << trial << " " << i;
+      ASSERT_EQ(s_dec.decode(&again, i & 1), signed_values[i]) << trial << " " << i;
+    }
+    EXPECT_FALSE(again.overrun());
+    EXPECT_EQ(again.bytes_consumed(), bytes.size());
   }
 }
 

@@ -8,7 +8,7 @@
 #include "gab/codec/encoder.h"
 #include "gab/codec/gab_format.h"
 #include "gab/mesh/metrics.h"
-#include "gab_file_test_util.h"
+#include "common/gab_files.h"
 
 namespace gab {
 namespace {

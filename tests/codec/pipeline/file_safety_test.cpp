@@ -12,7 +12,7 @@
 #include "gab/codec/decoder.h"
 #include "gab/codec/encoder.h"
 #include "gab/codec/gab_format.h"
-#include "gab_file_test_util.h"
+#include "common/gab_files.h"
 
 namespace gab {
 namespace {
@@ -192,7 +192,6 @@ TEST(FileSafety, HeaderErrorsNameTheProblem) {
 }
 
 TEST(FileSafety, ForgedCountsCannotForceHugeAllocations) {
-  std::vector<uint8_t> file = small_file(false);
   // n = 2^31 - 1 with a valid checksum: refused from the file size alone.
   ByteWriter w;
   GabHeader h;

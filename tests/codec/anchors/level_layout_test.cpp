@@ -20,7 +20,7 @@
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/mesh_io.h"
 #include "gab/mesh/relaxed_reconstruction.h"
-#include "gab_file_test_util.h"
+#include "common/gab_files.h"
 
 namespace gab {
 namespace {
@@ -29,19 +29,7 @@ using testing_util::bumpy_torus;
 using testing_util::decode_or_die;
 using testing_util::encode_or_die;
 using testing_util::relative_rms;
-
-// A torus whose radius carries vertex-scale noise: detail a smooth prior
-// cannot predict, so at a tight target most vertices become anchors.
-Mesh rough_torus(int n, int m, double amplitude) {
-  Mesh t = bumpy_torus(n, m);
-  uint32_t state = 12345;
-  for (int32_t v = 0; v < t.num_vertices(); ++v) {
-    state = state * 1664525u + 1013904223u;
-    const double noise = amplitude * (static_cast<double>(state >> 8) / (1u << 24) - 0.5);
-    for (int c = 0; c < 3; ++c) t.positions[3 * static_cast<size_t>(v) + c] *= 1.0 + noise;
-  }
-  return t;
-}
+using testing_util::rough_torus;
 
 TEST(LevelLayout, LevelSizesGrowByTheFactorAndCoverTheRest) {
   LevelPlan plan;

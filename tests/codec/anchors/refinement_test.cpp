@@ -7,7 +7,7 @@
 
 #include "gab/codec/decoder.h"
 #include "gab/codec/encoder.h"
-#include "gab_file_test_util.h"
+#include "common/gab_files.h"
 
 namespace gab {
 namespace {
