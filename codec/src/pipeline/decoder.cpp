@@ -1,3 +1,9 @@
+// The decoder: a short driver over the codec's layers, in the order the
+// encoder wrote them (encoder.cpp):
+//   header (container/gab_header.h) -> connectivity section (connectivity/)
+//   -> the anchor chunks of the file's layout (anchors/anchor_chunk.h, anchor_levels.h),
+//      each joining the reconstruction as it arrives
+//   -> the refinement chunk (anchors/refinement_chunk.h) -> the shape.
 #include "gab/codec/decoder.h"
 
 #include <algorithm>

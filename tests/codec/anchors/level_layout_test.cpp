@@ -11,6 +11,7 @@
 
 #include "anchors/anchor_chunk.h"
 #include "anchors/anchor_levels.h"
+#include "common/gab_files.h"
 #include "container/byte_io.h"
 #include "container/framing.h"
 #include "container/gab_header.h"
@@ -20,7 +21,6 @@
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/mesh_io.h"
 #include "gab/mesh/relaxed_reconstruction.h"
-#include "common/gab_files.h"
 
 namespace gab {
 namespace {

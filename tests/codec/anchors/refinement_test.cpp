@@ -5,9 +5,9 @@
 
 #include <string>
 
+#include "common/gab_files.h"
 #include "gab/codec/decoder.h"
 #include "gab/codec/encoder.h"
-#include "common/gab_files.h"
 
 namespace gab {
 namespace {

@@ -4,11 +4,11 @@
 
 #include <cmath>
 
+#include "common/gab_files.h"
 #include "gab/codec/decoder.h"
 #include "gab/codec/encoder.h"
 #include "gab/codec/gab_format.h"
 #include "gab/mesh/metrics.h"
-#include "common/gab_files.h"
 
 namespace gab {
 namespace {

@@ -6,13 +6,13 @@
 #include <cmath>
 #include <string>
 
+#include "common/gab_files.h"
 #include "container/crc32.h"
 #include "container/framing.h"
 #include "container/gab_header.h"
 #include "gab/codec/decoder.h"
 #include "gab/codec/encoder.h"
 #include "gab/codec/gab_format.h"
-#include "common/gab_files.h"
 
 namespace gab {
 namespace {

@@ -12,12 +12,12 @@
 #include <string>
 #include <vector>
 
+#include "common/gab_files.h"
 #include "fuzz/gab_fuzz_mesh.h"
 #include "gab/codec/decoder.h"
 #include "gab/codec/encoder.h"
 #include "gab/codec/gab_format.h"
 #include "gab/mesh/file_io.h"
-#include "common/gab_files.h"
 
 namespace gab {
 namespace {
