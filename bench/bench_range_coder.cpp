@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "gab/codec/connectivity_coder.h"
-#include "gab/codec/range_coder.h"
+#include "connectivity/connectivity_coder.h"
+#include "entropy/range_coder.h"
 #include "gab/mesh/mesh_io.h"
 
 namespace {

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Regenerates tests/fuzz/corpus/gab (the .gab fuzzer's seeds and the golden
-# files of tests/codec/golden_file_test.cpp) with the gab binary given as $1:
+# files of tests/codec/pipeline/golden_file_test.cpp) with the gab binary given as $1:
 #   bash tests/fuzz/make_gab_seeds.sh build/apps/gab
 # Each seed is one options byte (see gab_fuzzer.cpp) then a file made from
 # the 10 x 6 torus of gab_fuzz_mesh.h. Only for a deliberate format change

@@ -1,5 +1,5 @@
-// Decompression of a .gab file (DESIGN.md section 5), and a look inside one
-// without decoding it.
+// Decompression of a .gab file (gab_format.h), and a look inside one without
+// decoding it.
 //
 // Contract on untrusted input: every malformed, corrupted or forged file
 // gets a kParseError naming what is wrong (header field, connectivity block,

@@ -1,4 +1,8 @@
-// The .gab container (DESIGN.md section 5), version 1. All integers
+// The .gab file format, version 1: what an embedder needs to recognise a file
+// and read its header (the codec reads and writes it; decoder.h's
+// read_gab_info reports it). The method is the paper's (Sorkine, Cohen-Or,
+// Irony, Toledo, "Geometry-Aware Bases for Shape Approximation", IEEE TVCG
+// 2005); the coders named below live in codec/src. All integers
 // little-endian; a chunk or block is framed as  u32 length, u32 CRC-32 of the
 // payload, payload.
 //
@@ -8,22 +12,24 @@
 //   n, faces   u32, u32   vertex and triangle counts
 //   weight     f64        anchor weight w of the relaxed basis
 //   box min    3 x f64    quantization grid origin
-//   step       f64        grid spacing (quantizer.h)
+//   step       f64        grid spacing (codec/src/anchors/quantizer.h)
 //   anchors    u32        anchors in the file, over all chunks
 //   chunks     u32        chunks in the file (the refinement included)
 //   crc        u32        CRC-32 of the 68 bytes above
-//   connectivity: framed block (connectivity_coder.h), or in geometry-only
-//              mode the u64 connectivity_hash of the mesh the decoder must
-//              be given
+//   connectivity: framed block (codec/src/connectivity/connectivity_coder.h),
+//              or in geometry-only mode the u64 connectivity_hash of the
+//              mesh the decoder must be given
 //   chunks:    framed payloads: varint anchor count b, then one range-coded
-//              stream (anchor_chunk.h): the b anchors as a sorted subset of
-//              the vertices not anchored by earlier chunks, then their
+//              stream (codec/src/anchors/anchor_chunk.h): the b anchors as
+//              a sorted subset of the vertices not anchored by earlier
+//              chunks, then their
 //              quantized positions as residuals from the reconstruction of
 //              the earlier chunks (chunk 0: from the previous anchor's,
 //              the first from the grid's centre).
 //              Adaptive statistics carry over from chunk to chunk.
-//   chunks with bit 2 (levels; anchor_levels.h): chunk 0 is varints
-//              spread s, rest r, growth g (sixteenths), then one stream: the
+//   chunks with bit 2 (levels; codec/src/anchors/anchor_levels.h): chunk 0
+//              is varints spread s, rest r, growth g (sixteenths), then one
+//              stream: the
 //              s spread anchors as a subset (positions as chunk 0's above),
 //              then the r other anchors as a subset of the vertices left.
 //              Chunk k >= 1 is level k's positions only (a stream of
@@ -34,8 +40,8 @@
 //              1 + the levels (+ 1 refined).
 //   refinement (flag bit 1 only): one last framed payload correcting every
 //              anchor's quantized position towards the least-squares
-//              optimal coefficient (refinement_chunk.h); it applies to the
-//              whole anchor set only.
+//              optimal coefficient (codec/src/anchors/refinement_chunk.h);
+//              it applies to the whole anchor set only.
 // Any prefix of whole chunks is a valid coarser approximation. A file
 // without bits 1 and 2 is what the first version of this format wrote; a
 // reader that does not know a bit refuses such files ("unknown flags").
@@ -53,11 +59,8 @@
 // shared meshes (igea, one level after the spread set, the same).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
-
-#include "gab/codec/byte_io.h"
-#include "gab/codec/quantizer.h"
-#include "gab/status.h"
 
 namespace gab {
 
@@ -69,8 +72,8 @@ constexpr uint8_t kGabFlagLevels = 4;
 constexpr int kGabMinBits = 2;
 constexpr int kGabMaxBits = 24;
 constexpr size_t kGabHeaderBytes = 72;
-constexpr size_t kGabFrameBytes = 8;  // a frame's u32 length and u32 CRC-32
 
+// The header's fields, as the file stores them.
 struct GabHeader {
   uint8_t version = kGabVersion;
   uint8_t flags = 0;
@@ -78,7 +81,8 @@ struct GabHeader {
   int32_t num_vertices = 0;
   int32_t num_triangles = 0;
   double weight = 1.0;
-  Quantizer quantizer;  // min and step from the file, max_index from bits
+  double box_min[3] = {0, 0, 0};  // the grid's origin
+  double step = 0;                // the grid's spacing (0: a box of zero size)
   int32_t anchors = 0;
   int32_t chunks = 0;
 
@@ -88,21 +92,5 @@ struct GabHeader {
   // Chunks holding anchors (all but the refinement).
   int32_t anchor_chunks() const { return chunks - (refined() ? 1 : 0); }
 };
-
-void write_gab_header(const GabHeader& header, ByteWriter* out);
-
-// Reads and checks the header: magic, version, CRC, flags, every field's
-// range, and that the counts are plausible for a file of `file_size` bytes
-// (so a forged header cannot make a decoder allocate without bound).
-// kParseError with a message naming the field otherwise.
-Status read_gab_header(ByteReader* in, size_t file_size, GabHeader* header);
-
-// Frames `payload` (u32 length, u32 CRC, bytes).
-void write_framed(const uint8_t* payload, size_t size, ByteWriter* out);
-
-enum class FrameRead { kOk, kTruncated, kCorrupt };
-// Reads one frame; kTruncated when the file ends inside it, kCorrupt when
-// the CRC does not match.
-FrameRead read_framed(ByteReader* in, const uint8_t** payload, size_t* size);
 
 }  // namespace gab

@@ -1,0 +1,265 @@
+// The decoder: a short driver over the codec's layers, in the order the
+// encoder wrote them (encoder.cpp):
+//   header (container/gab_header.h) -> connectivity section (connectivity/)
+//   -> the anchor chunks of the file's layout (anchors/anchor_chunk.h, anchor_levels.h),
+//      each joining the reconstruction as it arrives
+//   -> the refinement chunk (anchors/refinement_chunk.h) -> the shape.
+#include "gab/codec/decoder.h"
+
+#include <algorithm>
+#include <chrono>
+#include <string>
+
+#include "anchors/anchor_chunk.h"
+#include "anchors/anchor_levels.h"
+#include "anchors/quantizer.h"
+#include "anchors/refinement_chunk.h"
+#include "connectivity/connectivity_section.h"
+#include "container/framing.h"
+#include "container/gab_header.h"
+#include "gab/mesh/edge_graph.h"
+#include "gab/mesh/relaxed_reconstruction.h"
+
+namespace gab {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+Status corrupt(const std::string& what) { return Status::Error(StatusCode::kParseError, what); }
+
+// Entries of the lower triangle of L^T L: at most sum over vertices of
+// (2-ring size), bounded by sum (1 + d + sum of neighbour degrees).
+int64_t matrix_entries_bound(const EdgeGraph& g) {
+  int64_t total = 0;
+  for (int32_t v = 0; v < g.num_vertices(); ++v) {
+    total += 1;
+    for (int32_t p = g.offsets[v]; p < g.offsets[v + 1]; ++p) {
+      const int32_t u = g.neighbors[p];
+      total += 1 + (g.offsets[u + 1] - g.offsets[u]);
+    }
+  }
+  return total;
+}
+
+// What the chunk loops build: the reconstruction, the shape that predicts
+// the next chunk, every decoded anchor's grid indices in file order.
+struct ChunkDecoding {
+  ChunkDecoding(const GabHeader& h, const EdgeGraph& g, const DecodeOptions& o, DecodeStats* s)
+      : header(h), quantizer(Quantizer::from_grid(h.box_min, h.step, h.bits)), graph(g), options(o), stats(s) {
+    wanted = o.max_anchors >= 0 ? std::min(o.max_anchors, h.anchors) : h.anchors;
+  }
+  const GabHeader& header;
+  const Quantizer quantizer;
+  const EdgeGraph& graph;
+  const DecodeOptions& options;
+  DecodeStats* stats;
+  int32_t wanted = 0;  // anchors to decode (level of detail)
+  RelaxedReconstruction rec;
+  std::vector<double> shape;
+  std::vector<int32_t> file_grid;
+  int32_t decoded = 0;
+};
+
+// Reads chunk `chunk`'s frame: kOk, or a truncation past chunk 0 (sets
+// stats->truncated, *payload null); an error otherwise.
+Status read_chunk_frame(ByteReader* in, int32_t chunk, ChunkDecoding* st, const uint8_t** payload, size_t* size) {
+  if (st->options.progress) st->options.progress(chunk, st->header.chunks);
+  *payload = nullptr;
+  const FrameRead frame = read_framed(in, payload, size);
+  if (frame == FrameRead::kTruncated) {
+    if (chunk == 0) return corrupt("file ends inside chunk 0: no shape to show");
+    st->stats->truncated = true;
+    *payload = nullptr;
+    return Status::Ok();
+  }
+  if (frame == FrameRead::kCorrupt) return corrupt("chunk " + std::to_string(chunk) + " is corrupt (checksum mismatch)");
+  return Status::Ok();
+}
+
+// Anchors `anchors` of chunk `chunk` at grid indices `grid` (3 each) join
+// the reconstruction (chunk 0 factors it); the shape is then solved for if
+// `predict` (another chunk follows).
+Status add_chunk(int32_t chunk, const std::vector<int32_t>& anchors, const std::vector<int32_t>& grid, bool predict,
+                 ChunkDecoding* st) {
+  const Quantizer& q = st->quantizer;
+  std::vector<double> coefficients(grid.size());
+  for (size_t i = 0; i < anchors.size(); ++i) {
+    for (int c = 0; c < 3; ++c) coefficients[3 * i + c] = q.dequantize(grid[3 * i + c], c);
+  }
+  const auto t = std::chrono::steady_clock::now();
+  if (chunk == 0) {
+    const Status s = st->rec.init(st->graph, st->header.weight, anchors, coefficients);
+    // The factor is over max_factor_entries (kResourceExhausted), or its
+    // memory cannot be had (kOutOfMemory): the caller's limits, not the
+    // file's fault, so the code goes through unchanged.
+    if (s.code() == StatusCode::kResourceExhausted || s.code() == StatusCode::kOutOfMemory) return s;
+    if (!s.ok()) return corrupt("chunk 0: " + s.message());
+    st->stats->factor_s += seconds_since(t);
+  } else {
+    bool refactor = false;
+    const Status s = st->rec.add_anchors_cheapest(anchors, coefficients, &refactor);
+    if (!s.ok()) return corrupt("chunk " + std::to_string(chunk) + ": " + s.message());
+    (refactor ? st->stats->factor_s : st->stats->update_s) += seconds_since(t);
+    st->stats->refactorizations += refactor ? 1 : 0;
+  }
+  st->file_grid.insert(st->file_grid.end(), grid.begin(), grid.end());
+  st->decoded += static_cast<int32_t>(anchors.size());
+  st->stats->chunks = chunk + 1;
+  if (predict) {
+    const auto t_solve = std::chrono::steady_clock::now();
+    GAB_RETURN_IF_ERROR(st->rec.reconstruct(&st->shape));
+    st->stats->solve_s += seconds_since(t_solve);
+  }
+  return Status::Ok();
+}
+
+// The first layout: each chunk its anchors' subset and positions.
+Status decode_selection_chunks(ByteReader* in, AnchorChunkCoder* coder, ChunkDecoding* st) {
+  const GabHeader& header = st->header;
+  const int32_t anchor_chunks = header.anchor_chunks();
+  std::vector<char> anchored(header.num_vertices, 0);
+  for (int32_t chunk = 0; chunk < anchor_chunks && (chunk == 0 || st->decoded < st->wanted); ++chunk) {
+    const uint8_t* payload = nullptr;
+    size_t payload_size = 0;
+    GAB_RETURN_IF_ERROR(read_chunk_frame(in, chunk, st, &payload, &payload_size));
+    if (!payload) break;
+    // Chunk 0 is decoded whole (it anchors every component); later ones up
+    // to the anchors wanted.
+    std::vector<int32_t> anchors, grid;
+    int32_t in_chunk = 0;
+    const Status s = coder->decode(payload, payload_size, anchored, chunk == 0 ? nullptr : st->shape.data(),
+                                   chunk == 0 ? -1 : st->wanted - st->decoded, &anchors, &grid, &in_chunk);
+    if (!s.ok()) return corrupt("chunk " + std::to_string(chunk) + ": " + s.message());
+    if (in_chunk > header.anchors - st->decoded ||
+        (chunk + 1 == anchor_chunks && in_chunk != header.anchors - st->decoded)) {
+      return corrupt("chunk " + std::to_string(chunk) + " holds " + std::to_string(in_chunk) +
+                     " anchors, which does not add up to the header's " + std::to_string(header.anchors));
+    }
+    for (int32_t v : anchors) anchored[v] = 1;
+    const bool more = chunk + 1 < anchor_chunks && st->decoded + static_cast<int32_t>(anchors.size()) < st->wanted;
+    GAB_RETURN_IF_ERROR(add_chunk(chunk, anchors, grid, more, st));
+  }
+  return Status::Ok();
+}
+
+// The level layout: chunk 0 the spread set and the rest's subset, then one
+// level's positions per chunk, the levels worked out here (anchor_levels.h).
+Status decode_level_chunks(ByteReader* in, AnchorChunkCoder* coder, ChunkDecoding* st) {
+  const GabHeader& header = st->header;
+  const uint8_t* payload = nullptr;
+  size_t payload_size = 0;
+  GAB_RETURN_IF_ERROR(read_chunk_frame(in, 0, st, &payload, &payload_size));
+  LevelPlan plan;
+  size_t offset = 0;
+  Status s = parse_level_plan(payload, payload_size, header.anchors, header.anchor_chunks(), &plan, &offset);
+  if (!s.ok()) return corrupt("chunk 0: " + s.message());
+  std::vector<int32_t> spread, grid, rest;
+  s = coder->decode_level_head(payload + offset, payload_size - offset, header.num_vertices, plan, &spread, &grid,
+                               &rest);
+  if (!s.ok()) return corrupt("chunk 0: " + s.message());
+  const std::vector<int32_t> sizes = plan.level_sizes();
+  // The levels a level of detail reaches, and the farthest-point picks they
+  // need (the last level is what the picks leave).
+  size_t needed = 0;
+  int64_t end = plan.spread;
+  while (needed < sizes.size() && end < st->wanted) end += sizes[needed++];
+  const int32_t last = sizes.empty() ? 0 : sizes.back();
+  const int32_t picks = static_cast<int32_t>(std::min<int64_t>(end - plan.spread, plan.rest - last));
+  GAB_RETURN_IF_ERROR(add_chunk(0, spread, grid, needed > 0, st));
+  std::vector<int32_t> order;
+  GAB_RETURN_IF_ERROR(level_order(st->graph, spread, rest, picks, &order));
+  LevelMembers members(order, rest, header.num_vertices);
+  for (size_t k = 0; k < needed; ++k) {
+    const int32_t chunk = static_cast<int32_t>(k + 1);
+    GAB_RETURN_IF_ERROR(read_chunk_frame(in, chunk, st, &payload, &payload_size));
+    if (!payload) break;
+    std::vector<int32_t> level = members.next(sizes, k);
+    if (static_cast<int32_t>(level.size()) > st->wanted - st->decoded) level.resize(st->wanted - st->decoded);
+    s = coder->decode_level(payload, payload_size, level, st->shape.data(), st->graph, &grid);
+    if (!s.ok()) return corrupt("chunk " + std::to_string(chunk) + ": " + s.message());
+    GAB_RETURN_IF_ERROR(add_chunk(chunk, level, grid, k + 1 < needed, st));
+  }
+  return Status::Ok();
+}
+
+// The refinement chunk (the whole anchor set decoded): moves every anchor's
+// coefficient; a file cut inside it leaves the unrefined shape (truncated).
+Status apply_refinement(ByteReader* in, ChunkDecoding* st) {
+  const int32_t chunk = st->header.anchor_chunks();
+  const std::string name = "refinement (chunk " + std::to_string(chunk) + ")";
+  const uint8_t* payload = nullptr;
+  size_t payload_size = 0;
+  const FrameRead frame = read_framed(in, &payload, &payload_size);
+  if (frame == FrameRead::kCorrupt) return corrupt(name + " is corrupt (checksum mismatch)");
+  if (frame == FrameRead::kTruncated) {
+    st->stats->truncated = true;
+    return Status::Ok();
+  }
+  std::vector<double> coefficients;
+  const Status s = decode_refinement_chunk(payload, payload_size, st->file_grid, st->quantizer, &coefficients);
+  if (!s.ok()) return corrupt(name + ": " + s.message());
+  GAB_RETURN_IF_ERROR(st->rec.set_coefficients(0, coefficients));
+  st->stats->refined = true;
+  st->stats->chunks = chunk + 1;
+  return Status::Ok();
+}
+
+}  // namespace
+
+Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& options, Mesh* mesh, DecodeStats* stats) {
+  const auto start = std::chrono::steady_clock::now();
+  *stats = DecodeStats();
+  ByteReader in(data, size);
+  GabHeader header;
+  GAB_RETURN_IF_ERROR(read_gab_header(&in, size, &header));
+  const int32_t n = header.num_vertices;
+  stats->num_vertices = n;
+  stats->num_triangles = header.num_triangles;
+  stats->anchors_in_file = header.anchors;
+  stats->chunks_in_file = header.chunks;
+  stats->bits = header.bits;
+  stats->weight = header.weight;
+  stats->geometry_only = header.geometry_only();
+
+  Mesh out;
+  ConnectivitySection connectivity;
+  GAB_RETURN_IF_ERROR(read_connectivity_section(&in, header, &connectivity));
+  GAB_RETURN_IF_ERROR(decode_connectivity_section(connectivity, header, options.connectivity, &out.triangles));
+  out.positions.assign(static_cast<size_t>(n) * 3, 0.0);
+  const EdgeGraph graph = build_edge_graph(out);
+  if (matrix_entries_bound(graph) > options.max_matrix_entries) {
+    return Status::Error(StatusCode::kResourceExhausted,
+                         "connectivity is too irregular: its least-squares matrix would exceed " +
+                             std::to_string(options.max_matrix_entries) + " entries");
+  }
+
+  AnchorModels models;
+  ChunkDecoding state(header, graph, options, stats);
+  AnchorChunkCoder coder(state.quantizer, &models);
+  state.rec.set_threads(options.threads);
+  state.rec.set_max_factor_entries(options.max_factor_entries);
+  if (header.levels()) {
+    GAB_RETURN_IF_ERROR(decode_level_chunks(&in, &coder, &state));
+  } else {
+    GAB_RETURN_IF_ERROR(decode_selection_chunks(&in, &coder, &state));
+  }
+  // The refinement belongs to the whole anchor set: skipped for a level of detail.
+  if (header.refined() && !stats->truncated && state.decoded == header.anchors) {
+    GAB_RETURN_IF_ERROR(apply_refinement(&in, &state));
+  }
+  const auto t_solve = std::chrono::steady_clock::now();
+  GAB_RETURN_IF_ERROR(state.rec.reconstruct(&out.positions));
+  stats->solve_s += seconds_since(t_solve);
+  if (!stats->truncated && state.decoded == header.anchors && in.remaining() != 0) {
+    return corrupt("trailing bytes after the last chunk");
+  }
+  *mesh = std::move(out);
+  stats->anchors = state.decoded;
+  stats->decode_s = seconds_since(start);
+  return Status::Ok();
+}
+
+}  // namespace gab

@@ -1,0 +1,280 @@
+// The encoder: a short driver over the codec's layers, in the order the
+// decoder reads them back (decoder.cpp):
+//   select anchors (anchor_selection.h: greedy loop and refinement search, no bytes)
+//   -> code the anchor chunks in each layout (anchors/anchor_chunk.h, anchor_levels.h), keep one
+//   -> the refinement chunk (anchors/refinement_chunk.h)
+//   -> header (container/gab_header.h), connectivity section (connectivity/), chunks, framed.
+#include "gab/codec/encoder.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "anchors/anchor_chunk.h"
+#include "anchors/anchor_levels.h"
+#include "anchors/refinement_chunk.h"
+#include "connectivity/connectivity_section.h"
+#include "container/framing.h"
+#include "container/gab_header.h"
+#include "gab/mesh/edge_graph.h"
+#include "gab/mesh/relaxed_reconstruction.h"
+#include "pipeline/anchor_selection.h"
+#include "pipeline/encoder_tuning.h"
+
+namespace gab {
+
+namespace {
+
+Status check_options(const EncodeOptions& o) {
+  auto bad = [](const std::string& m) { return Status::Error(StatusCode::kInvalidArgument, m); };
+  if (o.max_anchors <= 0 && !(o.target_rms_rel > 0) && !(o.target_linf_rel > 0)) {
+    return bad("set a stopping rule: an anchor count, an RMS or an L-inf target");
+  }
+  if (o.max_anchors < 0) return bad("anchor count must be positive");
+  if (o.target_rms_rel < 0 || o.target_linf_rel < 0 || !std::isfinite(o.target_rms_rel) ||
+      !std::isfinite(o.target_linf_rel)) {
+    return bad("error targets must be finite and non-negative");
+  }
+  if (o.bits != 0 && (o.bits < kGabMinBits || o.bits > kGabMaxBits)) {
+    return bad("bits must be in " + std::to_string(kGabMinBits) + ".." + std::to_string(kGabMaxBits));
+  }
+  if (!(o.weight > 0) || !std::isfinite(o.weight)) return bad("anchor weight must be positive and finite");
+  if (!(o.batch_fraction <= 1)) return bad("batch fraction must be at most 1");
+  if (o.chunk_growth > 0 && !(o.chunk_growth > 1)) return bad("chunk growth must be above 1");
+  if (!std::isfinite(o.chunk_growth)) return bad("chunk growth must be finite");
+  if (o.refine_iterations < 1) return bad("refinement iterations must be positive");
+  return Status::Ok();
+}
+
+// The mesh's box: its low and high corners, longest side and diagonal.
+struct Box {
+  double lo[3], hi[3];
+  double extent = 0.0, diagonal = 0.0;
+};
+
+Box box_of(const Mesh& mesh) {
+  Box b;
+  for (int c = 0; c < 3; ++c) b.lo[c] = b.hi[c] = mesh.positions[c];
+  for (int32_t v = 0; v < mesh.num_vertices(); ++v) {
+    for (int c = 0; c < 3; ++c) {
+      b.lo[c] = std::min(b.lo[c], mesh.positions[3 * static_cast<size_t>(v) + c]);
+      b.hi[c] = std::max(b.hi[c], mesh.positions[3 * static_cast<size_t>(v) + c]);
+    }
+  }
+  double d2 = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    b.extent = std::max(b.extent, b.hi[c] - b.lo[c]);
+    d2 += (b.hi[c] - b.lo[c]) * (b.hi[c] - b.lo[c]);
+  }
+  b.diagonal = std::sqrt(d2);
+  return b;
+}
+
+// One layout's anchor chunks, the anchors in the order the file lists them
+// (chunk by chunk, each in vertex order: the refinement's order) and per chunk.
+struct ChunkLayout {
+  std::vector<std::vector<uint8_t>> chunks;
+  std::vector<int32_t> file_order;
+  std::vector<int32_t> chunk_anchors;
+
+  void add(std::vector<uint8_t> chunk, const std::vector<int32_t>& anchors) {
+    chunks.push_back(std::move(chunk));
+    file_order.insert(file_order.end(), anchors.begin(), anchors.end());
+    chunk_anchors.push_back(static_cast<int32_t>(anchors.size()));
+  }
+  size_t bytes() const {
+    size_t total = 0;
+    for (const std::vector<uint8_t>& c : chunks) total += c.size() + kGabFrameBytes;
+    return total;
+  }
+};
+
+// The selection-order layout: chunk k the schedule's k-th cut, its anchors
+// a subset of the vertices the chunks before left free, predicted by the
+// reconstruction from those chunks (chunk 0: by the previous anchor). O(n)
+// per chunk plus the positions.
+ChunkLayout encode_selection_layout(const AnchorSchedule& schedule, const GridPositions& grid) {
+  ChunkLayout out;
+  AnchorModels models;
+  AnchorChunkCoder coder(grid.quantizer, &models);
+  std::vector<char> coded(grid.index.size() / 3, 0);  // anchored by the chunks written so far
+  int32_t begin = 0;
+  for (size_t k = 0; k < schedule.cuts.size(); ++k) {
+    std::vector<int32_t> anchors(schedule.order.begin() + begin, schedule.order.begin() + schedule.cuts[k]);
+    std::sort(anchors.begin(), anchors.end());
+    const double* prediction = k == 0 ? nullptr : schedule.shapes[k - 1].data();
+    out.add(coder.encode(anchors, coded, grid.index, prediction), anchors);
+    for (int32_t v : anchors) coded[v] = 1;
+    begin = schedule.cuts[k];
+  }
+  return out;
+}
+
+// The level layout (anchor_levels.h) of the schedule's anchors: chunk 0 the
+// spread set and the rest's subset, then one level's positions per chunk,
+// each predicted by the reconstruction from the levels before it (level 1:
+// from the spread set, the schedule's first shape). Cost: the decoder's,
+// less one factorization and one solve: levels - 1 solves and updates (or
+// refactorizations).
+Status encode_level_layout(const AnchorSchedule& schedule, const EdgeGraph& graph, double weight, double growth,
+                           int32_t threads, const GridPositions& grid, ChunkLayout* out) {
+  std::vector<int32_t> spread(schedule.order.begin(), schedule.order.begin() + schedule.spread);
+  std::vector<int32_t> rest(schedule.order.begin() + schedule.spread, schedule.order.end());
+  std::sort(spread.begin(), spread.end());
+  std::sort(rest.begin(), rest.end());
+  LevelPlan plan;
+  plan.spread = schedule.spread;
+  plan.rest = static_cast<int32_t>(rest.size());
+  plan.growth16 = level_growth16(growth);
+  const std::vector<int32_t> sizes = plan.level_sizes();
+  std::vector<int32_t> order;
+  GAB_RETURN_IF_ERROR(level_order(graph, spread, rest, plan.rest - (sizes.empty() ? 0 : sizes.back()), &order));
+  AnchorModels models;
+  AnchorChunkCoder coder(grid.quantizer, &models);
+  out->add(coder.encode_level_head(plan, spread, rest, grid.index), spread);
+
+  LevelMembers members(order, rest, graph.num_vertices());
+  RelaxedReconstruction levels;  // the decoder's reconstructions from level 2 on
+  levels.set_threads(threads);
+  std::vector<double> shape;
+  std::vector<int32_t> before = spread, previous;  // before level 2: the spread set and level 1
+  for (size_t k = 0; k < sizes.size(); ++k) {
+    std::vector<int32_t> level = members.next(sizes, k);
+    if (k == 1) {
+      before.insert(before.end(), previous.begin(), previous.end());
+      GAB_RETURN_IF_ERROR(levels.init(graph, weight, before, grid.coefficients_of(before)));
+    } else if (k > 1) {
+      GAB_RETURN_IF_ERROR(levels.add_anchors_cheapest(previous, grid.coefficients_of(previous)));
+    }
+    if (k > 0) GAB_RETURN_IF_ERROR(levels.reconstruct(&shape));
+    const double* prediction = k == 0 ? schedule.shapes[0].data() : shape.data();
+    out->add(coder.encode_level(level, grid.index, prediction, graph), level);
+    previous = std::move(level);
+  }
+  return Status::Ok();
+}
+
+// Header, connectivity section, chunks; sets the byte counts.
+std::vector<uint8_t> assemble_file(const GabHeader& header, const Mesh& mesh,
+                                   const std::vector<std::vector<uint8_t>>& chunks, EncodeStats* stats) {
+  ByteWriter out;
+  write_gab_header(header, &out);
+  const size_t before_connectivity = out.size();
+  write_connectivity_section(mesh, header.geometry_only(), &out);
+  stats->connectivity_bytes = out.size() - before_connectivity;
+  for (const std::vector<uint8_t>& chunk : chunks) write_framed(chunk.data(), chunk.size(), &out);
+  stats->bytes = out.size();
+  stats->geometry_bytes = stats->bytes - stats->connectivity_bytes;
+  return out.take();
+}
+
+// Everything after the grid: anchors, chunks, file. Sets every stat but encode_s.
+Status encode_on_grid(const Mesh& mesh, const EncodeOptions& options, const Box& box, const Quantizer& quantizer,
+                      int bits, std::vector<uint8_t>* file, EncodeStats* stats) {
+  *stats = EncodeStats();
+  stats->num_vertices = mesh.num_vertices();
+  stats->num_triangles = mesh.num_triangles();
+  stats->bits = bits;
+  const GridPositions grid(mesh, quantizer);
+  const EdgeGraph graph = build_edge_graph(mesh);
+  RelaxedReconstruction rec;
+  Selection selection;
+  GAB_RETURN_IF_ERROR(select_anchors(mesh, graph, options, grid, box.diagonal > 0 ? 1.0 / box.diagonal : 1.0, &rec,
+                                     &selection));
+  stats->curve = std::move(selection.curve);
+
+  // The level layout unless the selection order codes smaller (it can on
+  // small smooth meshes, whose greedy order predicts best and whose extra
+  // levels' frames weigh; never on the shared meshes).
+  ChunkLayout in_selection_order, in_levels;
+  if (options.layout != FileLayout::kLevels) in_selection_order = encode_selection_layout(selection.schedule, grid);
+  const bool try_levels = options.layout != FileLayout::kSelectionOrder;
+  if (try_levels) {
+    const double growth = options.chunk_growth > 0 ? options.chunk_growth : default_level_growth(selection.flops);
+    GAB_RETURN_IF_ERROR(encode_level_layout(selection.schedule, graph, options.weight, growth, options.threads, grid,
+                                            &in_levels));
+  }
+  const bool levels = try_levels && (options.layout == FileLayout::kLevels ||
+                                     in_levels.bytes() <= in_selection_order.bytes());
+  ChunkLayout& layout = levels ? in_levels : in_selection_order;
+  stats->chunk_anchors = layout.chunk_anchors;
+  stats->levels = levels;
+
+  stats->unrefined_rms_rel = selection.rms_rel;
+  stats->rms_rel = selection.refined ? selection.refined_rms_rel : selection.rms_rel;
+  stats->linf_rel = selection.refined ? selection.refined_linf_rel : selection.linf_rel;
+  if (selection.refined) {
+    layout.chunks.push_back(
+        encode_refinement_chunk(layout.file_order, selection.schedule.order, selection.refined_grid, grid.index));
+    stats->refinement_bytes = layout.chunks.back().size() + kGabFrameBytes;
+  }
+  stats->refined = selection.refined;
+  // An anchor count alone is always met.
+  const bool rms_ok = options.target_rms_rel <= 0 || stats->rms_rel <= options.target_rms_rel;
+  const bool linf_ok = options.target_linf_rel <= 0 || stats->linf_rel <= options.target_linf_rel;
+  stats->target_met = rms_ok && linf_ok;
+
+  GabHeader header;
+  header.flags = static_cast<uint8_t>((options.geometry_only ? kGabFlagGeometryOnly : 0) |
+                                      (selection.refined ? kGabFlagRefined : 0) | (levels ? kGabFlagLevels : 0));
+  header.bits = bits;
+  header.num_vertices = mesh.num_vertices();
+  header.num_triangles = mesh.num_triangles();
+  header.weight = options.weight;
+  for (int c = 0; c < 3; ++c) header.box_min[c] = quantizer.min[c];
+  header.step = quantizer.step;
+  header.anchors = rec.num_anchors();
+  header.chunks = static_cast<int32_t>(layout.chunks.size());
+  *file = assemble_file(header, mesh, layout.chunks, stats);
+  stats->anchors = header.anchors;
+  stats->chunks = header.chunks;
+  return Status::Ok();
+}
+
+// The grid of the dense regime: its error alone kDenseGridShare of the RMS
+// target, at the fewest bits that cover the box (the step is the file's,
+// not necessarily the longest side over 2^q - 1).
+Quantizer dense_grid(const Box& box, double target_rms_rel, int* bits) {
+  // A grid of step s errs s / 2 in RMS (uniform error on three axes).
+  const double step = 2 * kDenseGridShare * target_rms_rel * box.diagonal;
+  *bits = kGabMinBits;
+  while (*bits < kGabMaxBits && static_cast<double>((int64_t{1} << *bits) - 1) * step < box.extent) ++*bits;
+  Quantizer q = Quantizer::for_box(box.lo, box.hi, *bits);
+  q.step = std::max(q.step, step);
+  return q;
+}
+
+}  // namespace
+
+Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* file, EncodeStats* stats) {
+  const auto start = std::chrono::steady_clock::now();
+  GAB_RETURN_IF_ERROR(check_options(options));
+  GAB_RETURN_IF_ERROR(validate_mesh(mesh, "mesh"));
+  const Box box = box_of(mesh);
+  const int bits = options.bits != 0 ? options.bits
+                                     : default_bits(box.diagonal > 0 ? box.extent / box.diagonal : 1.0,
+                                                    options.target_rms_rel, options.target_linf_rel);
+  const Quantizer quantizer = Quantizer::for_box(box.lo, box.hi, bits);
+  GAB_RETURN_IF_ERROR(encode_on_grid(mesh, options, box, quantizer, bits, file, stats));
+  // Dense regime: most vertices became anchors, so nearly every vertex pays
+  // for the grid; a coarser one, with a few more anchors, may cost less.
+  const bool dense = stats->anchors > kDenseAnchorFraction * mesh.num_vertices();
+  if (dense && options.bits == 0 && options.target_rms_rel > 0 && box.diagonal > 0) {
+    int coarse_bits = 0;
+    const Quantizer coarse = dense_grid(box, options.target_rms_rel, &coarse_bits);
+    if (coarse.step > quantizer.step) {
+      std::vector<uint8_t> other;
+      EncodeStats other_stats;
+      GAB_RETURN_IF_ERROR(encode_on_grid(mesh, options, box, coarse, coarse_bits, &other, &other_stats));
+      if (other_stats.target_met && other.size() < file->size()) {
+        *file = std::move(other);
+        *stats = std::move(other_stats);
+      }
+    }
+  }
+  stats->encode_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return Status::Ok();
+}
+
+}  // namespace gab

@@ -1,0 +1,88 @@
+// read_gab_info: the header and every frame, checked as the decoder checks
+// them (the same readers), decoding no geometry.
+#include <string>
+
+#include "anchors/anchor_chunk.h"
+#include "anchors/anchor_levels.h"
+#include "anchors/refinement_chunk.h"
+#include "connectivity/connectivity_section.h"
+#include "container/framing.h"
+#include "container/gab_header.h"
+#include "gab/codec/decoder.h"
+
+namespace gab {
+
+namespace {
+
+Status corrupt(const std::string& what) { return Status::Error(StatusCode::kParseError, what); }
+
+}  // namespace
+
+Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
+  *info = GabFileInfo();
+  ByteReader in(data, size);
+  GabHeader header;
+  GAB_RETURN_IF_ERROR(read_gab_header(&in, size, &header));
+  info->version = header.version;
+  info->num_vertices = header.num_vertices;
+  info->num_triangles = header.num_triangles;
+  info->bits = header.bits;
+  info->weight = header.weight;
+  info->geometry_only = header.geometry_only();
+  info->refined = header.refined();
+  info->levels = header.levels();
+  for (int c = 0; c < 3; ++c) info->box_min[c] = header.box_min[c];
+  info->step = header.step;
+  info->anchors = header.anchors;
+  info->chunks = header.chunks;
+  info->bytes = size;
+  const size_t before = in.offset();
+  ConnectivitySection connectivity;
+  GAB_RETURN_IF_ERROR(read_connectivity_section(&in, header, &connectivity));
+  info->connectivity_bytes = in.offset() - before;
+  std::vector<int32_t> level_anchors;  // level layout: anchors of chunks 1.. (from chunk 0's plan)
+  for (int32_t chunk = 0; chunk < header.chunks; ++chunk) {
+    const size_t at = in.offset();
+    const uint8_t* payload = nullptr;
+    size_t payload_size = 0;
+    const FrameRead frame = read_framed(&in, &payload, &payload_size);
+    if (frame == FrameRead::kTruncated) {
+      info->truncated = true;
+      break;
+    }
+    if (frame == FrameRead::kCorrupt) {
+      return corrupt("chunk " + std::to_string(chunk) + " is corrupt (checksum mismatch)");
+    }
+    const bool refinement = chunk == header.anchor_chunks();
+    uint64_t count = 0;
+    if (header.levels() && chunk == 0) {
+      LevelPlan plan;
+      size_t offset = 0;
+      const Status s = parse_level_plan(payload, payload_size, header.anchors, header.anchor_chunks(), &plan, &offset);
+      if (!s.ok()) return corrupt("chunk 0: " + s.message());
+      count = static_cast<uint64_t>(plan.spread);
+      level_anchors = plan.level_sizes();
+    } else if (header.levels() && !refinement) {
+      count = static_cast<uint64_t>(level_anchors[chunk - 1]);  // the plan made anchor_chunks - 1 levels
+    } else {
+      // The decoders' own rules for a chunk's head (the count), against the header.
+      ByteReader chunk_in(payload, payload_size);
+      const Status s = refinement ? read_refinement_count(&chunk_in, header.anchors)
+                                  : read_chunk_anchor_count(&chunk_in, static_cast<uint64_t>(header.anchors), &count);
+      if (!s.ok()) return corrupt("chunk " + std::to_string(chunk) + ": anchor count out of range");
+    }
+    if (refinement) {
+      info->refinement_bytes = in.offset() - at;
+      info->chunks_present = chunk + 1;
+      continue;
+    }
+    info->chunk_bytes.push_back(in.offset() - at);
+    info->chunk_anchors.push_back(static_cast<int32_t>(count));
+    info->chunks_present = chunk + 1;
+  }
+  if (!info->truncated && in.remaining() != 0) return corrupt("trailing bytes after the last chunk");
+  info->geometry_bytes = size - info->connectivity_bytes;
+  return Status::Ok();
+}
+
+}  // namespace gab

@@ -1,0 +1,306 @@
+// The .gab encoder and decoder together: round trips, levels of detail,
+// stopping rules, geometry-only files, odd meshes, option errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "common/gab_files.h"
+#include "gab/codec/decoder.h"
+#include "gab/codec/encoder.h"
+#include "gab/codec/gab_format.h"
+#include "gab/mesh/metrics.h"
+
+namespace gab {
+namespace {
+
+using testing_util::bumpy_torus;
+using testing_util::decode_or_die;
+using testing_util::encode_or_die;
+using testing_util::relative_rms;
+
+TEST(EncodeDecode, RoundTripKeepsConnectivityAndMatchesTheEncodersShape) {
+  const Mesh mesh = bumpy_torus(40, 20);
+  EncodeOptions options;
+  options.max_anchors = 80;
+  EncodeStats es;
+  const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
+  EXPECT_EQ(es.anchors, 80);
+  EXPECT_EQ(es.bytes, file.size());
+  EXPECT_EQ(es.geometry_bytes + es.connectivity_bytes, es.bytes);
+  EXPECT_GT(es.chunks, 2);
+  DecodeStats ds;
+  const Mesh out = decode_or_die(file, DecodeOptions(), &ds);
+  EXPECT_EQ(out.triangles, mesh.triangles);
+  ASSERT_EQ(out.num_vertices(), mesh.num_vertices());
+  EXPECT_EQ(ds.anchors, 80);
+  EXPECT_EQ(ds.chunks, es.chunks);
+  EXPECT_FALSE(ds.truncated);
+  EXPECT_NEAR(relative_rms(mesh, out), es.rms_rel, 1e-12);
+  EXPECT_LT(es.rms_rel, es.curve.front().rms_rel);  // the greedy steps helped
+  GabFileInfo info;
+  ASSERT_TRUE(read_gab_info(file.data(), file.size(), &info).ok());
+  EXPECT_EQ(info.chunk_anchors, es.chunk_anchors);
+  EXPECT_EQ(info.connectivity_bytes, es.connectivity_bytes);
+  EXPECT_EQ(info.chunks_present, es.chunks);
+}
+
+TEST(EncodeDecode, FilesAndShapesDoNotDependOnTheThreadCount) {
+  // The decoder must reproduce the encoder's shapes bit for bit, so the
+  // tree-parallel factorization may not change a single rounding: a file
+  // written with any thread count is the same bytes, decoded by any count
+  // to the same coordinates. A torus big enough to have parallel subtrees,
+  // an RMS target so refactorizations and updates both run.
+  const Mesh mesh = bumpy_torus(90, 45);
+  EncodeOptions options;
+  options.target_rms_rel = 2e-3;
+  options.batch_fraction = 0.3;
+  std::vector<uint8_t> files[3];
+  for (int32_t threads = 1; threads <= 3; ++threads) {
+    options.threads = threads;
+    EncodeStats es;
+    files[threads - 1] = encode_or_die(mesh, options, &es);
+    EXPECT_GT(es.chunks, 1);
+  }
+  EXPECT_EQ(files[1], files[0]);
+  EXPECT_EQ(files[2], files[0]);
+  std::vector<double> first;
+  for (int32_t threads = 1; threads <= 3; ++threads) {
+    DecodeOptions decode;
+    decode.threads = threads;
+    DecodeStats ds;
+    const Mesh out = decode_or_die(files[0], decode, &ds);
+    if (threads == 1) {
+      first = out.positions;
+    } else {
+      EXPECT_EQ(out.positions, first) << threads << " threads";
+    }
+  }
+}
+
+TEST(EncodeDecode, EveryChunkPrefixIsTheEncodersShapeAtThatAnchorCount) {
+  // In selection order a chunk prefix is a point of the greedy curve (the
+  // level layout's prefixes: level_layout_test.cpp).
+  const Mesh mesh = bumpy_torus(36, 18);
+  EncodeOptions options;
+  options.max_anchors = 120;
+  options.chunk_growth = 1.5;
+  options.layout = FileLayout::kSelectionOrder;
+  EncodeStats es;
+  const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
+  int32_t k = 0;
+  for (int32_t in_chunk : es.chunk_anchors) {
+    k += in_chunk;
+    DecodeOptions d;
+    d.max_anchors = k;
+    DecodeStats ds;
+    const Mesh out = decode_or_die(file, d, &ds);
+    EXPECT_EQ(ds.anchors, k);
+    bool found = false;
+    for (const GreedyStep& step : es.curve) {
+      if (step.anchors != k) continue;
+      found = true;
+      EXPECT_NEAR(relative_rms(mesh, out), step.rms_rel, 1e-12) << k << " anchors";
+    }
+    EXPECT_TRUE(found) << "no reconstruction at " << k << " anchors";
+  }
+}
+
+TEST(EncodeDecode, PartialChunkDecodesThatManyAnchorsAndChunkZeroWhole) {
+  const Mesh mesh = bumpy_torus(30, 16);
+  for (FileLayout layout : {FileLayout::kSelectionOrder, FileLayout::kLevels}) {
+    EncodeOptions options;
+    options.max_anchors = 60;
+    options.initial_anchors = 10;
+    options.layout = layout;
+    EncodeStats es;
+    const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
+    ASSERT_EQ(es.chunk_anchors[0], 10);
+    DecodeOptions d;
+    d.max_anchors = 3;  // below chunk 0: chunk 0 still comes whole
+    DecodeStats ds;
+    decode_or_die(file, d, &ds);
+    EXPECT_EQ(ds.anchors, 10);
+    d.max_anchors = 13;
+    decode_or_die(file, d, &ds);
+    EXPECT_EQ(ds.anchors, 13);
+    d.max_anchors = 1000;
+    decode_or_die(file, d, &ds);
+    EXPECT_EQ(ds.anchors, 60);
+  }
+}
+
+TEST(EncodeDecode, RmsAndLinfTargetsStopTheLoop) {
+  const Mesh mesh = bumpy_torus(40, 20);
+  EncodeOptions options;
+  options.target_rms_rel = 2e-3;
+  EncodeStats es;
+  encode_or_die(mesh, options, &es);
+  EXPECT_TRUE(es.target_met);
+  EXPECT_LE(es.rms_rel, 2e-3);
+  ASSERT_GE(es.curve.size(), 2u);
+  EXPECT_GT(es.curve[es.curve.size() - 2].rms_rel, 2e-3);  // it stopped at the first step that met it
+
+  EncodeOptions linf;
+  linf.target_linf_rel = 5e-3;
+  encode_or_die(mesh, linf, &es);
+  EXPECT_TRUE(es.target_met);
+  EXPECT_LE(es.linf_rel, 5e-3);
+}
+
+TEST(EncodeDecode, UnreachableTargetAnchorsEverythingAndSaysSo) {
+  const Mesh mesh = bumpy_torus(12, 8);
+  EncodeOptions options;
+  options.target_rms_rel = 1e-9;
+  options.bits = 6;  // the grid alone is coarser than the target
+  EncodeStats es;
+  const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
+  EXPECT_FALSE(es.target_met);
+  EXPECT_EQ(es.anchors, mesh.num_vertices());
+  DecodeStats ds;
+  const Mesh out = decode_or_die(file, DecodeOptions(), &ds);
+  // Every vertex anchored with w = 100: the shape is the grid positions to ~1/w^2.
+  EXPECT_NEAR(relative_rms(mesh, out), es.rms_rel, 1e-12);
+}
+
+TEST(EncodeDecode, GeometryOnlyNeedsTheRightConnectivity) {
+  const Mesh mesh = bumpy_torus(24, 12);
+  EncodeOptions options;
+  options.max_anchors = 40;
+  options.geometry_only = true;
+  EncodeStats es;
+  const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
+  EXPECT_EQ(es.connectivity_bytes, 8u);  // the hash only
+  Mesh out;
+  DecodeStats ds;
+  Status s = decode_mesh(file.data(), file.size(), DecodeOptions(), &out, &ds);
+  EXPECT_EQ(s.message(), "this file holds geometry only: give the mesh it was made from (--connectivity MESH)");
+  DecodeOptions d;
+  Mesh other = bumpy_torus(24, 12);
+  std::swap(other.triangles[0], other.triangles[1]);  // same counts, other connectivity
+  d.connectivity = &other;
+  s = decode_mesh(file.data(), file.size(), d, &out, &ds);
+  EXPECT_EQ(s.message(),
+            "the connectivity mesh is not the one this file was made from (288 vertices, 576 triangles; the file "
+            "expects 288 and 576, and a matching hash)");
+  d.connectivity = &mesh;
+  out = decode_or_die(file, d, &ds);
+  EXPECT_NEAR(relative_rms(mesh, out), es.rms_rel, 1e-12);
+}
+
+TEST(EncodeDecode, ComponentsAndIsolatedVerticesEachGetAnAnchor) {
+  Mesh mesh = bumpy_torus(16, 8);
+  const Mesh g = testing_util::grid(5, 4, 0.1);
+  const int32_t offset = mesh.num_vertices();
+  mesh.positions.insert(mesh.positions.end(), g.positions.begin(), g.positions.end());
+  for (int32_t i : g.triangles) mesh.triangles.push_back(i + offset);
+  mesh.positions.insert(mesh.positions.end(), {3.0, 3.0, 3.0, -2.0, 1.0, 0.5});  // two isolated vertices
+  EncodeOptions options;
+  options.max_anchors = 30;
+  options.initial_anchors = 1;
+  EncodeStats es;
+  const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
+  EXPECT_EQ(es.chunk_anchors[0], 4);  // one per component
+  DecodeStats ds;
+  const Mesh out = decode_or_die(file, DecodeOptions(), &ds);
+  // An isolated anchor sits exactly on its grid point, within one step.
+  const size_t iso = 3 * static_cast<size_t>(mesh.num_vertices() - 1);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(out.positions[iso + c], mesh.positions[iso + c], 6.0 / 4095);
+  EXPECT_NEAR(relative_rms(mesh, out), es.rms_rel, 1e-12);
+}
+
+TEST(EncodeDecode, FlatAndPointLikeMeshes) {
+  // z = 0 everywhere: every z index is 0, so the decoded z is exactly 0.
+  const Mesh flat = testing_util::grid(12, 9);
+  EncodeOptions options;
+  options.max_anchors = 20;
+  EncodeStats es;
+  std::vector<uint8_t> file = encode_or_die(flat, options, &es);
+  DecodeStats ds;
+  Mesh out = decode_or_die(file, DecodeOptions(), &ds);
+  for (int32_t v = 0; v < out.num_vertices(); ++v) EXPECT_EQ(out.positions[3 * static_cast<size_t>(v) + 2], 0.0);
+  // Every vertex at one point: a zero-size grid.
+  Mesh point = testing_util::grid(3, 3);
+  for (size_t i = 0; i < point.positions.size(); ++i) point.positions[i] = 1.5;
+  file = encode_or_die(point, options, &es);
+  out = decode_or_die(file, DecodeOptions(), &ds);
+  for (double x : out.positions) EXPECT_DOUBLE_EQ(x, 1.5);
+}
+
+TEST(EncodeDecode, DecoderRefusesAFactorOverItsLimit) {
+  const Mesh torus = testing_util::bumpy_torus(24, 12);
+  EncodeOptions eo;
+  eo.max_anchors = 30;
+  EncodeStats es;
+  const std::vector<uint8_t> file = testing_util::encode_or_die(torus, eo, &es);
+  DecodeOptions options;
+  options.max_factor_entries = 1000;  // the torus's factor stores several thousand
+  Mesh out;
+  DecodeStats ds;
+  const Status s = decode_mesh(file.data(), file.size(), options, &out, &ds);
+  EXPECT_EQ(s.code(), StatusCode::kResourceExhausted);  // the caller's limit, not a corrupt file
+  EXPECT_EQ(s.message(), "the factor would exceed 1000 entries");
+  options.max_factor_entries = DecodeOptions().max_factor_entries;
+  EXPECT_TRUE(decode_mesh(file.data(), file.size(), options, &out, &ds).ok());
+}
+
+TEST(EncodeDecode, OptionErrors) {
+  const Mesh mesh = bumpy_torus(8, 6);
+  std::vector<uint8_t> file;
+  EncodeStats es;
+  EncodeOptions none;
+  EXPECT_EQ(encode_mesh(mesh, none, &file, &es).message(),
+            "set a stopping rule: an anchor count, an RMS or an L-inf target");
+  EncodeOptions bits;
+  bits.max_anchors = 5;
+  bits.bits = 1;
+  EXPECT_EQ(encode_mesh(mesh, bits, &file, &es).message(), "bits must be in 2..24");
+  EncodeOptions weight;
+  weight.max_anchors = 5;
+  weight.weight = 0;
+  EXPECT_EQ(encode_mesh(mesh, weight, &file, &es).message(), "anchor weight must be positive and finite");
+  Mesh empty;
+  EXPECT_FALSE(encode_mesh(empty, bits, &file, &es).ok());
+}
+
+TEST(EncodeDecode, TheEncodersGridFollowsTheTarget) {
+  // bits = 0: q from the error target, finer for a tighter one, the grid's
+  // own RMS (step / 2 over the diagonal) inside the target; 12 for an anchor
+  // count alone.
+  const Mesh mesh = bumpy_torus(40, 20);
+  int previous_bits = 0;
+  for (double target : {3e-3, 3e-4}) {
+    EncodeOptions options;
+    options.target_rms_rel = target;
+    EncodeStats es;
+    const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
+    EXPECT_TRUE(es.target_met) << target;
+    EXPECT_GT(es.bits, previous_bits) << target;
+    previous_bits = es.bits;
+    GabFileInfo info;
+    ASSERT_TRUE(read_gab_info(file.data(), file.size(), &info).ok());
+    EXPECT_EQ(info.bits, es.bits);
+    EXPECT_LE(info.step / 2 / bounding_box_diagonal(mesh), target) << target;
+  }
+  EncodeOptions count;
+  count.max_anchors = 50;
+  EncodeStats es;
+  encode_or_die(mesh, count, &es);
+  EXPECT_EQ(es.bits, 12);
+}
+
+TEST(EncodeDecode, FinerGridsCostMoreBitsAndErrLess) {
+  const Mesh mesh = bumpy_torus(40, 20);
+  EncodeOptions coarse;
+  coarse.max_anchors = 200;
+  coarse.bits = 8;
+  EncodeOptions fine = coarse;
+  fine.bits = 14;
+  EncodeStats a, b;
+  encode_or_die(mesh, coarse, &a);
+  encode_or_die(mesh, fine, &b);
+  EXPECT_LT(a.geometry_bytes, b.geometry_bytes);
+  EXPECT_GT(a.rms_rel, b.rms_rel);
+}
+
+}  // namespace
+}  // namespace gab

@@ -1,0 +1,211 @@
+// Untrusted .gab files: every single-byte corruption and every truncation of
+// a small file gives a clear error or a valid (possibly coarser) mesh, never
+// a crash, a hang or a huge allocation (ASan/UBSan builds run this too).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "common/gab_files.h"
+#include "container/crc32.h"
+#include "container/framing.h"
+#include "container/gab_header.h"
+#include "gab/codec/decoder.h"
+#include "gab/codec/encoder.h"
+#include "gab/codec/gab_format.h"
+
+namespace gab {
+namespace {
+
+std::vector<uint8_t> small_file(bool geometry_only, bool refine = false,
+                                FileLayout layout = FileLayout::kLevels) {
+  EncodeOptions options;
+  options.layout = layout;
+  options.refine = refine;
+  options.max_anchors = 24;
+  options.initial_anchors = 4;
+  options.chunk_growth = 1.6;
+  options.geometry_only = geometry_only;
+  EncodeStats es;
+  return testing_util::encode_or_die(testing_util::bumpy_torus(10, 6), options, &es);
+}
+
+// A decode result is acceptable if it failed with a message, or produced a
+// mesh of the declared size with finite coordinates.
+void expect_clean(const std::vector<uint8_t>& bytes, const DecodeOptions& options, const std::string& what) {
+  Mesh out;
+  DecodeStats ds;
+  const Status s = decode_mesh(bytes.data(), bytes.size(), options, &out, &ds);
+  if (!s.ok()) {
+    EXPECT_FALSE(s.message().empty()) << what;
+    return;
+  }
+  ASSERT_EQ(out.positions.size(), 3 * static_cast<size_t>(ds.num_vertices)) << what;
+  for (double x : out.positions) ASSERT_TRUE(std::isfinite(x)) << what;
+  for (int32_t i : out.triangles) ASSERT_TRUE(i >= 0 && i < ds.num_vertices) << what;
+  GabFileInfo info;
+  static_cast<void>(read_gab_info(bytes.data(), bytes.size(), &info));  // must not crash either
+}
+
+TEST(FileSafety, EveryByteFlipIsAnErrorOrAValidMesh) {
+  const Mesh connectivity = testing_util::bumpy_torus(10, 6);
+  for (int variant : {0, 1, 2, 3, 4, 5}) {  // plain, geometry only, refined; levels, then selection order
+    const bool geometry_only = variant % 3 == 1;
+    const FileLayout layout = variant < 3 ? FileLayout::kLevels : FileLayout::kSelectionOrder;
+    const std::vector<uint8_t> file = small_file(geometry_only, variant % 3 == 2, layout);
+    DecodeOptions options;
+    options.connectivity = geometry_only ? &connectivity : nullptr;
+    int errors = 0;
+    for (size_t i = 0; i < file.size(); ++i) {
+      for (uint8_t mask : {0x01, 0x80, 0xFF}) {
+        std::vector<uint8_t> bad = file;
+        bad[i] ^= mask;
+        Mesh out;
+        DecodeStats ds;
+        if (decode_mesh(bad.data(), bad.size(), options, &out, &ds).ok()) {
+          // Checksums cover every byte but the frame lengths; a length
+          // grown past the end reads as a truncated file, never as a
+          // complete one.
+          EXPECT_TRUE(ds.truncated) << "byte " << i << " ^ " << int{mask};
+        } else {
+          ++errors;
+        }
+        expect_clean(bad, options, "byte " + std::to_string(i) + " ^ " + std::to_string(mask));
+      }
+    }
+    EXPECT_GT(errors, static_cast<int>(2 * file.size()));
+  }
+}
+
+TEST(FileSafety, EveryTruncationIsAnErrorOrTheCompleteChunks) {
+  for (int variant : {0, 1, 2, 3}) {  // plain, refined; levels, then selection order
+    const bool refine = variant % 2 == 1;
+    const std::vector<uint8_t> file =
+        small_file(false, refine, variant < 2 ? FileLayout::kLevels : FileLayout::kSelectionOrder);
+    GabFileInfo full;
+    ASSERT_TRUE(read_gab_info(file.data(), file.size(), &full).ok());
+    ASSERT_GE(full.chunks, 3);
+    ASSERT_EQ(full.refined, refine);
+    const size_t chunk0_end = file.size() - [&] {
+      size_t rest = full.refinement_bytes;
+      for (size_t c = 1; c < full.chunk_bytes.size(); ++c) rest += full.chunk_bytes[c];
+      return rest;
+    }();
+    for (size_t length = 0; length < file.size(); ++length) {
+      const std::vector<uint8_t> cut(file.begin(), file.begin() + length);
+      Mesh out;
+      DecodeStats ds;
+      const Status s = decode_mesh(cut.data(), cut.size(), DecodeOptions(), &out, &ds);
+      if (length < chunk0_end) {
+        EXPECT_FALSE(s.ok()) << length;
+      } else {
+        ASSERT_TRUE(s.ok()) << length << ": " << s.message();
+        EXPECT_TRUE(ds.truncated);
+        EXPECT_LT(ds.chunks, full.chunks);
+        EXPECT_EQ(out.num_vertices(), full.num_vertices);
+      }
+      expect_clean(cut, DecodeOptions(), "length " + std::to_string(length));
+    }
+  }
+}
+
+TEST(FileSafety, ForgedPayloadsWithValidChecksumsAreErrorsOrValidMeshes) {
+  // Checksums stop random damage; these bytes get past them: every payload
+  // byte of every chunk changed and its frame's CRC recomputed, so the
+  // decoders (a level plan, subsets, farthest-point levels, positions) see
+  // well-framed garbage.
+  for (FileLayout layout : {FileLayout::kLevels, FileLayout::kSelectionOrder}) {
+    const std::vector<uint8_t> file = small_file(false, true, layout);
+    GabFileInfo info;
+    ASSERT_TRUE(read_gab_info(file.data(), file.size(), &info).ok());
+    size_t at = kGabHeaderBytes + info.connectivity_bytes;  // the first chunk's frame
+    int errors = 0, forged = 0;
+    while (at + kGabFrameBytes <= file.size()) {
+      const size_t length = file[at] | file[at + 1] << 8 | file[at + 2] << 16 | static_cast<size_t>(file[at + 3]) << 24;
+      const size_t payload = at + kGabFrameBytes;
+      ASSERT_LE(payload + length, file.size());
+      for (size_t i = payload; i < payload + length; ++i) {
+        for (uint8_t mask : {0x01, 0x10, 0xFF}) {
+          std::vector<uint8_t> bad = file;
+          bad[i] ^= mask;
+          const uint32_t crc = crc32(bad.data() + payload, length);
+          for (int b = 0; b < 4; ++b) bad[at + 4 + b] = static_cast<uint8_t>(crc >> (8 * b));
+          Mesh out;
+          DecodeStats ds;
+          errors += decode_mesh(bad.data(), bad.size(), DecodeOptions(), &out, &ds).ok() ? 0 : 1;
+          ++forged;
+          expect_clean(bad, DecodeOptions(), "payload byte " + std::to_string(i) + " ^ " + std::to_string(mask));
+          DecodeOptions lod;
+          lod.max_anchors = 9;
+          expect_clean(bad, lod, "level of detail, payload byte " + std::to_string(i));
+        }
+      }
+      at = payload + length;
+    }
+    EXPECT_GT(forged, 300);
+    EXPECT_GT(errors, 0);
+  }
+}
+
+TEST(FileSafety, HeaderErrorsNameTheProblem) {
+  std::vector<uint8_t> file = small_file(false);
+  Mesh out;
+  DecodeStats ds;
+  auto message = [&](std::vector<uint8_t> bytes) {
+    return decode_mesh(bytes.data(), bytes.size(), DecodeOptions(), &out, &ds).message();
+  };
+  std::vector<uint8_t> bad = file;
+  bad[1] = 'X';
+  EXPECT_EQ(message(bad), "not a .gab file (bad magic)");
+  bad = file;
+  bad[8] = 9;
+  EXPECT_EQ(message(bad), "unsupported .gab version 9 (this build reads version 1)");
+  // A newer writer's flag, with the header's checksum made whole again: a
+  // well-formed file this build cannot read, not a corrupt one.
+  bad = file;
+  bad[9] |= 0x10;
+  const uint32_t crc = crc32(bad.data(), kGabHeaderBytes - 4);
+  for (int b = 0; b < 4; ++b) bad[kGabHeaderBytes - 4 + b] = static_cast<uint8_t>(crc >> (8 * b));
+  const Status unknown_flag = decode_mesh(bad.data(), bad.size(), DecodeOptions(), &out, &ds);
+  EXPECT_EQ(unknown_flag.code(), StatusCode::kUnsupported);
+  EXPECT_EQ(unknown_flag.message(), "unsupported .gab flags 0x" + std::string(file[9] & 4 ? "14" : "10") +
+                                        " 0x00 (this build knows 0x07 0x00)");
+  bad = file;
+  bad[8] = 9;
+  EXPECT_EQ(decode_mesh(bad.data(), bad.size(), DecodeOptions(), &out, &ds).code(), StatusCode::kUnsupported);
+  bad = file;
+  bad[20] ^= 1;  // inside the weight
+  EXPECT_EQ(message(bad), "bad .gab header: checksum mismatch (the header is corrupt)");
+  EXPECT_EQ(message(std::vector<uint8_t>(file.begin(), file.begin() + 30)),
+            "bad .gab header: file ends inside the header");
+  bad = file;
+  bad[kGabHeaderBytes + 9] ^= 4;  // inside the connectivity block
+  EXPECT_EQ(message(bad), "connectivity block is corrupt (checksum mismatch)");
+  bad = file;
+  bad[bad.size() - 1] ^= 4;  // inside the last chunk
+  GabFileInfo info;
+  ASSERT_TRUE(read_gab_info(file.data(), file.size(), &info).ok());
+  EXPECT_EQ(message(bad), "chunk " + std::to_string(info.chunks - 1) + " is corrupt (checksum mismatch)");
+  bad = file;
+  bad.push_back(0);
+  EXPECT_EQ(message(bad), "trailing bytes after the last chunk");
+}
+
+TEST(FileSafety, ForgedCountsCannotForceHugeAllocations) {
+  // n = 2^31 - 1 with a valid checksum: refused from the file size alone.
+  ByteWriter w;
+  GabHeader h;
+  h.num_vertices = 0x7FFFFFFF;
+  h.num_triangles = 1;
+  h.anchors = 1;
+  h.chunks = 1;
+  write_gab_header(h, &w);
+  std::vector<uint8_t> forged = w.take();
+  Mesh out;
+  DecodeStats ds;
+  EXPECT_EQ(decode_mesh(forged.data(), forged.size(), DecodeOptions(), &out, &ds).message(),
+            "bad .gab header: vertex count is implausible for a file of this size");
+}
+
+}  // namespace
+}  // namespace gab

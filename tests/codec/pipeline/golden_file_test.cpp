@@ -1,0 +1,149 @@
+// Golden .gab files pin the format: the fuzzer seeds in tests/fuzz/corpus/gab
+// (a leading options byte, then a version-1 file made by `gab compress` from
+// gab_fuzz::seed_torus) must keep decoding to the same shapes, and a fresh
+// encoding must keep writing the same header. A deliberate format change
+// bumps kGabVersion and regenerates the seeds (tests/fuzz/make_gab_seeds.sh);
+// a new flag adds seeds beside the old ones (bit 1: torus-refined; bit 2,
+// the level layout: torus-levels*).
+#include <dirent.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "common/gab_files.h"
+#include "fuzz/gab_fuzz_mesh.h"
+#include "gab/codec/decoder.h"
+#include "gab/codec/encoder.h"
+#include "gab/codec/gab_format.h"
+#include "gab/mesh/file_io.h"
+
+namespace gab {
+namespace {
+
+const std::string kCorpus = [] {
+  const std::string here = __FILE__;  // .../tests/codec/pipeline/golden_file_test.cpp
+  return here.substr(0, here.rfind("/codec/")) + "/fuzz/corpus/gab";
+}();
+
+std::vector<uint8_t> seed(const std::string& name) {
+  std::string bytes;
+  EXPECT_TRUE(read_file(kCorpus + "/" + name, &bytes).ok()) << name;
+  return std::vector<uint8_t>(bytes.begin() + (bytes.empty() ? 0 : 1), bytes.end());
+}
+
+struct Golden {
+  const char* name;
+  bool geometry_only;
+  int bits, anchors, chunks;
+  double rms_rel;  // of the decoded shape against seed_torus
+};
+
+TEST(GoldenFiles, SeedsDecodeToTheirPinnedShapes) {
+  const Mesh torus = gab_fuzz::seed_torus();
+  const Golden goldens[] = {
+      {"torus-full", false, 12, 20, 8, 0.0226},
+      {"torus-geometry-only", true, 8, 12, 5, 0.0355},
+      {"torus-coarse", false, 6, 37, 7, 0.00989},
+      {"torus-refined", false, 12, 16, 6, 0.0242},  // flag bit 1: the refinement applied
+      {"torus-levels", false, 12, 40, 5, 0.00830},  // flag bit 2: chunk 0 and 4 levels of 8, 8, 10, 10
+      {"torus-levels-refined", false, 12, 24, 5, 0.01487},  // bits 1 and 2
+  };
+  for (const Golden& g : goldens) {
+    const std::vector<uint8_t> file = seed(g.name);
+    ASSERT_GE(file.size(), kGabHeaderBytes) << g.name;
+    EXPECT_TRUE(std::equal(kGabMagic, kGabMagic + 8, file.begin())) << g.name;
+    EXPECT_EQ(file[8], 1) << g.name << ": format version";
+    const bool levels = std::string(g.name).find("levels") != std::string::npos;
+    EXPECT_EQ((file[9] & kGabFlagLevels) != 0, levels) << g.name;
+    DecodeOptions options;
+    options.connectivity = g.geometry_only ? &torus : nullptr;
+    Mesh out;
+    DecodeStats ds;
+    const Status s = decode_mesh(file.data(), file.size(), options, &out, &ds);
+    ASSERT_TRUE(s.ok()) << g.name << ": " << s.message();
+    EXPECT_EQ(out.triangles, torus.triangles) << g.name;
+    EXPECT_EQ(ds.bits, g.bits) << g.name;
+    EXPECT_EQ(ds.anchors, g.anchors) << g.name;
+    EXPECT_EQ(ds.chunks, g.chunks) << g.name;
+    EXPECT_NEAR(testing_util::relative_rms(torus, out), g.rms_rel, 5e-5) << g.name;
+  }
+}
+
+// A fresh encoding's header against a seed's, byte for byte.
+void expect_same_header(const std::vector<uint8_t>& fresh, const std::vector<uint8_t>& golden) {
+  ASSERT_GE(fresh.size(), kGabHeaderBytes);
+  ASSERT_GE(golden.size(), kGabHeaderBytes);
+  EXPECT_EQ(std::vector<uint8_t>(fresh.begin(), fresh.begin() + kGabHeaderBytes),
+            std::vector<uint8_t>(golden.begin(), golden.begin() + kGabHeaderBytes));
+}
+
+TEST(GoldenFiles, EncoderWritesThePinnedHeader) {
+  EncodeOptions options;
+  options.max_anchors = 20;
+  options.chunk_growth = 1.5;
+  options.layout = FileLayout::kSelectionOrder;  // what torus-full was written in
+  EncodeStats es;
+  const std::vector<uint8_t> fresh = testing_util::encode_or_die(gab_fuzz::seed_torus(), options, &es);
+  const std::vector<uint8_t> golden = seed("torus-full");
+  expect_same_header(fresh, golden);
+}
+
+TEST(GoldenFiles, EncoderWritesThePinnedLevelHeader) {
+  // torus-levels' options in make_gab_seeds.sh; the levels' sizes follow
+  // from the counts alone.
+  EncodeOptions options;
+  options.max_anchors = 40;
+  options.initial_anchors = 4;
+  options.chunk_growth = 1.5;
+  options.layout = FileLayout::kLevels;
+  EncodeStats es;
+  const std::vector<uint8_t> fresh = testing_util::encode_or_die(gab_fuzz::seed_torus(), options, &es);
+  EXPECT_EQ(es.chunk_anchors, (std::vector<int32_t>{4, 8, 8, 10, 10}));
+  const std::vector<uint8_t> golden = seed("torus-levels");
+  expect_same_header(fresh, golden);
+}
+
+TEST(GoldenFiles, LevelPrefixSeedDecodesItsFirstLevel) {
+  std::string bytes;
+  ASSERT_TRUE(read_file(kCorpus + "/torus-levels-prefix-10", &bytes).ok());
+  ASSERT_EQ(static_cast<uint8_t>(bytes[0]) >> 2, 10);
+  const std::vector<uint8_t> file(bytes.begin() + 1, bytes.end());
+  DecodeOptions options;
+  options.max_anchors = 10;  // chunk 0 (4) and 6 of level 1's 8
+  Mesh out;
+  DecodeStats ds;
+  ASSERT_TRUE(decode_mesh(file.data(), file.size(), options, &out, &ds).ok());
+  EXPECT_EQ(ds.anchors, 10);
+  EXPECT_EQ(ds.chunks, 2);
+  EXPECT_FALSE(ds.truncated);
+}
+
+// Every seed, with and without each option bit, through the fuzzer's checks.
+TEST(GoldenFiles, SeedsPassTheFuzzersChecks) {
+  const Mesh torus = gab_fuzz::seed_torus();
+  DIR* d = opendir(kCorpus.c_str());
+  ASSERT_NE(d, nullptr);
+  int seen = 0;
+  while (dirent* e = readdir(d)) {
+    if (e->d_name[0] == '.') continue;
+    ++seen;
+    std::string bytes;
+    ASSERT_TRUE(read_file(kCorpus + "/" + e->d_name, &bytes).ok());
+    const std::vector<uint8_t> file(bytes.begin() + 1, bytes.end());
+    DecodeOptions options;
+    options.connectivity = (bytes[0] & 1) ? &torus : nullptr;
+    options.max_anchors = (bytes[0] & 2) ? static_cast<uint8_t>(bytes[0]) >> 2 : -1;
+    Mesh out;
+    DecodeStats ds;
+    const Status s = decode_mesh(file.data(), file.size(), options, &out, &ds);
+    ASSERT_TRUE(s.ok()) << e->d_name << ": " << s.message();
+    for (double x : out.positions) ASSERT_TRUE(std::isfinite(x)) << e->d_name;
+  }
+  closedir(d);
+  EXPECT_GE(seen, 4);
+}
+
+}  // namespace
+}  // namespace gab
