@@ -102,7 +102,7 @@ TEST(SupernodesTest, AnalysisRowStructuresCoverTheTrueFactor) {
     for (const CscMatrix& a : symbolic_cases()) {
       AnalyzeOptions options;
       options.ordering = Ordering::kNatural;
-      options.relax = relax;
+      options.relax.enabled = relax;
       SymbolicFactor f;
       ASSERT_TRUE(analyze(a, options, &f).ok());
       const CscMatrix c = permute_symmetric_lower(a, f.perm);
