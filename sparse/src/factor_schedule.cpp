@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "gab/sparse/dense_kernels.h"
+#include "gab/sparse/update_matrix_stacks.h"
 
 namespace gab {
 namespace {
@@ -49,11 +49,9 @@ FactorSchedule plan_factor_schedule(const SymbolicFactor& f, int32_t threads,
   std::vector<int32_t>& child_next = plan.child_next;
   child_head.assign(ns, -1);
   child_next.assign(ns, -1);
-  std::vector<int32_t> depth(ns, 0);
   for (int32_t s = ns - 1; s >= 0; --s) {
     const int32_t parent = f.supernode_parent[s];
     if (parent == -1) continue;
-    depth[s] = depth[parent] + 1;
     child_next[s] = child_head[parent];
     child_head[parent] = s;
   }
@@ -103,7 +101,6 @@ FactorSchedule plan_factor_schedule(const SymbolicFactor& f, int32_t threads,
     }
   }
 
-  const int32_t groups = t == 1 ? 1 : t + 1;
   plan.group_ptr.assign(t + 2, 0);
   plan.group_work.assign(t + 1, 0.0);
   for (int32_t s = 0; s < ns; ++s) {
@@ -132,34 +129,10 @@ FactorSchedule plan_factor_schedule(const SymbolicFactor& f, int32_t threads,
     plan.top_rows_ptr[s + 1] = plan.top_rows_ptr[s] + f.rows(s) - f.cols(s) - plan.own_rows[s];
   }
 
-  // Each group's two stacks: even-depth updates grow up from the group's
-  // base, odd-depth ones down from its end; a front pops its children of the
-  // same group (the top of the other stack) after writing its own update.
-  // Children of other groups stay where their group left them. Simulate
-  // once for the peak, once more to place every update.
-  plan.update_offset.assign(ns, 0);
-  plan.stack_ptr.assign(t + 2, 0);
-  for (int32_t g = 0; g <= t; ++g) {
-    plan.stack_ptr[g + 1] = plan.stack_ptr[g];
-    if (g >= groups) continue;
-    for (int pass = 0; pass < 2; ++pass) {
-      const int64_t base = plan.stack_ptr[g], end = plan.stack_ptr[g + 1];
-      int64_t top[2] = {0, 0}, peak = 0;
-      for (int32_t i = plan.group_ptr[g]; i < plan.group_ptr[g + 1]; ++i) {
-        const int32_t s = plan.order[i];
-        const int64_t size = packed_lower_size(f.rows(s) - f.cols(s));
-        const int side = depth[s] & 1;
-        if (pass == 1) plan.update_offset[s] = side == 0 ? base + top[0] : end - top[1] - size;
-        top[side] += size;
-        peak = std::max(peak, top[0] + top[1]);
-        for (int32_t c = child_head[s]; c != -1; c = child_next[c]) {
-          if (owner[c] != g) continue;
-          top[1 - side] -= packed_lower_size(f.rows(c) - f.cols(c));
-        }
-      }
-      if (pass == 0) plan.stack_ptr[g + 1] = base + peak;
-    }
-  }
+  // Each group runs on its own pair of update stacks; a front pops its
+  // children of the same group, children of other groups stay where their
+  // group left them (update_matrix_stacks.h).
+  lay_out_update_stacks(f, plan.order, plan.group_ptr, &plan.stack_ptr, &plan.update_offset);
   return plan;
 }
 

@@ -2,6 +2,7 @@
 // brute-force symbolic elimination.
 #include <gtest/gtest.h>
 
+#include "gab/sparse/amd.h"
 #include "gab/sparse/column_counts.h"
 #include "gab/sparse/etree.h"
 #include "gab/sparse/supernodes.h"
@@ -88,7 +89,7 @@ TEST(ColumnCountsTest, MatchBruteForceStructure) {
   }
 }
 
-TEST(SupernodesTest, FundamentalOfAChainIsOneSupernode) {
+TEST(SupernodesTest, FundamentalJoinsAColumnOnlyWhereTheCountDropsByOne) {
   // Tridiagonal: etree is a chain, counts 2,2,...,2,1: no fundamental
   // merges except the last pair (count(j) = count(j+1) + 1 only there).
   const std::vector<int32_t> parent = {1, 2, 3, -1};
@@ -102,7 +103,7 @@ TEST(SupernodesTest, AnalysisRowStructuresCoverTheTrueFactor) {
     for (const CscMatrix& a : symbolic_cases()) {
       AnalyzeOptions options;
       options.ordering = Ordering::kNatural;
-      options.relax = relax;
+      options.relax.enabled = relax;
       SymbolicFactor f;
       ASSERT_TRUE(analyze(a, options, &f).ok());
       const CscMatrix c = permute_symmetric_lower(a, f.perm);
@@ -152,6 +153,29 @@ TEST(SymbolicTest, GivenOrderingMustBeAPermutation) {
   options.given_perm = {0, 1, 2, 3, 3};
   SymbolicFactor f;
   EXPECT_EQ(analyze(a, options, &f).message(), "given ordering is not a permutation of 0..4");
+}
+
+TEST(SymbolicTest, AmdOptionsReachTheOrdering) {
+  // Two rows coupled to every column: AMD postpones them as dense unless
+  // told that no row is dense, and the two orders differ.
+  const CscMatrix a = random_spd(200, 3.0, 5, /*dense_rows=*/2);
+  AmdOptions no_dense;
+  no_dense.dense = -1.0;
+  std::vector<int32_t> amd_default, amd_no_dense;
+  ASSERT_TRUE(amd_order(a, &amd_default).ok());
+  ASSERT_TRUE(amd_order(a, &amd_no_dense, no_dense).ok());
+  ASSERT_NE(amd_default, amd_no_dense);
+  // The analysis with options.amd orders as the given AMD order would.
+  for (const auto& amd : {std::make_pair(AmdOptions(), amd_default), std::make_pair(no_dense, amd_no_dense)}) {
+    AnalyzeOptions options;
+    options.amd = amd.first;
+    SymbolicFactor by_amd, by_given;
+    ASSERT_TRUE(analyze(a, options, &by_amd).ok());
+    options.ordering = Ordering::kGiven;
+    options.given_perm = amd.second;
+    ASSERT_TRUE(analyze(a, options, &by_given).ok());
+    EXPECT_EQ(by_amd.perm, by_given.perm);
+  }
 }
 
 }  // namespace

@@ -79,7 +79,7 @@ TEST(UpdateTest, PathStatisticsFollowTheEliminationTree) {
   const CscMatrix a = testing_util::grid_laplacian(30, 30);
   Cholesky chol;
   AnalyzeOptions options;
-  options.relax = false;  // fundamental supernodes: stored == true structure
+  options.relax.enabled = false;  // fundamental supernodes: stored == true structure
   ASSERT_TRUE(chol.analyze(a, options).ok());
   ASSERT_TRUE(chol.factorize(a).ok());
   const SymbolicFactor& f = chol.symbolic();

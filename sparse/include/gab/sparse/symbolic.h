@@ -1,12 +1,16 @@
-// Symbolic analysis for the supernodal Cholesky factor: the pipeline
-//   order -> permute -> etree -> postorder -> column counts -> supernodes
-//   (fundamental, then relaxed amalgamation) -> supernodal row structures
-// run once per nonzero pattern; numeric factorizations reuse it.
+// Symbolic analysis for the supernodal Cholesky factor, run once per nonzero
+// pattern (numeric factorizations reuse it). The pipeline, step by step as
+// analyze_structure calls it (symbolic.cpp):
+//   fill-reducing order -> elimination tree and its postorder -> permutation
+//   -> column counts -> fundamental supernodes -> relaxed amalgamation
+//   -> supernode tree -> row structures -> block layout -> update stack size
+// and then, in analyze, the assembly map.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
+#include "gab/sparse/amd.h"
 #include "gab/sparse/csc.h"
 #include "gab/sparse/etree.h"
 #include "gab/status.h"
@@ -19,16 +23,22 @@ enum class Ordering {
   kGiven,    // AnalyzeOptions::given_perm, then postorder
 };
 
+// Relaxed amalgamation (defaults as CHOLMOD's): merge a child supernode into
+// its parent when the merged supernode has at most cols[0] columns, or at
+// most cols[i] columns and a fraction of explicit zeros below zeros[i-1]
+// (i = 1, 2), or any size and zeros below zeros[2]. Only a child whose
+// columns end right before its parent's can merge (see supernodes.h).
+struct RelaxOptions {
+  bool enabled = true;  // false: fundamental supernodes (no explicit zeros)
+  int32_t cols[3] = {4, 16, 48};
+  double zeros[3] = {0.8, 0.1, 0.05};
+};
+
 struct AnalyzeOptions {
   Ordering ordering = Ordering::kAmd;
+  AmdOptions amd;                   // used when ordering == kAmd
   std::vector<int32_t> given_perm;  // used when ordering == kGiven
-  // Relaxed amalgamation (defaults as CHOLMOD's): merge a child supernode
-  // into its parent when the merged supernode has at most relax_cols[0]
-  // columns, or at most relax_cols[i] columns and a fraction of explicit
-  // zeros below relax_zeros[i-1], or any size and zeros below relax_zeros[2].
-  bool relax = true;
-  int32_t relax_cols[3] = {4, 16, 48};
-  double relax_zeros[3] = {0.8, 0.1, 0.05};
+  RelaxOptions relax;
   // Threads for numeric factorizations (Cholesky; see factor_schedule.h):
   // independent subtrees run concurrently. The factor is bit-identical for
   // every count; 1 runs everything on the caller's thread.

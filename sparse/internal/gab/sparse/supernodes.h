@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "gab/sparse/etree.h"
+#include "gab/sparse/symbolic.h"  // RelaxOptions
 
 namespace gab {
 
@@ -17,16 +17,17 @@ namespace gab {
 std::vector<int32_t> fundamental_supernodes(const std::vector<int32_t>& parent,
                                             const std::vector<int32_t>& counts);
 
-struct RelaxOptions {
-  int32_t cols[3] = {4, 16, 48};
-  double zeros[3] = {0.8, 0.1, 0.05};
-};
-
-// Relaxed amalgamation: merges a supernode into its parent when they are
-// contiguous (the child is the parent's last child) and the merged block is
-// small or adds few explicit zeros (see RelaxOptions). The merged row
-// structure is the parent's plus the child's columns. Returns the new
-// partition (first columns plus n). O(number of supernodes * alpha).
+// Relaxed amalgamation of a partition (first columns plus n) of a
+// postordered tree. Supernodes are visited from the last down; a child s
+// merges into the group holding its parent column only when that group
+// begins with supernode s + 1 (the columns stay contiguous), and then when the merged
+// block of k columns and m rows (the child's columns plus the group's rows)
+// meets options (RelaxOptions, symbolic.h) with z / (k m - k (k - 1) / 2)
+// as its fraction of explicit zeros, z counting the zeros of both parts plus
+// the child's columns lengthened to m rows. Top-down, a group that absorbed
+// its last child can go on absorbing that child's last child. counts are
+// read at each supernode's first column only. options.enabled is not read.
+// Returns the new partition. O(number of supernodes * alpha).
 std::vector<int32_t> relax_supernodes(const std::vector<int32_t>& first_col,
                                       const std::vector<int32_t>& parent,
                                       const std::vector<int32_t>& counts,

@@ -15,9 +15,10 @@
 
 namespace gab {
 
-// Workspace the updates need. The first update_workspace_zero_prefix()
-// doubles must be zero before the first update, and the ints must all be
-// -1; every update leaves them so.
+// Workspace the updates need. Before the first update, the first
+// update_workspace_zero_prefix() doubles must be zero and the ints all -1;
+// every update leaves that prefix zero and the ints' persistent marks -1
+// (the rest of both is scratch; update.cpp's Workspace and IntWorkspace).
 int64_t update_workspace_doubles(const SymbolicFactor& f);
 int64_t update_workspace_zero_prefix(const SymbolicFactor& f);
 int64_t update_workspace_ints(const SymbolicFactor& f);
