@@ -18,7 +18,7 @@ if [ -n "$missing" ]; then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y --no-install-recommends $missing
 fi
 
-# Real meshes shipped by libcgal-demo (DESIGN.md section 7); never committed.
+# Real meshes shipped by libcgal-demo; never committed to this repository.
 if [ ! -f data/meshes/camel.off ]; then
   mkdir -p data
   tar xzf /usr/share/doc/libcgal-dev/data.tar.gz -C data --strip-components=1 data/meshes

@@ -3,6 +3,8 @@
 
 #include <cmath>
 #include <cstdint>
+#include <random>
+#include <vector>
 
 #include "gab/mesh/mesh.h"
 
@@ -67,6 +69,24 @@ inline Mesh rough_torus(int n, int m, double amplitude) {
     state = state * 1664525u + 1013904223u;
     const double noise = amplitude * (static_cast<double>(state >> 8) / (1u << 24) - 0.5);
     for (int c = 0; c < 3; ++c) t.positions[3 * static_cast<size_t>(v) + c] *= 1.0 + noise;
+  }
+  return t;
+}
+
+// A random triangle soup for the connectivity tests: 1..max_count
+// triangles over n = min_n..max_n vertices with uniform indices (so
+// non-manifold edges and vertices, mixed orientations and isolated vertices
+// abound); `proper` leaves out triangles with a repeated vertex. *n gets n.
+inline std::vector<int32_t> random_soup(std::mt19937* rng, int32_t min_n, int32_t max_n, int32_t max_count,
+                                        bool proper, int32_t* n) {
+  *n = min_n + static_cast<int32_t>((*rng)() % static_cast<uint32_t>(max_n - min_n + 1));
+  const int32_t count = 1 + static_cast<int32_t>((*rng)() % static_cast<uint32_t>(max_count));
+  std::vector<int32_t> t;
+  while (static_cast<int32_t>(t.size()) < 3 * count) {
+    const int32_t a = static_cast<int32_t>((*rng)() % static_cast<uint32_t>(*n)),
+                  b = static_cast<int32_t>((*rng)() % static_cast<uint32_t>(*n)),
+                  c = static_cast<int32_t>((*rng)() % static_cast<uint32_t>(*n));
+    if (!proper || (a != b && b != c && a != c)) t.insert(t.end(), {a, b, c});
   }
   return t;
 }

@@ -160,10 +160,8 @@ TEST(ManifoldCutTest, DegenerateAndDuplicateTrianglesAreKept) {
 TEST(ManifoldCutTest, RandomSoupsHoldEveryInvariant) {
   std::mt19937 rng(7);
   for (int trial = 0; trial < 200; ++trial) {
-    const int32_t n = 3 + static_cast<int32_t>(rng() % 12);
-    const int32_t count = 1 + static_cast<int32_t>(rng() % 30);
-    std::vector<int32_t> t;
-    for (int32_t i = 0; i < 3 * count; ++i) t.push_back(static_cast<int32_t>(rng() % n));
+    int32_t n = 0;
+    const std::vector<int32_t> t = testing_util::random_soup(&rng, 3, 14, 30, false, &n);
     const ManifoldCut cut = cut_to_manifold(n, t);
     expect_valid_cut(n, t, cut);
     if (HasFailure()) return;

@@ -57,10 +57,8 @@ TEST(ValenceSectionTest, MeshesOfEveryKindRoundTrip) {
 TEST(ValenceSectionTest, RandomSoupsRoundTrip) {
   std::mt19937 rng(3);
   for (int trial = 0; trial < 300; ++trial) {
-    const int32_t n = 1 + static_cast<int32_t>(rng() % 20);
-    const int32_t count = 1 + static_cast<int32_t>(rng() % 40);
-    std::vector<int32_t> t;
-    for (int32_t i = 0; i < 3 * count; ++i) t.push_back(static_cast<int32_t>(rng() % n));
+    int32_t n = 0;
+    const std::vector<int32_t> t = testing_util::random_soup(&rng, 1, 20, 40, false, &n);
     expect_round_trip(n, t);
     if (HasFailure()) {
       ADD_FAILURE() << "trial " << trial;
