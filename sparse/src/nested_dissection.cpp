@@ -33,6 +33,8 @@ class Dissection {
     params_.initial_tries = options.initial_tries;
     params_.refine_passes = options.refine_passes;
     params_.refine_patience = options.refine_patience;
+    params_.candidates = options.candidates;
+    params_.trial_size = options.trial_size;
     ws_.grow(n);
   }
 

@@ -55,6 +55,8 @@ struct BisectParams {
   int32_t initial_tries = 6;
   int32_t refine_passes = 6;
   int32_t refine_patience = 80;
+  int32_t candidates = 4;
+  int32_t trial_size = 2000;
 };
 
 // The heaviest a side may be: (1 + imbalance) / 2 of the graph's weight.

@@ -118,6 +118,8 @@ class SeparatorRefiner {
  public:
   SeparatorRefiner(const Graph& g, const BisectParams& params, std::vector<uint8_t>* where)
       : g_(g), params_(params), where_(*where), max_side_(max_side_weight(g, params.imbalance)),
+        // Small graphs need few speculative moves to climb out of a local minimum.
+        patience_(static_cast<size_t>(std::min(params.refine_patience, std::max(20, g.n / 100)))),
         ext_(static_cast<size_t>(2) * g.n, 0), locked_(static_cast<size_t>(g.n), 0),
         heap_{GainHeap(g.n), GainHeap(g.n)} {
     weight_[0] = weight_[1] = weight_[2] = 0;
@@ -232,7 +234,7 @@ class SeparatorRefiner {
       if (now < best) {
         best = now;
         best_moves = moved_.size();
-      } else if (moved_.size() - best_moves > static_cast<size_t>(params_.refine_patience)) {
+      } else if (moved_.size() - best_moves > patience_) {
         break;
       }
     }
@@ -250,6 +252,7 @@ class SeparatorRefiner {
   const BisectParams& params_;
   std::vector<uint8_t>& where_;
   const int64_t max_side_;
+  const size_t patience_;  // moves without a new best before a pass gives up
   int64_t weight_[3];
   std::vector<int32_t> ext_;      // 2 per vertex: neighbour weight on side 0, side 1
   std::vector<uint8_t> locked_;   // moved in this pass

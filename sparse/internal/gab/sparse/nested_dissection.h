@@ -30,6 +30,10 @@ struct NestedDissectionOptions {
   // FM passes per level, and moves without improvement before a pass gives up.
   int32_t refine_passes = 6;
   int32_t refine_patience = 80;
+  // Coarsest separators carried up to the finest level with at most
+  // trial_size vertices, where the smallest goes on and the others are dropped.
+  int32_t candidates = 4;
+  int32_t trial_size = 2000;
   // Seed of the (self-contained, platform-independent) generator that orders
   // the matching's visits and picks seeds: the result depends on nothing else.
   uint64_t seed = 0x9E3779B97F4A7C15ull;
