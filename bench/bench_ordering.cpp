@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "bench_check.h"
+#include "bench_grid_mesh.h"
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/normal_matrix.h"
 #include "gab/mesh/off_io.h"
@@ -65,21 +66,6 @@ void report(const char* mesh, const char* method, const gab::CscMatrix& lower,
   std::printf("| %-11s | %-4s | %8.3f | %10.3fM | %9.3e | %8.3f |\n", mesh, method, order_seconds,
               f.nnz_L * 1e-6, f.flops, factor_seconds);
   std::fflush(stdout);
-}
-
-// Triangulated nx x ny grid as a mesh ("gridN" inputs): a known optimum, the
-// straight cut, to hold the separators against.
-gab::Mesh grid_mesh(int32_t nx, int32_t ny) {
-  gab::Mesh m;
-  for (int32_t y = 0; y < ny; ++y)
-    for (int32_t x = 0; x < nx; ++x) m.positions.insert(m.positions.end(), {double(x), double(y), 0.0});
-  for (int32_t y = 0; y + 1 < ny; ++y) {
-    for (int32_t x = 0; x + 1 < nx; ++x) {
-      const int32_t v = y * nx + x;
-      m.triangles.insert(m.triangles.end(), {v, v + 1, v + nx + 1, v, v + nx + 1, v + nx});
-    }
-  }
-  return m;
 }
 
 // The options, with the overrides the environment gives.
@@ -134,7 +120,7 @@ int main(int argc, char** argv) {
     gab::Mesh mesh;
     if (name.rfind("grid", 0) == 0) {
       const int32_t side = std::atoi(name.c_str() + 4);
-      mesh = grid_mesh(side, side);
+      mesh = gab_bench::grid_mesh(side, side);
     } else {
       const std::string path = std::string(GAB_SHARED_MESHES) + "/" + name + ".off";
       if (!std::ifstream(path)) {

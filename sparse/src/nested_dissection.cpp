@@ -28,13 +28,6 @@ class Dissection {
  public:
   Dissection(const NestedDissectionOptions& options, int32_t n, std::vector<int32_t>* perm)
       : options_(options), rng_(options.seed), perm_(*perm) {
-    params_.imbalance = options.imbalance;
-    params_.coarsest_size = options.coarsest_size;
-    params_.initial_tries = options.initial_tries;
-    params_.refine_passes = options.refine_passes;
-    params_.refine_patience = options.refine_patience;
-    params_.candidates = options.candidates;
-    params_.trial_size = options.trial_size;
     ws_.grow(n);
   }
 
@@ -49,7 +42,7 @@ class Dissection {
     if (g.n <= std::max<int32_t>(options_.leaf_size, 2)) return order_leaf(g, label, begin, roots);
 
     std::vector<uint8_t> where;
-    nd::find_separator(g, params_, &rng_, &ws_, &where);
+    nd::find_separator(g, options_, &rng_, &ws_, &where);
     std::vector<int32_t> side[3];
     for (int32_t v = 0; v < g.n; ++v) side[where[v]].push_back(v);
     // No proper separator (a clique, say), or one so lopsided that recursing
@@ -157,7 +150,6 @@ class Dissection {
   }
 
   const NestedDissectionOptions& options_;
-  nd::BisectParams params_;
   nd::Rng rng_;
   nd::Workspace ws_;
   std::vector<int32_t>& perm_;

@@ -25,7 +25,7 @@ struct Hierarchy {
   std::vector<std::vector<int32_t>> maps;
 };
 
-void build_hierarchy(const Graph& g, const BisectParams& params, Rng* rng, Workspace* ws, Hierarchy* h) {
+void build_hierarchy(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws, Hierarchy* h) {
   const int32_t target = std::max(2, params.coarsest_size);
   // Coarse vertices heavier than this could not sit on a side of a balanced split.
   const int64_t max_vertex_weight =
@@ -49,7 +49,7 @@ const Graph& level(const Graph& g, const Hierarchy& h, size_t k) { return k == 0
 
 // Projects `where` from level k + 1 to level k and refines it there, for
 // k = from - 1 down to to (levels numbered as level()).
-void uncoarsen(const Graph& g, const Hierarchy& h, size_t from, size_t to, const BisectParams& params,
+void uncoarsen(const Graph& g, const Hierarchy& h, size_t from, size_t to, const NestedDissectionOptions& params,
                std::vector<uint8_t>* where, std::vector<uint8_t>* scratch) {
   for (size_t k = from; k-- > to;) {
     const Graph& finer = level(g, h, k);
@@ -62,7 +62,7 @@ void uncoarsen(const Graph& g, const Hierarchy& h, size_t from, size_t to, const
 }
 
 // Weight beyond the side bound, then separator weight: smaller is better.
-std::pair<int64_t, int64_t> cost(const Graph& g, const BisectParams& params, const std::vector<uint8_t>& where) {
+std::pair<int64_t, int64_t> cost(const Graph& g, const NestedDissectionOptions& params, const std::vector<uint8_t>& where) {
   int64_t weight[3] = {0, 0, 0};
   for (int32_t v = 0; v < g.n; ++v) weight[where[v]] += g.vw[v];
   const int64_t excess = std::max<int64_t>(0, std::max(weight[0], weight[1]) - max_side_weight(g, params.imbalance));
@@ -71,7 +71,7 @@ std::pair<int64_t, int64_t> cost(const Graph& g, const BisectParams& params, con
 
 }  // namespace
 
-void find_separator(const Graph& g, const BisectParams& params, Rng* rng, Workspace* ws,
+void find_separator(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws,
                     std::vector<uint8_t>* where) {
   Hierarchy h;
   build_hierarchy(g, params, rng, ws, &h);

@@ -50,40 +50,49 @@ void coarsen(const Graph& fine, int64_t max_vertex_weight, Rng* rng, Workspace* 
 
   // Contract: coarse vertex c's list is the union of its fine vertices' lists,
   // parallel edges merged (weights summed) through slot[], self loops dropped.
+  // Raw pointers: the compiler cannot keep vector internals in registers
+  // across the stores otherwise, and this loop is most of the coarsening.
   coarse->n = nc;
-  coarse->xadj.assign(static_cast<size_t>(nc) + 1, 0);
-  coarse->adj.clear();
-  coarse->adjw.clear();
-  coarse->adj.reserve(fine.adj.size());
-  coarse->adjw.reserve(fine.adj.size());
+  coarse->xadj.resize(static_cast<size_t>(nc) + 1);
+  coarse->adj.resize(fine.adj.size());  // contraction never adds entries
+  coarse->adjw.resize(fine.adj.size());
   coarse->vw.assign(static_cast<size_t>(nc), 0);
   coarse->total_weight = fine.total_weight;
-  std::vector<int32_t>& slot = ws->slot;
-  int32_t c = 0;
+  const int32_t* xadj = fine.xadj.data();
+  const int32_t* adj = fine.adj.data();
+  const int32_t* adjw = fine.adjw.data();
+  const int32_t* to_coarse = fine_to_coarse->data();
+  int32_t* cadj = coarse->adj.data();
+  int32_t* cadjw = coarse->adjw.data();
+  int32_t* slot = ws->slot.data();
+  int32_t q = 0, c = 0;
+  coarse->xadj[0] = 0;
   for (int32_t v = 0; v < n; ++v) {
-    if ((*fine_to_coarse)[v] != c) continue;  // v is the second of its pair
-    const int32_t row_start = static_cast<int32_t>(coarse->adj.size());
+    if (to_coarse[v] != c) continue;  // v is the second of its pair
+    const int32_t row_start = q;
     const int32_t pair[2] = {v, match[v]};
     const int32_t members = match[v] == v ? 1 : 2;
     for (int32_t m = 0; m < members; ++m) {
       const int32_t x = pair[m];
       coarse->vw[c] += fine.vw[x];
-      for (int32_t p = fine.xadj[x]; p < fine.xadj[x + 1]; ++p) {
-        const int32_t cu = (*fine_to_coarse)[fine.adj[p]];
+      for (int32_t p = xadj[x]; p < xadj[x + 1]; ++p) {
+        const int32_t cu = to_coarse[adj[p]];
         if (cu == c) continue;
-        if (slot[cu] < 0) {
-          slot[cu] = static_cast<int32_t>(coarse->adj.size());
-          coarse->adj.push_back(cu);
-          coarse->adjw.push_back(fine.adjw[p]);
+        const int32_t s = slot[cu];
+        if (s < 0) {
+          slot[cu] = q;
+          cadj[q] = cu;
+          cadjw[q++] = adjw[p];
         } else {
-          coarse->adjw[slot[cu]] += fine.adjw[p];
+          cadjw[s] += adjw[p];
         }
       }
     }
-    for (size_t q = row_start; q < coarse->adj.size(); ++q) slot[coarse->adj[q]] = -1;
-    coarse->xadj[c + 1] = static_cast<int32_t>(coarse->adj.size());
-    ++c;
+    for (int32_t r = row_start; r < q; ++r) slot[cadj[r]] = -1;
+    coarse->xadj[++c] = q;
   }
+  coarse->adj.resize(static_cast<size_t>(q));
+  coarse->adjw.resize(static_cast<size_t>(q));
 }
 
 }  // namespace nd

@@ -12,6 +12,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "gab/sparse/nested_dissection.h"
+
 namespace gab {
 namespace nd {
 
@@ -48,17 +50,6 @@ class Rng {
   uint64_t state_;
 };
 
-// Tuning of one bisection (from NestedDissectionOptions).
-struct BisectParams {
-  double imbalance = 0.2;
-  int32_t coarsest_size = 120;
-  int32_t initial_tries = 6;
-  int32_t refine_passes = 6;
-  int32_t refine_patience = 80;
-  int32_t candidates = 4;
-  int32_t trial_size = 2000;
-};
-
 // The heaviest a side may be: (1 + imbalance) / 2 of the graph's weight.
 int64_t max_side_weight(const Graph& g, double imbalance);
 
@@ -90,19 +81,19 @@ void coarsen(const Graph& fine, int64_t max_vertex_weight, Rng* rng, Workspace* 
 // A vertex separator of a small graph: regions grown breadth-first from
 // several seeds to half the weight, their boundary taken as separator,
 // refined; the best is kept. where[v] receives a Side.
-void initial_separator(const Graph& g, const BisectParams& params, Rng* rng, Workspace* ws,
+void initial_separator(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws,
                        std::vector<uint8_t>* where);
 
 // Improves the vertex separator `where` of g in place by FM passes: moves
 // separator vertices to a side (pulling their neighbours on the other side
 // into the separator) while it shrinks, keeping both sides under
 // max_side_weight, undoing each pass's moves past its best point.
-void refine_separator(const Graph& g, const BisectParams& params, std::vector<uint8_t>* where);
+void refine_separator(const Graph& g, const NestedDissectionOptions& params, std::vector<uint8_t>* where);
 
 // A small, balanced vertex separator of a connected graph, multilevel:
 // coarsen, initial_separator on the coarsest graph, then project back level
 // by level, refining at each.
-void find_separator(const Graph& g, const BisectParams& params, Rng* rng, Workspace* ws,
+void find_separator(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws,
                     std::vector<uint8_t>* where);
 
 }  // namespace nd

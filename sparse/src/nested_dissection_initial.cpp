@@ -89,7 +89,7 @@ int32_t far_vertex(const Graph& g, int32_t start, Workspace* ws) {
 
 }  // namespace
 
-void initial_separator(const Graph& g, const BisectParams& params, Rng* rng, Workspace* ws,
+void initial_separator(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws,
                        std::vector<uint8_t>* where) {
   where->assign(static_cast<size_t>(g.n), kRight);
   if (g.n < 2) return;

@@ -116,7 +116,7 @@ struct Cost {
 
 class SeparatorRefiner {
  public:
-  SeparatorRefiner(const Graph& g, const BisectParams& params, std::vector<uint8_t>* where)
+  SeparatorRefiner(const Graph& g, const NestedDissectionOptions& params, std::vector<uint8_t>* where)
       : g_(g), params_(params), where_(*where), max_side_(max_side_weight(g, params.imbalance)),
         // Small graphs need few speculative moves to climb out of a local minimum.
         patience_(static_cast<size_t>(std::min(params.refine_patience, std::max(20, g.n / 100)))),
@@ -249,7 +249,7 @@ class SeparatorRefiner {
   }
 
   const Graph& g_;
-  const BisectParams& params_;
+  const NestedDissectionOptions& params_;
   std::vector<uint8_t>& where_;
   const int64_t max_side_;
   const size_t patience_;  // moves without a new best before a pass gives up
@@ -264,7 +264,7 @@ class SeparatorRefiner {
 
 }  // namespace
 
-void refine_separator(const Graph& g, const BisectParams& params, std::vector<uint8_t>* where) {
+void refine_separator(const Graph& g, const NestedDissectionOptions& params, std::vector<uint8_t>* where) {
   SeparatorRefiner(g, params, where).run();
 }
 
