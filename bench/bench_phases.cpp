@@ -9,6 +9,7 @@
 #include <string>
 
 #include "bench_check.h"
+#include "bench_grid_mesh.h"
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/normal_matrix.h"
 #include "gab/mesh/off_io.h"
@@ -22,20 +23,6 @@ struct System {
   std::vector<double> rhs;
 };
 
-// Triangulated nx x ny grid as a mesh, so it goes through the same assembly.
-gab::Mesh grid_mesh(int32_t nx, int32_t ny) {
-  gab::Mesh m;
-  for (int32_t y = 0; y < ny; ++y)
-    for (int32_t x = 0; x < nx; ++x) m.positions.insert(m.positions.end(), {double(x), double(y), 0.0});
-  for (int32_t y = 0; y + 1 < ny; ++y) {
-    for (int32_t x = 0; x + 1 < nx; ++x) {
-      const int32_t v = y * nx + x;
-      m.triangles.insert(m.triangles.end(), {v, v + 1, v + nx + 1, v, v + nx + 1, v + nx});
-    }
-  }
-  return m;
-}
-
 const System* load(const std::string& name) {
   static std::map<std::string, System> cache;
   auto it = cache.find(name);
@@ -43,7 +30,7 @@ const System* load(const std::string& name) {
   gab::Mesh mesh;
   if (name.rfind("grid", 0) == 0) {
     const int32_t side = std::stoi(name.substr(4));
-    mesh = grid_mesh(side, side);
+    mesh = gab_bench::grid_mesh(side, side);
   } else {
     const std::string path = std::string(GAB_SHARED_MESHES) + "/" + name + ".off";
     if (!std::ifstream(path) || !gab::read_off(path, &mesh).ok()) return nullptr;

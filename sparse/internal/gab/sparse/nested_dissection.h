@@ -1,0 +1,75 @@
+// Nested-dissection ordering (George 1973) by multilevel vertex separators
+// (Karypis & Kumar 1998; Ashcraft & Liu's FM refinement of separators), with
+// the separator tree it builds kept as an explicit object: the update-cost
+// bound of issue 19 speaks of these separators.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gab/sparse/csc.h"
+#include "gab/status.h"
+
+namespace gab {
+
+struct NestedDissectionOptions {
+  // Subgraphs with at most this many vertices are not dissected further but
+  // ordered by AMD (amd.h). Measured on the mesh matrices: 200 and 1200 give
+  // flops within a few percent of 600; each halving costs another level of
+  // bisections.
+  int32_t leaf_size = 600;
+  // A row with more than max(16, dense * sqrt(n)) off-diagonal entries is
+  // removed before dissection and ordered last, as AmdOptions::dense does.
+  // Negative: no row is dense.
+  double dense = 10.0;
+  // Each side of a separator may weigh up to (1 + imbalance) / 2 of the
+  // vertices being dissected.
+  double imbalance = 0.2;
+  // Coarsening stops at this many vertices (or when matching stalls).
+  int32_t coarsest_size = 120;
+  // Separators grown on the coarsest graph from different seeds; the best is kept.
+  int32_t initial_tries = 6;
+  // FM passes per level, and moves without improvement before a pass gives up.
+  int32_t refine_passes = 6;
+  int32_t refine_patience = 80;
+  // Coarsest separators carried up to the finest level with at most
+  // trial_size vertices, where the smallest goes on and the others are dropped.
+  int32_t candidates = 4;
+  int32_t trial_size = 2000;
+  // Seed of the (self-contained, platform-independent) generator that orders
+  // the matching's visits and picks seeds: the result depends on nothing else.
+  uint64_t seed = 0x9E3779B97F4A7C15ull;
+};
+
+// The dissection as a tree. Node s owns the pivots perm[first .. first + size);
+// its subtree (s and all its descendants) owns perm[subtree_first .. first + size),
+// a contiguous range. A separator node's columns separate its children: no
+// edge of the graph joins the subtrees of two different children. A leaf was
+// ordered by AMD as one subgraph. Nodes are stored children before parents.
+struct SeparatorTree {
+  struct Node {
+    int32_t first = 0;
+    int32_t size = 0;
+    int32_t subtree_first = 0;
+    int32_t parent = -1;  // -1 for a root (one root per connected component,
+                          // or one root holding the dense rows)
+    bool leaf = false;
+  };
+  std::vector<Node> nodes;
+  std::vector<int32_t> child_ptr;  // nodes.size() + 1 offsets into children
+  std::vector<int32_t> children;   // in increasing column order
+};
+
+// Orders a symmetric matrix given by its lower triangle (only the pattern is
+// read; the diagonal is optional; entries above the diagonal are an error) by
+// nested dissection of its graph symmetric_graph(lower): each connected
+// component separately; a separator is ordered after both sides, recursively;
+// small pieces by AMD; dense rows last. On success perm[k] is the original
+// index of the k-th pivot (as amd_order) and *tree, when given, holds the
+// dissection. Deterministic: the same input and options give the same perm
+// on every machine. Time about O(nnz(A) log n); memory O(nnz(A) + n).
+Status nested_dissection_order(const CscMatrix& lower, std::vector<int32_t>* perm,
+                               const NestedDissectionOptions& options = {},
+                               SeparatorTree* tree = nullptr);
+
+}  // namespace gab

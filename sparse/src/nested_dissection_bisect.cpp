@@ -1,0 +1,101 @@
+// One vertex separator by the multilevel scheme (Karypis & Kumar, "A fast and
+// high quality multilevel scheme for partitioning irregular graphs", SIAM J.
+// Sci. Comput. 20(1), 1998, sec. 2): coarsen by heavy-edge matching until the
+// graph is small, separate the coarsest graph, then carry the separator back
+// up level by level (a coarse vertex's side is both its fine vertices' side)
+// and refine it at every level, where the finer graph has room to thin it.
+//
+// Which cut the coarsest graph picks (around which limb, along which axis)
+// decides most of the final separator, and the coarsest graph's weights judge
+// that choice poorly: several candidates are carried up to a middle level,
+// small enough to be cheap and fine enough to judge by, and the best one goes
+// on (the idea of METIS's multiple separators, Karypis & Kumar sec. 6).
+#include <algorithm>
+
+#include "nested_dissection_graph.h"
+
+namespace gab {
+namespace nd {
+namespace {
+
+// The hierarchy: levels[0] is g's first coarsening; maps[k] takes level k-1
+// (g for k = 0) to level k.
+struct Hierarchy {
+  std::vector<Graph> levels;
+  std::vector<std::vector<int32_t>> maps;
+};
+
+void build_hierarchy(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws, Hierarchy* h) {
+  const int32_t target = std::max(2, params.coarsest_size);
+  // Coarse vertices heavier than this could not sit on a side of a balanced split.
+  const int64_t max_vertex_weight =
+      std::max<int64_t>(1, static_cast<int64_t>(1.5 * static_cast<double>(g.total_weight) / target));
+  const Graph* fine = &g;
+  while (fine->n > target) {
+    Graph coarse;
+    std::vector<int32_t> map;
+    coarsen(*fine, max_vertex_weight, rng, ws, &map, &coarse);
+    // A matching that barely shrinks the graph (stars, heavy vertices) ends the coarsening.
+    const bool stalled = coarse.n > fine->n - fine->n / 20;
+    if (coarse.n == fine->n) break;
+    h->levels.push_back(std::move(coarse));
+    h->maps.push_back(std::move(map));
+    fine = &h->levels.back();
+    if (stalled) break;
+  }
+}
+
+const Graph& level(const Graph& g, const Hierarchy& h, size_t k) { return k == 0 ? g : h.levels[k - 1]; }
+
+// Projects `where` from level k + 1 to level k and refines it there, for
+// k = from - 1 down to to (levels numbered as level()).
+void uncoarsen(const Graph& g, const Hierarchy& h, size_t from, size_t to, const NestedDissectionOptions& params,
+               std::vector<uint8_t>* where, std::vector<uint8_t>* scratch) {
+  for (size_t k = from; k-- > to;) {
+    const Graph& finer = level(g, h, k);
+    const std::vector<int32_t>& map = h.maps[k];
+    scratch->resize(static_cast<size_t>(finer.n));
+    for (int32_t v = 0; v < finer.n; ++v) (*scratch)[v] = (*where)[map[v]];
+    where->swap(*scratch);
+    refine_separator(finer, params, where);
+  }
+}
+
+// Weight beyond the side bound, then separator weight: smaller is better.
+std::pair<int64_t, int64_t> cost(const Graph& g, const NestedDissectionOptions& params, const std::vector<uint8_t>& where) {
+  int64_t weight[3] = {0, 0, 0};
+  for (int32_t v = 0; v < g.n; ++v) weight[where[v]] += g.vw[v];
+  const int64_t excess = std::max<int64_t>(0, std::max(weight[0], weight[1]) - max_side_weight(g, params.imbalance));
+  return {excess, weight[2]};
+}
+
+}  // namespace
+
+void find_separator(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws,
+                    std::vector<uint8_t>* where) {
+  Hierarchy h;
+  build_hierarchy(g, params, rng, ws, &h);
+  const size_t coarsest = h.levels.size();
+  // The judging level: the finest with at most trial_size vertices.
+  size_t judge = coarsest;
+  while (judge > 0 && level(g, h, judge - 1).n <= params.trial_size) --judge;
+  // Pieces already this small take their first candidate: their separators weigh little in the factor.
+  const int32_t candidates = judge > 0 && judge < coarsest ? std::max(1, params.candidates) : 1;
+
+  std::vector<uint8_t> best, candidate, scratch;
+  std::pair<int64_t, int64_t> best_cost{-1, 0};
+  for (int32_t c = 0; c < candidates; ++c) {
+    initial_separator(level(g, h, coarsest), params, rng, ws, &candidate);
+    uncoarsen(g, h, coarsest, judge, params, &candidate, &scratch);
+    const std::pair<int64_t, int64_t> candidate_cost = cost(level(g, h, judge), params, candidate);
+    if (best_cost.first < 0 || candidate_cost < best_cost) {
+      best_cost = candidate_cost;
+      best.swap(candidate);
+    }
+  }
+  uncoarsen(g, h, judge, 0, params, &best, &scratch);
+  where->swap(best);
+}
+
+}  // namespace nd
+}  // namespace gab

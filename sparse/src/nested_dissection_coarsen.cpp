@@ -1,0 +1,99 @@
+// Coarsening by heavy-edge matching (Karypis & Kumar, "A fast and high
+// quality multilevel scheme for partitioning irregular graphs", SIAM J. Sci.
+// Comput. 20(1), 1998, sec. 3.1 and 5.1): visit the vertices in random order;
+// match each unmatched vertex with the unmatched neighbour joined by the
+// heaviest edge; contract each pair. Heavy edges hidden inside coarse vertices
+// are edges no coarse separator can cut, so the coarse graph's cuts are the
+// fine graph's expensive ones.
+#include <algorithm>
+
+#include "nested_dissection_graph.h"
+
+namespace gab {
+namespace nd {
+
+void coarsen(const Graph& fine, int64_t max_vertex_weight, Rng* rng, Workspace* ws,
+             std::vector<int32_t>* fine_to_coarse, Graph* coarse) {
+  const int32_t n = fine.n;
+  // Random visiting order (Fisher-Yates with our own generator: reproducible).
+  std::vector<int32_t>& order = ws->queue;
+  for (int32_t v = 0; v < n; ++v) order[v] = v;
+  for (int32_t k = n - 1; k > 0; --k) std::swap(order[k], order[rng->below(k + 1)]);
+
+  std::vector<int32_t>& match = ws->mark;
+  std::fill(match.begin(), match.begin() + n, -1);
+  for (int32_t k = 0; k < n; ++k) {
+    const int32_t v = order[k];
+    if (match[v] >= 0) continue;
+    int32_t best = v, best_weight = -1;
+    for (int32_t p = fine.xadj[v]; p < fine.xadj[v + 1]; ++p) {
+      const int32_t u = fine.adj[p];
+      if (match[u] >= 0 || fine.adjw[p] <= best_weight) continue;
+      // Heavy coarse vertices would make a balanced coarse separator impossible.
+      if (fine.vw[v] + fine.vw[u] > max_vertex_weight) continue;
+      best = u;
+      best_weight = fine.adjw[p];
+    }
+    match[v] = best;
+    match[best] = v;
+  }
+
+  // Coarse vertices numbered in order of their smaller fine vertex.
+  fine_to_coarse->assign(static_cast<size_t>(n), -1);
+  int32_t nc = 0;
+  for (int32_t v = 0; v < n; ++v) {
+    if ((*fine_to_coarse)[v] >= 0) continue;
+    (*fine_to_coarse)[v] = nc;
+    (*fine_to_coarse)[match[v]] = nc;
+    ++nc;
+  }
+
+  // Contract: coarse vertex c's list is the union of its fine vertices' lists,
+  // parallel edges merged (weights summed) through slot[], self loops dropped.
+  // Raw pointers: the compiler cannot keep vector internals in registers
+  // across the stores otherwise, and this loop is most of the coarsening.
+  coarse->n = nc;
+  coarse->xadj.resize(static_cast<size_t>(nc) + 1);
+  coarse->adj.resize(fine.adj.size());  // contraction never adds entries
+  coarse->adjw.resize(fine.adj.size());
+  coarse->vw.assign(static_cast<size_t>(nc), 0);
+  coarse->total_weight = fine.total_weight;
+  const int32_t* xadj = fine.xadj.data();
+  const int32_t* adj = fine.adj.data();
+  const int32_t* adjw = fine.adjw.data();
+  const int32_t* to_coarse = fine_to_coarse->data();
+  int32_t* cadj = coarse->adj.data();
+  int32_t* cadjw = coarse->adjw.data();
+  int32_t* slot = ws->slot.data();
+  int32_t q = 0, c = 0;
+  coarse->xadj[0] = 0;
+  for (int32_t v = 0; v < n; ++v) {
+    if (to_coarse[v] != c) continue;  // v is the second of its pair
+    const int32_t row_start = q;
+    const int32_t pair[2] = {v, match[v]};
+    const int32_t members = match[v] == v ? 1 : 2;
+    for (int32_t m = 0; m < members; ++m) {
+      const int32_t x = pair[m];
+      coarse->vw[c] += fine.vw[x];
+      for (int32_t p = xadj[x]; p < xadj[x + 1]; ++p) {
+        const int32_t cu = to_coarse[adj[p]];
+        if (cu == c) continue;
+        const int32_t s = slot[cu];
+        if (s < 0) {
+          slot[cu] = q;
+          cadj[q] = cu;
+          cadjw[q++] = adjw[p];
+        } else {
+          cadjw[s] += adjw[p];
+        }
+      }
+    }
+    for (int32_t r = row_start; r < q; ++r) slot[cadj[r]] = -1;
+    coarse->xadj[++c] = q;
+  }
+  coarse->adj.resize(static_cast<size_t>(q));
+  coarse->adjw.resize(static_cast<size_t>(q));
+}
+
+}  // namespace nd
+}  // namespace gab

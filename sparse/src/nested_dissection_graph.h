@@ -1,0 +1,100 @@
+// The pieces of the nested-dissection ordering (nested_dissection.h) and the
+// weighted graph they pass around. Private to the engine.
+//
+//   nested_dissection.cpp          the recursion: components, dense rows, leaves by AMD, tree
+//   nested_dissection_bisect.cpp   one vertex separator, multilevel: coarsen, separate, refine
+//   nested_dissection_coarsen.cpp  heavy-edge matching and contraction
+//   nested_dissection_initial.cpp  separator of the coarsest graph by greedy growing
+//   nested_dissection_refine.cpp   FM refinement of a vertex separator
+//   nested_dissection_graph.cpp    induced subgraphs, connected components
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gab/sparse/nested_dissection.h"
+
+namespace gab {
+namespace nd {
+
+// An undirected graph without self loops, adjacency lists in CSR form, with
+// vertex weights (how many original vertices a coarse vertex stands for) and
+// edge weights (how many original edges a coarse edge stands for).
+struct Graph {
+  int32_t n = 0;
+  std::vector<int32_t> xadj;    // n + 1
+  std::vector<int32_t> adj;     // xadj[n] neighbours
+  std::vector<int32_t> adjw;    // weight of each adj entry
+  std::vector<int32_t> vw;      // n vertex weights
+  int64_t total_weight = 0;     // sum of vw
+};
+
+// Where a vertex lies with respect to a separator.
+enum Side : uint8_t { kLeft = 0, kRight = 1, kSeparator = 2 };
+
+// Deterministic generator (splitmix64): the same sequence on every platform,
+// unlike the distributions of <random>.
+class Rng {
+ public:
+  explicit Rng(uint64_t seed) : state_(seed) {}
+  uint64_t next() {
+    uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+  // Uniform in [0, bound), bound > 0 (the modulo bias is irrelevant here).
+  int32_t below(int32_t bound) { return static_cast<int32_t>(next() % static_cast<uint64_t>(bound)); }
+
+ private:
+  uint64_t state_;
+};
+
+// The heaviest a side may be: (1 + imbalance) / 2 of the graph's weight.
+int64_t max_side_weight(const Graph& g, double imbalance);
+
+// Buffers reused by every call so the recursion does not allocate per
+// vertex; sized for the largest graph (grow() keeps the invariants below).
+struct Workspace {
+  std::vector<int32_t> local;   // vertex -> its index in a subgraph being built; -1 elsewhere
+  std::vector<int32_t> slot;    // coarse vertex -> its entry in the row being built; -1 elsewhere
+  std::vector<int32_t> queue;   // breadth-first searches
+  std::vector<int32_t> mark;    // scratch labels (no invariant)
+  void grow(int32_t n);
+};
+
+// Induced subgraph on `vertices` (increasing), numbered in that order; the
+// adjacency lists stay sorted when g's are. O(sum of their degrees).
+void induced_subgraph(const Graph& g, const std::vector<int32_t>& vertices, Workspace* ws, Graph* sub);
+
+// Connected components: component[v] in 0..count-1, numbered in order of
+// their smallest vertex; returns count. O(n + edges).
+int32_t connected_components(const Graph& g, Workspace* ws, std::vector<int32_t>* component);
+
+// One level of coarsening: a heavy-edge matching visited in a seeded random
+// order, each matched pair (or lone vertex) contracted into one coarse vertex.
+// No coarse vertex weighs more than max_vertex_weight. fine_to_coarse[v] is
+// v's coarse vertex. O(n + edges).
+void coarsen(const Graph& fine, int64_t max_vertex_weight, Rng* rng, Workspace* ws, std::vector<int32_t>* fine_to_coarse,
+             Graph* coarse);
+
+// A vertex separator of a small graph: regions grown breadth-first from
+// several seeds to half the weight, their boundary taken as separator,
+// refined; the best is kept. where[v] receives a Side.
+void initial_separator(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws,
+                       std::vector<uint8_t>* where);
+
+// Improves the vertex separator `where` of g in place by FM passes: moves
+// separator vertices to a side (pulling their neighbours on the other side
+// into the separator) while it shrinks, keeping both sides under
+// max_side_weight, undoing each pass's moves past its best point.
+void refine_separator(const Graph& g, const NestedDissectionOptions& params, std::vector<uint8_t>* where);
+
+// A small, balanced vertex separator of a connected graph, multilevel:
+// coarsen, initial_separator on the coarsest graph, then project back level
+// by level, refining at each.
+void find_separator(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws,
+                    std::vector<uint8_t>* where);
+
+}  // namespace nd
+}  // namespace gab

@@ -1,0 +1,272 @@
+// FM refinement of a vertex separator (Fiduccia & Mattheyses, "A linear-time
+// heuristic for improving network partitions", DAC 1982, moved from edges to
+// vertex separators as in Ashcraft & Liu, "A partition improvement algorithm
+// for generalized nested dissection", Boeing BCSTECH-94-020, 1994, and
+// "Robust ordering of sparse matrices using multisection", SIAM J. Matrix
+// Anal. Appl. 19(3), 1998; the multilevel use as in Karypis & Kumar 1998).
+//
+// A move takes a separator vertex v to side s; its neighbours on the other
+// side enter the separator (else an edge would join the sides). With
+// ext[v][t] = weight of v's neighbours on side t, the separator shrinks by
+//
+//     gain(v -> s) = w(v) - ext[v][1 - s].
+//
+// A pass keeps the separator vertices in one max-heap per target side, makes
+// the best admissible move (the target side stays under the weight bound)
+// even when its gain is negative, locks the moved vertex, updates the gains
+// of the vertices around it, and stops after `patience` moves without a new
+// best; the moves after the best state are then undone. Cost of a pass:
+// O(sum of degrees of the vertices it touches * log), not O(n).
+#include <algorithm>
+#include <cstdlib>
+
+#include "nested_dissection_graph.h"
+
+namespace gab {
+namespace nd {
+namespace {
+
+// Max-heap of vertices keyed by gain (ties: smaller vertex first), with each
+// vertex's position so its key can change in place.
+class GainHeap {
+ public:
+  explicit GainHeap(int32_t n) : pos_(static_cast<size_t>(n), -1), key_(static_cast<size_t>(n), 0) {}
+  bool empty() const { return heap_.empty(); }
+  int32_t top() const { return heap_[0]; }
+  int32_t key(int32_t v) const { return key_[v]; }
+  bool contains(int32_t v) const { return pos_[v] >= 0; }
+
+  void push(int32_t v, int32_t key) {
+    key_[v] = key;
+    pos_[v] = static_cast<int32_t>(heap_.size());
+    heap_.push_back(v);
+    up(pos_[v]);
+  }
+  void update(int32_t v, int32_t key) {
+    const int32_t old = key_[v];
+    key_[v] = key;
+    if (key > old) up(pos_[v]); else down(pos_[v]);
+  }
+  void remove(int32_t v) {
+    const int32_t i = pos_[v];
+    const int32_t last = heap_.back();
+    heap_.pop_back();
+    pos_[v] = -1;
+    if (last == v) return;
+    heap_[i] = last;
+    pos_[last] = i;
+    up(i);
+    down(pos_[last]);
+  }
+  void clear() {
+    for (int32_t v : heap_) pos_[v] = -1;
+    heap_.clear();
+  }
+
+ private:
+  bool before(int32_t a, int32_t b) const {
+    return key_[a] > key_[b] || (key_[a] == key_[b] && a < b);
+  }
+  void place(int32_t i, int32_t v) {
+    heap_[i] = v;
+    pos_[v] = i;
+  }
+  void up(int32_t i) {
+    const int32_t v = heap_[i];
+    while (i > 0) {
+      const int32_t parent = (i - 1) / 2;
+      if (!before(v, heap_[parent])) break;
+      place(i, heap_[parent]);
+      i = parent;
+    }
+    place(i, v);
+  }
+  void down(int32_t i) {
+    const int32_t v = heap_[i];
+    const int32_t size = static_cast<int32_t>(heap_.size());
+    for (;;) {
+      int32_t child = 2 * i + 1;
+      if (child >= size) break;
+      if (child + 1 < size && before(heap_[child + 1], heap_[child])) ++child;
+      if (!before(heap_[child], v)) break;
+      place(i, heap_[child]);
+      i = child;
+    }
+    place(i, v);
+  }
+
+  std::vector<int32_t> pos_;
+  std::vector<int32_t> key_;
+  std::vector<int32_t> heap_;
+};
+
+// The quality of a state, compared lexicographically: weight beyond the
+// bound first (only nonzero for a projection that starts unbalanced), then
+// the separator's weight, then the difference of the sides.
+struct Cost {
+  int64_t excess;
+  int64_t separator;
+  int64_t difference;
+  bool operator<(const Cost& o) const {
+    if (excess != o.excess) return excess < o.excess;
+    if (separator != o.separator) return separator < o.separator;
+    return difference < o.difference;
+  }
+};
+
+class SeparatorRefiner {
+ public:
+  SeparatorRefiner(const Graph& g, const NestedDissectionOptions& params, std::vector<uint8_t>* where)
+      : g_(g), params_(params), where_(*where), max_side_(max_side_weight(g, params.imbalance)),
+        // Small graphs need few speculative moves to climb out of a local minimum.
+        patience_(static_cast<size_t>(std::min(params.refine_patience, std::max(20, g.n / 100)))),
+        ext_(static_cast<size_t>(2) * g.n, 0), locked_(static_cast<size_t>(g.n), 0),
+        heap_{GainHeap(g.n), GainHeap(g.n)} {
+    weight_[0] = weight_[1] = weight_[2] = 0;
+    for (int32_t v = 0; v < g.n; ++v) weight_[where_[v]] += g.vw[v];
+  }
+
+  void run() {
+    for (int32_t pass = 0; pass < params_.refine_passes; ++pass) {
+      if (!one_pass()) break;
+    }
+  }
+
+ private:
+  Cost cost() const {
+    const int64_t heavier = std::max(weight_[0], weight_[1]);
+    return {std::max<int64_t>(0, heavier - max_side_), weight_[2], std::llabs(weight_[0] - weight_[1])};
+  }
+  int32_t gain(int32_t v, int side) const { return g_.vw[v] - ext_[2 * v + (1 - side)]; }
+
+  // Sets v's neighbour weights per side and enters it in both heaps.
+  void enter(int32_t v) {
+    int32_t ext[3] = {0, 0, 0};
+    for (int32_t p = g_.xadj[v]; p < g_.xadj[v + 1]; ++p) ext[where_[g_.adj[p]]] += g_.vw[g_.adj[p]];
+    ext_[2 * v] = ext[0];
+    ext_[2 * v + 1] = ext[1];
+    if (locked_[v]) return;
+    heap_[0].push(v, gain(v, 0));
+    heap_[1].push(v, gain(v, 1));
+  }
+  void change_ext(int32_t v, int side, int32_t delta) {
+    ext_[2 * v + side] += delta;
+    // ext[side] enters the gain of the move to the other side.
+    if (heap_[1 - side].contains(v)) heap_[1 - side].update(v, gain(v, 1 - side));
+  }
+
+  // The side to move heap top to, or -1 when neither move is admissible.
+  int choose_side() const {
+    bool ok[2];
+    for (int s = 0; s < 2; ++s) {
+      ok[s] = !heap_[s].empty() && weight_[s] + g_.vw[heap_[s].top()] <= max_side_;
+    }
+    if (ok[0] && ok[1]) {
+      const int32_t g0 = heap_[0].key(heap_[0].top()), g1 = heap_[1].key(heap_[1].top());
+      if (g0 != g1) return g0 > g1 ? 0 : 1;
+      return weight_[0] <= weight_[1] ? 0 : 1;
+    }
+    if (ok[0]) return 0;
+    if (ok[1]) return 1;
+    return -1;
+  }
+
+  void move(int32_t v, int to) {
+    const int other = 1 - to;
+    heap_[0].remove(v);
+    heap_[1].remove(v);
+    locked_[v] = 1;
+    moved_.push_back(v);
+    where_[v] = static_cast<uint8_t>(to);
+    weight_[2] -= g_.vw[v];
+    weight_[to] += g_.vw[v];
+    for (int32_t p = g_.xadj[v]; p < g_.xadj[v + 1]; ++p) {
+      const int32_t u = g_.adj[p];
+      if (where_[u] == kSeparator) {
+        change_ext(u, to, g_.vw[v]);
+      } else if (where_[u] == other) {
+        // u enters the separator: it no longer counts on `other` for its separator neighbours.
+        where_[u] = kSeparator;
+        weight_[other] -= g_.vw[u];
+        weight_[2] += g_.vw[u];
+        pulled_.push_back(u);
+        for (int32_t q = g_.xadj[u]; q < g_.xadj[u + 1]; ++q) {
+          const int32_t x = g_.adj[q];
+          if (where_[x] == kSeparator && x != u) change_ext(x, other, -g_.vw[u]);
+        }
+        enter(u);
+      }
+    }
+    pulled_end_.push_back(static_cast<int32_t>(pulled_.size()));
+  }
+
+  // Undoes the moves after the first `keep`.
+  void undo_to(size_t keep) {
+    for (size_t k = moved_.size(); k-- > keep;) {
+      const int32_t v = moved_[k];
+      const int to = where_[v];
+      const int32_t begin = k == 0 ? 0 : pulled_end_[k - 1];
+      for (int32_t i = begin; i < pulled_end_[k]; ++i) {
+        const int32_t u = pulled_[i];
+        where_[u] = static_cast<uint8_t>(1 - to);
+        weight_[2] -= g_.vw[u];
+        weight_[1 - to] += g_.vw[u];
+      }
+      where_[v] = kSeparator;
+      weight_[to] -= g_.vw[v];
+      weight_[2] += g_.vw[v];
+    }
+  }
+
+  // One FM pass; true when it improved the separator.
+  bool one_pass() {
+    for (int32_t v = 0; v < g_.n; ++v) {
+      if (where_[v] == kSeparator) enter(v);
+    }
+    const Cost start = cost();
+    Cost best = start;
+    size_t best_moves = 0;
+    for (;;) {
+      const int to = choose_side();
+      if (to < 0) break;
+      move(heap_[to].top(), to);
+      const Cost now = cost();
+      if (now < best) {
+        best = now;
+        best_moves = moved_.size();
+      } else if (moved_.size() - best_moves > patience_) {
+        break;
+      }
+    }
+    undo_to(best_moves);
+    for (int32_t v : moved_) locked_[v] = 0;
+    moved_.clear();
+    pulled_.clear();
+    pulled_end_.clear();
+    heap_[0].clear();
+    heap_[1].clear();
+    return best < start;
+  }
+
+  const Graph& g_;
+  const NestedDissectionOptions& params_;
+  std::vector<uint8_t>& where_;
+  const int64_t max_side_;
+  const size_t patience_;  // moves without a new best before a pass gives up
+  int64_t weight_[3];
+  std::vector<int32_t> ext_;      // 2 per vertex: neighbour weight on side 0, side 1
+  std::vector<uint8_t> locked_;   // moved in this pass
+  GainHeap heap_[2];              // separator vertices by gain of the move to side 0 / 1
+  std::vector<int32_t> moved_;    // this pass's moves in order
+  std::vector<int32_t> pulled_;   // vertices each move pulled into the separator
+  std::vector<int32_t> pulled_end_;
+};
+
+}  // namespace
+
+void refine_separator(const Graph& g, const NestedDissectionOptions& params, std::vector<uint8_t>* where) {
+  SeparatorRefiner(g, params, where).run();
+}
+
+}  // namespace nd
+}  // namespace gab
