@@ -8,28 +8,9 @@
 
 #include <cmath>
 
+#include "gab/sparse/splitmix64.h"
+
 namespace gab {
-
-namespace {
-
-// SplitMix64 (Steele, Lea and Flood 2014): tiny, portable, deterministic.
-class SplitMix64 {
- public:
-  explicit SplitMix64(uint64_t seed) : state_(seed) {}
-  uint64_t next() {
-    uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-  }
-  // Uniform in [0, 1) with 53 random bits.
-  double uniform() { return static_cast<double>(next() >> 11) * (1.0 / 9007199254740992.0); }
-
- private:
-  uint64_t state_;
-};
-
-}  // namespace
 
 std::vector<double> triangle_areas(const Mesh& mesh) {
   const int32_t nt = mesh.num_triangles();

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "gab/sparse/nested_dissection.h"
+#include "gab/sparse/splitmix64.h"
 
 namespace gab {
 namespace nd {
@@ -32,23 +33,8 @@ struct Graph {
 // Where a vertex lies with respect to a separator.
 enum Side : uint8_t { kLeft = 0, kRight = 1, kSeparator = 2 };
 
-// Deterministic generator (splitmix64): the same sequence on every platform,
-// unlike the distributions of <random>.
-class Rng {
- public:
-  explicit Rng(uint64_t seed) : state_(seed) {}
-  uint64_t next() {
-    uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  // Uniform in [0, bound), bound > 0 (the modulo bias is irrelevant here).
-  int32_t below(int32_t bound) { return static_cast<int32_t>(next() % static_cast<uint64_t>(bound)); }
-
- private:
-  uint64_t state_;
-};
+// The matching order's generator: the same sequence on every platform.
+using Rng = SplitMix64;
 
 // The heaviest a side may be: (1 + imbalance) / 2 of the graph's weight.
 int64_t max_side_weight(const Graph& g, double imbalance);
