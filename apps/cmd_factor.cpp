@@ -11,6 +11,7 @@
 #include "gab/sparse/cholesky.h"
 #include "gab/sparse/dense_kernels.h"
 #include "gab/sparse/factor_schedule.h"
+#include "gab/sparse/nested_dissection.h"
 
 namespace gab {
 namespace cli {
@@ -33,8 +34,8 @@ int run_factor(int argc, char** argv) {
     return usage_error("factor", args.error());
   }
   const std::string ordering_name = args.get("--ordering", "amd");
-  if (ordering_name != "amd" && ordering_name != "natural") {
-    return usage_error("factor", "--ordering must be amd or natural, got '" + ordering_name + "'");
+  if (ordering_name != "amd" && ordering_name != "nd" && ordering_name != "natural") {
+    return usage_error("factor", "--ordering must be amd, nd or natural, got '" + ordering_name + "'");
   }
   const bool json = args.has("--json");
   const std::string& path = args.positionals()[0];
@@ -51,8 +52,8 @@ int run_factor(int argc, char** argv) {
   std::vector<double> x;
   for (int64_t r = 0; r < repeat; ++r) {
     double t0 = now_seconds();
-    if (ordering_name == "amd") {
-      status = amd_order(a, &perm);
+    if (ordering_name == "amd" || ordering_name == "nd") {
+      status = ordering_name == "amd" ? amd_order(a, &perm) : nested_dissection_order(a, &perm);
       if (!status.ok()) return fail(path + ": ordering: " + status.message());
     } else {
       perm.resize(n);

@@ -73,7 +73,9 @@ Status study_one(const std::string& path, const std::string& ordering, int64_t u
   CscMatrix a = sys.lower;
   const int32_t n = a.ncols;
   AnalyzeOptions options;
-  options.ordering = ordering == "natural" ? Ordering::kNatural : Ordering::kAmd;
+  options.ordering = ordering == "natural" ? Ordering::kNatural
+                     : ordering == "nd"    ? Ordering::kNestedDissection
+                                           : Ordering::kAmd;
   options.threads = static_cast<int32_t>(threads);
   Cholesky chol;
   GAB_RETURN_IF_ERROR(chol.analyze(a, options));
@@ -159,7 +161,7 @@ Status study_one(const std::string& path, const std::string& ordering, int64_t u
   return Status::Ok();
 }
 
-JsonObject summary(const StudyResult& r, int64_t batch, int64_t threads) {
+JsonObject summary(const StudyResult& r, const std::string& ordering, int64_t batch, int64_t threads) {
   int64_t anchors = 0, path_max = 0, touched_max = 0;
   double path_sum = 0, touched_sum = 0, super_sum = 0, flops_sum = 0, time_sum = 0, time_max = 0;
   std::vector<double> per_anchor;
@@ -194,6 +196,7 @@ JsonObject summary(const StudyResult& r, int64_t batch, int64_t threads) {
   j.add("input", r.input);
   j.add("batch", batch);
   j.add("threads", threads);
+  j.add("ordering", ordering);
   j.add("path_supernodes_avg", super_sum * nb);
   j.add("flops_avg", flops_sum * nb);
   j.add("solve1_s", r.solve1_s);
@@ -287,8 +290,8 @@ int run_study(int argc, char** argv) {
     return usage_error("study", args.error());
   }
   const std::string ordering = args.get("--ordering", "amd");
-  if (ordering != "amd" && ordering != "natural") {
-    return usage_error("study", "--ordering must be amd or natural, got '" + ordering + "'");
+  if (ordering != "amd" && ordering != "nd" && ordering != "natural") {
+    return usage_error("study", "--ordering must be amd, nd or natural, got '" + ordering + "'");
   }
   const bool json = args.has("--json");
   std::vector<StudyResult> results;
@@ -296,7 +299,7 @@ int run_study(int argc, char** argv) {
     StudyResult r;
     const Status s = study_one(path, ordering, updates, batch, anchors, subdivide, threads, &r);
     if (!s.ok()) return fail(s.message());
-    const JsonObject j = summary(r, batch, threads);
+    const JsonObject j = summary(r, ordering, batch, threads);
     if (json) {
       std::printf("%s\n", j.str().c_str());
     } else {

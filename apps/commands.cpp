@@ -18,11 +18,11 @@ const std::vector<Command>& commands() {
        "decode a .gab file (its first K anchors only: a coarser level of detail)"},
       {"info", run_info, {"IN.gab [--json]"}, "what a .gab file holds (checksums verified, nothing decoded)"},
       {"demo", run_demo, {""}, "compress a real mesh at several anchor counts, print a table, write the meshes"},
-      {"factor", run_factor, {"IN [--ordering amd|natural] [--anchors K] [--repeat R] [--threads T] [--json]"},
+      {"factor", run_factor, {"IN [--ordering amd|nd|natural] [--anchors K] [--repeat R] [--threads T] [--json]"},
        "order, analyze, factor and solve the least-squares matrix of a mesh (.obj .off .ply)\n"
        "or a Matrix Market file (.mtx); report sizes and median phase times"},
       {"study", run_study,
-       {"IN... [--ordering amd|natural] [--updates U] [--batch B] [--anchors K]",
+       {"IN... [--ordering amd|nd|natural] [--updates U] [--batch B] [--anchors K]",
         "[--subdivide K] [--threads T] [--csv F] [--svg F] [--json]"},
        "add U anchors to the factor one (or B) at a time by Givens rotations along the\n"
        "elimination tree; report path lengths, entries touched, times, drift"},

@@ -12,6 +12,7 @@
 
 #include "gab/sparse/amd.h"
 #include "gab/sparse/column_counts.h"
+#include "gab/sparse/nested_dissection.h"
 #include "gab/sparse/supernode_structure.h"
 #include "gab/sparse/supernodes.h"
 #include "gab/sparse/update_matrix_stacks.h"
@@ -44,6 +45,8 @@ Status fill_reducing_order(const CscMatrix& lower, const AnalyzeOptions& options
   switch (options.ordering) {
     case Ordering::kAmd:
       return amd_order(lower, order, options.amd);
+    case Ordering::kNestedDissection:
+      return nested_dissection_order(lower, order);
     case Ordering::kNatural:
       order->resize(n);
       for (int32_t i = 0; i < n; ++i) (*order)[i] = i;

@@ -82,7 +82,7 @@ TEST(CliTest, BadUsageExitsTwo) {
   EXPECT_EQ(run_gab("factor").exit_code, 2);
   const CommandResult r = run_gab("factor a.off --ordering metis");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("--ordering must be amd or natural, got 'metis'"), std::string::npos);
+  EXPECT_NE(r.err.find("--ordering must be amd, nd or natural, got 'metis'"), std::string::npos);
   EXPECT_EQ(run_gab("factor a.off --repeat 0").exit_code, 2);
   EXPECT_EQ(run_gab("factor a.off --bogus").exit_code, 2);
   EXPECT_EQ(run_gab("help").exit_code, 0);
@@ -159,6 +159,18 @@ TEST(CliStudyTest, TwoThreadsGiveTheSameUpdatesAndDrift) {
     EXPECT_FALSE(json_value(one.out, key).empty()) << key;
     EXPECT_EQ(json_value(one.out, key), json_value(two.out, key)) << key;
   }
+  EXPECT_EQ(json_value(one.out, "ordering"), "\"amd\"");
+
+  // The nested-dissection ordering: the same updates on another factor.
+  const CommandResult nd = run_gab("study " + path + " --updates 60 --ordering nd --json");
+  ASSERT_EQ(nd.exit_code, 0) << nd.err;
+  EXPECT_EQ(json_value(nd.out, "ordering"), "\"nd\"");
+  EXPECT_LT(std::stod(json_value(nd.out, "drift")), 1e-9);
+  EXPECT_NE(json_value(nd.out, "nnz_L"), json_value(one.out, "nnz_L"));
+  const CommandResult factor = run_gab("factor " + path + " --ordering nd --repeat 1 --json");
+  ASSERT_EQ(factor.exit_code, 0) << factor.err;
+  EXPECT_EQ(json_value(factor.out, "ordering"), "\"nd\"");
+  EXPECT_LT(std::stod(json_value(factor.out, "residual")), 1e-12);
 }
 
 TEST(CliStudyTest, UpdatesStopWhenEveryVertexIsAnchored) {
