@@ -19,9 +19,9 @@ namespace gab {
 
 enum class Ordering {
   kAmd,      // approximate minimum degree (amd.h)
-  kNestedDissection,  // multilevel nested dissection, AMD on the leaves (issue 19's first step)
   kNatural,  // identity, then postorder of the elimination tree
   kGiven,    // AnalyzeOptions::given_perm, then postorder
+  kNestedDissection,  // multilevel nested dissection, AMD on the leaves (issue 19's first step)
 };
 
 // Relaxed amalgamation (defaults as CHOLMOD's): merge a child supernode into
