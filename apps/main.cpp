@@ -10,7 +10,18 @@
 
 namespace {
 
-// `gab help`: the command table (commands.h) with each command's summary.
+// Appends each line of `block` to `text`, after `indent` and without its
+// first `skip` characters.
+void append_lines(const std::string& block, const std::string& indent, size_t skip, std::string* text) {
+  for (size_t at = 0, end; at < block.size(); at = end + 1) {
+    end = block.find('\n', at);
+    if (end == std::string::npos) end = block.size();
+    *text += indent + block.substr(at + skip, end - at - skip) + "\n";
+  }
+}
+
+// `gab help`: the command table (commands.h), each usage without its "gab "
+// (continuation lines are aligned four columns further too), then the summary.
 std::string help_text() {
   std::string text =
       "gab: geometry-aware bases for triangle meshes, and a sparse Cholesky engine\n"
@@ -19,20 +30,8 @@ std::string help_text() {
       "\n"
       "commands:\n";
   for (const gab::cli::Command& c : gab::cli::commands()) {
-    // "  compress -i IN ...": the usage without its "gab " (four columns,
-    // continuation lines too), indented by two.
-    const std::string usage = gab::cli::usage_text(c);
-    for (size_t at = 0, end; at < usage.size(); at = end + 1) {
-      end = usage.find('\n', at);
-      if (end == std::string::npos) end = usage.size();
-      text += "  " + usage.substr(at + 4, end - at - 4) + "\n";
-    }
-    const std::string summary = c.summary;
-    for (size_t at = 0, end; at < summary.size(); at = end + 1) {
-      end = summary.find('\n', at);
-      if (end == std::string::npos) end = summary.size();
-      text += "      " + summary.substr(at, end - at) + "\n";
-    }
+    append_lines(gab::cli::usage_text(c), "  ", 4, &text);
+    append_lines(c.summary, "      ", 0, &text);
   }
   return text +
          "\n"
