@@ -24,7 +24,7 @@ int run_compress(int argc, char** argv) {
   Args args;
   if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--error", "--linf", "--bits", "--weight", "--batch", "--chunk-growth",
                    "--initial", "--threads", "--layout"},
-                  {"--json", "--geometry-only", "--refine"})) {
+                  {"--json", "--geometry-only", "--refine", "--reorder"})) {
     return usage_error("compress", args.error());
   }
   if (!args.positionals().empty()) return usage_error("compress", "unexpected argument " + args.positionals()[0]);
@@ -49,6 +49,10 @@ int run_compress(int argc, char** argv) {
   options.bits = static_cast<int>(bits);
   options.geometry_only = args.has("--geometry-only");
   options.refine = args.has("--refine");
+  options.reorder = args.has("--reorder");
+  if (options.reorder && options.geometry_only) {
+    return usage_error("compress", "--reorder codes the connectivity: it cannot go with --geometry-only");
+  }
   // The chunk layout (encoder.h FileLayout); "selection" files are readable by older builds.
   const std::string layout = args.get("--layout", "smaller");
   if (layout == "levels") {
@@ -105,6 +109,14 @@ int run_compress(int argc, char** argv) {
     o.add("refinement_bytes", static_cast<int64_t>(stats.refinement_bytes));
     o.add("unrefined_rms_rel", stats.unrefined_rms_rel);
     o.add_bool("levels", stats.levels);
+    o.add_bool("reordered", stats.reordered);
+    // The list coder keeps the vertex order inside connectivity_bytes: its
+    // price is not known apart (null); a reordered file keeps none (0).
+    if (stats.reordered) {
+      o.add("order_bytes", static_cast<int64_t>(0));
+    } else {
+      o.add_null("order_bytes");
+    }
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }

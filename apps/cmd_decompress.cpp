@@ -83,6 +83,8 @@ int run_decompress(int argc, char** argv) {
     o.add_bool("truncated", stats.truncated);
     o.add("refactorizations", static_cast<int64_t>(stats.refactorizations));
     o.add_bool("refined", stats.refined);
+    o.add_bool("reordered", stats.reordered);
+    o.add("connectivity_s", stats.connectivity_s);
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }

@@ -47,6 +47,7 @@ int run_info(int argc, char** argv) {
     o.add_bool("refined", info.refined);
     o.add("refinement_bytes", static_cast<int64_t>(info.refinement_bytes));
     o.add_bool("levels", info.levels);
+    o.add_bool("reordered", info.reordered);
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }
@@ -56,8 +57,11 @@ int run_info(int argc, char** argv) {
               info.levels ? " (chunk 0 codes the anchor set, later chunks are the decoder's levels)" : "",
               info.truncated ? (" (truncated: " + std::to_string(info.chunks_present) + " complete)").c_str() : "",
               info.bits, info.weight);
-  std::printf("%zu bytes: geometry %zu (%.3f bits/vertex), connectivity %zu\n", info.bytes, info.geometry_bytes, bpv,
-              info.connectivity_bytes);
+  std::printf("%zu bytes: geometry %zu (%.3f bits/vertex), connectivity %zu (%s)\n", info.bytes, info.geometry_bytes,
+              bpv, info.connectivity_bytes,
+              info.geometry_only ? "a hash"
+              : info.reordered   ? "valence coded, vertices in traversal order"
+                                 : "triangle list, order kept");
   int64_t anchors = 0;
   for (size_t c = 0; c < info.chunk_bytes.size(); ++c) {
     anchors += info.chunk_anchors[c];

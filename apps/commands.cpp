@@ -9,7 +9,7 @@ const std::vector<Command>& commands() {
   static const std::vector<Command> table = {
       {"compress", run_compress,
        {"-i IN -o OUT.gab [--anchors K | --error E | --linf E] [--bits Q] [--weight W]",
-        "[--geometry-only] [--refine] [--threads T] [--json]",
+        "[--geometry-only | --reorder] [--refine] [--threads T] [--json]",
         "(tuning: --batch F --chunk-growth G --initial K --layout smaller|levels|selection)"},
        "compress a mesh's geometry with geometry-aware anchors (default --error 0.001: relative\n"
        "vertex RMS over the bounding-box diagonal; q picked from the target, 12 for --anchors)"},

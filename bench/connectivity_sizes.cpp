@@ -6,8 +6,6 @@
 // issue 17.
 //
 //   bench/connectivity_sizes [mesh ...]   (default: the shared meshes)
-#include <algorithm>
-#include <array>
 #include <chrono>
 #include <cstdio>
 #include <string>
@@ -17,23 +15,12 @@
 #include "connectivity/connectivity_coder.h"
 #include "connectivity/valence_section.h"
 #include "gab/mesh/mesh_io.h"
+#include "gab/mesh/triangle_set.h"
 
 namespace {
 
 double now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-// Oriented triangles, each rotated to its smallest vertex, sorted.
-std::vector<std::array<int32_t, 3>> oriented_set(const std::vector<int32_t>& t) {
-  std::vector<std::array<int32_t, 3>> out;
-  for (size_t i = 0; i < t.size(); i += 3) {
-    std::array<int32_t, 3> a = {t[i], t[i + 1], t[i + 2]};
-    std::rotate(a.begin(), std::min_element(a.begin(), a.end()), a.end());
-    out.push_back(a);
-  }
-  std::sort(out.begin(), out.end());
-  return out;
 }
 
 }  // namespace
@@ -62,7 +49,7 @@ int main(int argc, char** argv) {
     const double decode_s = now() - t0;
     std::vector<int32_t> renamed;
     for (int32_t v : mesh.triangles) renamed.push_back(section.new_index[v]);
-    if (oriented_set(decoded) != oriented_set(renamed)) {
+    if (gab::oriented_triangle_set(decoded) != gab::oriented_triangle_set(renamed)) {
       std::fprintf(stderr, "%s: the valence section does not round-trip\n", path.c_str());
       return 1;
     }

@@ -89,6 +89,30 @@ TEST(CodecCliTest, CompressDecompressInfoRoundTrip) {
   EXPECT_EQ(json_number(i.out, "version"), 1);
 }
 
+TEST(CodecCliTest, ReorderCodesTheConnectivitySmallerAndSaysSo) {
+  const std::string in = write_scratch_file("reorder.off", torus_off(40, 20));
+  const std::string kept = write_scratch_file("kept.gab", ""), reordered = write_scratch_file("reordered.gab", "");
+  const std::string out = write_scratch_file("reordered-out.off", "");
+  const CommandResult a = run_gab("compress -i " + in + " -o " + kept + " --json");
+  const CommandResult b = run_gab("compress -i " + in + " -o " + reordered + " --reorder --json");
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  EXPECT_NE(a.out.find("\"reordered\": false"), std::string::npos) << a.out;
+  EXPECT_TRUE(gab_test::json_null(a.out, "order_bytes")) << a.out;
+  EXPECT_NE(b.out.find("\"reordered\": true"), std::string::npos) << b.out;
+  EXPECT_EQ(json_number(b.out, "order_bytes"), 0);
+  EXPECT_LT(json_number(b.out, "connectivity_bytes") * 4, json_number(a.out, "connectivity_bytes"));
+  const CommandResult d = run_gab("decompress -i " + reordered + " -o " + out + " --json");
+  ASSERT_EQ(d.exit_code, 0) << d.err;
+  EXPECT_NE(d.out.find("\"reordered\": true"), std::string::npos) << d.out;
+  EXPECT_GE(json_number(d.out, "connectivity_s"), 0);
+  const CommandResult i = run_gab("info " + reordered);
+  EXPECT_NE(i.out.find("(valence coded, vertices in traversal order)"), std::string::npos) << i.out;
+  const CommandResult both = run_gab("compress -i " + in + " -o " + kept + " --reorder --geometry-only");
+  EXPECT_EQ(both.exit_code, 2);
+  EXPECT_NE(both.err.find("--reorder codes the connectivity: it cannot go with --geometry-only"), std::string::npos);
+}
+
 TEST(CodecCliTest, RefineAddsALeastSquaresChunkThatDecompressApplies) {
   const std::string in = write_scratch_file("refine.off", torus_off(40, 20));
   const std::string plain = write_scratch_file("refine-plain.gab", ""), refined = write_scratch_file("refine.gab", "");

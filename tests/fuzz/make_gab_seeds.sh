@@ -6,8 +6,8 @@
 # the 10 x 6 torus of gab_fuzz_mesh.h. Only for a deliberate format change
 # (bump kGabVersion too) — then update the pinned numbers in the golden test.
 # (torus-refined was added later, with format flag bit 1, and the
-# torus-levels seeds later still, with flag bit 2, by running just their
-# lines: the older seeds pin what the first encoder wrote; torus-coarse,
+# torus-levels seeds later still, with flag bit 2, and torus-reordered with
+# flag bit 3, by running just their lines: the older seeds pin what the first encoder wrote; torus-coarse,
 # made before the greedy batches ranked by error mass, no longer comes out
 # byte for byte, so keep the committed one.)
 set -euo pipefail
@@ -38,6 +38,7 @@ PY
 "$gab" compress -i "$tmp/torus.off" -o "$tmp/refined.gab" --anchors 16 --refine --chunk-growth 2 --layout selection
 "$gab" compress -i "$tmp/torus.off" -o "$tmp/levels.gab" --anchors 40 --initial 4 --layout levels --chunk-growth 1.5
 "$gab" compress -i "$tmp/torus.off" -o "$tmp/levels-refined.gab" --anchors 24 --initial 3 --layout levels --refine
+"$gab" compress -i "$tmp/torus.off" -o "$tmp/reordered.gab" --anchors 20 --chunk-growth 1.5 --reorder
 mkdir -p "$out"
 { printf '\x00'; cat "$tmp/full.gab"; } > "$out/torus-full"
 { printf '\x01'; cat "$tmp/geo.gab"; } > "$out/torus-geometry-only"
@@ -47,3 +48,4 @@ mkdir -p "$out"
 { printf '\x00'; cat "$tmp/levels.gab"; } > "$out/torus-levels"
 { printf '\x2a'; cat "$tmp/levels.gab"; } > "$out/torus-levels-prefix-10"
 { printf '\x00'; cat "$tmp/levels-refined.gab"; } > "$out/torus-levels-refined"
+{ printf '\x00'; cat "$tmp/reordered.gab"; } > "$out/torus-reordered"

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "connectivity/connectivity_coder.h"
+#include "connectivity/valence_section.h"
 #include "container/framing.h"
 
 namespace gab {
@@ -13,9 +14,14 @@ Status corrupt(const std::string& what) { return Status::Error(StatusCode::kPars
 
 }  // namespace
 
-void write_connectivity_section(const Mesh& mesh, bool geometry_only, ByteWriter* out) {
-  if (geometry_only) {
+void write_connectivity_section(const Mesh& mesh, const GabHeader& header, const std::vector<uint8_t>& valence_block,
+                                ByteWriter* out) {
+  if (header.geometry_only()) {
     out->u64(connectivity_hash(mesh.num_vertices(), mesh.triangles));
+    return;
+  }
+  if (header.reordered()) {
+    write_framed(valence_block.data(), valence_block.size(), out);
     return;
   }
   const std::vector<uint8_t> block = encode_connectivity(mesh.num_vertices(), mesh.triangles);
@@ -55,8 +61,10 @@ Status decode_connectivity_section(const ConnectivitySection& section, const Gab
     *triangles = m.triangles;
     return Status::Ok();
   }
-  const Status s = decode_connectivity(section.block, section.size, header.num_vertices, header.num_triangles,
-                                       triangles);
+  const Status s = header.reordered() ? decode_valence_section(section.block, section.size, header.num_vertices,
+                                                              header.num_triangles, triangles)
+                                      : decode_connectivity(section.block, section.size, header.num_vertices,
+                                                            header.num_triangles, triangles);
   if (!s.ok()) return corrupt("connectivity block: " + s.message());
   return Status::Ok();
 }

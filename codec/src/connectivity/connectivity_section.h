@@ -1,5 +1,6 @@
 // The connectivity section of a .gab file (gab/codec/gab_format.h), written
-// and read as twins: the framed triangle list (connectivity_coder.h), or in a
+// and read as twins: the framed triangle list (connectivity_coder.h), in a
+// reordered file the framed valence section (valence_section.h), or in a
 // geometry-only file the hash of the mesh the decoder must be given.
 #pragma once
 
@@ -14,8 +15,12 @@
 
 namespace gab {
 
-// Writes the section for `mesh`. O(T).
-void write_connectivity_section(const Mesh& mesh, bool geometry_only, ByteWriter* out);
+// Writes the section for `mesh`: the hash or the list coder's block as the
+// header's flags say, or for a reordered file `valence_block` (the valence
+// section of the mesh before it was renumbered, which decodes to `mesh`).
+// O(T).
+void write_connectivity_section(const Mesh& mesh, const GabHeader& header, const std::vector<uint8_t>& valence_block,
+                                ByteWriter* out);
 
 // The section as read: the hash, or the framed block (inside the file's buffer).
 struct ConnectivitySection {

@@ -21,6 +21,7 @@ constexpr GabFlagRow kGabFlagTable[] = {
     {kGabFlagGeometryOnly, "geometry-only"},  // a connectivity hash instead of the triangles
     {kGabFlagRefined, "refined"},             // a refinement chunk follows the anchor chunks
     {kGabFlagLevels, "levels"},               // the anchor chunks are in the level layout
+    {kGabFlagReordered, "reordered"},         // valence-coded connectivity, traversal numbering
 };
 
 // The bits of kGabFlagTable together. O(rows).

@@ -223,11 +223,14 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
   stats->bits = header.bits;
   stats->weight = header.weight;
   stats->geometry_only = header.geometry_only();
+  stats->reordered = header.reordered();
 
   Mesh out;
   ConnectivitySection connectivity;
   GAB_RETURN_IF_ERROR(read_connectivity_section(&in, header, &connectivity));
+  const auto connectivity_start = std::chrono::steady_clock::now();
   GAB_RETURN_IF_ERROR(decode_connectivity_section(connectivity, header, options.connectivity, &out.triangles));
+  stats->connectivity_s = seconds_since(connectivity_start);
   out.positions.assign(static_cast<size_t>(n) * 3, 0.0);
   const EdgeGraph graph = build_edge_graph(out);
   if (matrix_entries_bound(graph) > options.max_matrix_entries) {

@@ -15,6 +15,7 @@
 #include "anchors/anchor_levels.h"
 #include "anchors/refinement_chunk.h"
 #include "connectivity/connectivity_section.h"
+#include "connectivity/valence_section.h"
 #include "container/framing.h"
 #include "container/gab_header.h"
 #include "gab/mesh/edge_graph.h"
@@ -44,6 +45,7 @@ Status check_options(const EncodeOptions& o) {
   if (o.chunk_growth > 0 && !(o.chunk_growth > 1)) return bad("chunk growth must be above 1");
   if (!std::isfinite(o.chunk_growth)) return bad("chunk growth must be finite");
   if (o.refine_iterations < 1) return bad("refinement iterations must be positive");
+  if (o.reorder && o.geometry_only) return bad("a reordered file codes its connectivity: not with geometry only");
   return Status::Ok();
 }
 
@@ -156,12 +158,12 @@ Status encode_level_layout(const AnchorSchedule& schedule, const EdgeGraph& grap
 }
 
 // Header, connectivity section, chunks; sets the byte counts.
-std::vector<uint8_t> assemble_file(const GabHeader& header, const Mesh& mesh,
+std::vector<uint8_t> assemble_file(const GabHeader& header, const Mesh& mesh, const std::vector<uint8_t>& valence_block,
                                    const std::vector<std::vector<uint8_t>>& chunks, EncodeStats* stats) {
   ByteWriter out;
   write_gab_header(header, &out);
   const size_t before_connectivity = out.size();
-  write_connectivity_section(mesh, header.geometry_only(), &out);
+  write_connectivity_section(mesh, header, valence_block, &out);
   stats->connectivity_bytes = out.size() - before_connectivity;
   for (const std::vector<uint8_t>& chunk : chunks) write_framed(chunk.data(), chunk.size(), &out);
   stats->bytes = out.size();
@@ -169,9 +171,11 @@ std::vector<uint8_t> assemble_file(const GabHeader& header, const Mesh& mesh,
   return out.take();
 }
 
-// Everything after the grid: anchors, chunks, file. Sets every stat but encode_s.
+// Everything after the grid: anchors, chunks, file. Sets every stat but
+// encode_s and new_index. `valence_block`: a reordered file's connectivity.
 Status encode_on_grid(const Mesh& mesh, const EncodeOptions& options, const Box& box, const Quantizer& quantizer,
-                      int bits, std::vector<uint8_t>* file, EncodeStats* stats) {
+                      int bits, const std::vector<uint8_t>& valence_block, std::vector<uint8_t>* file,
+                      EncodeStats* stats) {
   *stats = EncodeStats();
   stats->num_vertices = mesh.num_vertices();
   stats->num_triangles = mesh.num_triangles();
@@ -217,7 +221,8 @@ Status encode_on_grid(const Mesh& mesh, const EncodeOptions& options, const Box&
 
   GabHeader header;
   header.flags = static_cast<uint8_t>((options.geometry_only ? kGabFlagGeometryOnly : 0) |
-                                      (selection.refined ? kGabFlagRefined : 0) | (levels ? kGabFlagLevels : 0));
+                                      (selection.refined ? kGabFlagRefined : 0) | (levels ? kGabFlagLevels : 0) |
+                                      (options.reorder ? kGabFlagReordered : 0));
   header.bits = bits;
   header.num_vertices = mesh.num_vertices();
   header.num_triangles = mesh.num_triangles();
@@ -226,7 +231,8 @@ Status encode_on_grid(const Mesh& mesh, const EncodeOptions& options, const Box&
   header.step = quantizer.step;
   header.anchors = rec.num_anchors();
   header.chunks = static_cast<int32_t>(layout.chunks.size());
-  *file = assemble_file(header, mesh, layout.chunks, stats);
+  *file = assemble_file(header, mesh, valence_block, layout.chunks, stats);
+  stats->reordered = options.reorder;
   stats->anchors = header.anchors;
   stats->chunks = header.chunks;
   return Status::Ok();
@@ -245,18 +251,30 @@ Quantizer dense_grid(const Box& box, double target_rms_rel, int* bits) {
   return q;
 }
 
-}  // namespace
+// The mesh as a reordered file's decoder will see it: numbered in the
+// valence coder's traversal order, its triangles in the coder's order (the
+// section is decoded here, so the two sides agree by construction).
+Status renumber_for_valence(const Mesh& mesh, ValenceSection* section, Mesh* renumbered) {
+  *section = encode_valence_section(mesh.num_vertices(), mesh.triangles);
+  GAB_RETURN_IF_ERROR(decode_valence_section(section->bytes.data(), section->bytes.size(), mesh.num_vertices(),
+                                             mesh.num_triangles(), &renumbered->triangles));
+  renumbered->positions.assign(mesh.positions.size(), 0.0);
+  for (int32_t v = 0; v < mesh.num_vertices(); ++v) {
+    for (int c = 0; c < 3; ++c) renumbered->positions[3 * static_cast<size_t>(section->new_index[v]) + c] =
+        mesh.positions[3 * static_cast<size_t>(v) + c];
+  }
+  return Status::Ok();
+}
 
-Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* file, EncodeStats* stats) {
-  const auto start = std::chrono::steady_clock::now();
-  GAB_RETURN_IF_ERROR(check_options(options));
-  GAB_RETURN_IF_ERROR(validate_mesh(mesh, "mesh"));
+// encode_mesh after the checks, on the mesh as the decoder will number it.
+Status encode_numbered(const Mesh& mesh, const EncodeOptions& options, const std::vector<uint8_t>& valence_block,
+                       std::vector<uint8_t>* file, EncodeStats* stats) {
   const Box box = box_of(mesh);
   const int bits = options.bits != 0 ? options.bits
                                      : default_bits(box.diagonal > 0 ? box.extent / box.diagonal : 1.0,
                                                     options.target_rms_rel, options.target_linf_rel);
   const Quantizer quantizer = Quantizer::for_box(box.lo, box.hi, bits);
-  GAB_RETURN_IF_ERROR(encode_on_grid(mesh, options, box, quantizer, bits, file, stats));
+  GAB_RETURN_IF_ERROR(encode_on_grid(mesh, options, box, quantizer, bits, valence_block, file, stats));
   // Dense regime: most vertices became anchors, so nearly every vertex pays
   // for the grid; a coarser one, with a few more anchors, may cost less.
   const bool dense = stats->anchors > kDenseAnchorFraction * mesh.num_vertices();
@@ -266,12 +284,31 @@ Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<u
     if (coarse.step > quantizer.step) {
       std::vector<uint8_t> other;
       EncodeStats other_stats;
-      GAB_RETURN_IF_ERROR(encode_on_grid(mesh, options, box, coarse, coarse_bits, &other, &other_stats));
+      GAB_RETURN_IF_ERROR(
+          encode_on_grid(mesh, options, box, coarse, coarse_bits, valence_block, &other, &other_stats));
       if (other_stats.target_met && other.size() < file->size()) {
         *file = std::move(other);
         *stats = std::move(other_stats);
       }
     }
+  }
+  return Status::Ok();
+}
+
+}  // namespace
+
+Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* file, EncodeStats* stats) {
+  const auto start = std::chrono::steady_clock::now();
+  GAB_RETURN_IF_ERROR(check_options(options));
+  GAB_RETURN_IF_ERROR(validate_mesh(mesh, "mesh"));
+  if (options.reorder) {
+    ValenceSection section;
+    Mesh renumbered;
+    GAB_RETURN_IF_ERROR(renumber_for_valence(mesh, &section, &renumbered));
+    GAB_RETURN_IF_ERROR(encode_numbered(renumbered, options, section.bytes, file, stats));
+    stats->new_index = std::move(section.new_index);
+  } else {
+    GAB_RETURN_IF_ERROR(encode_numbered(mesh, options, {}, file, stats));
   }
   stats->encode_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return Status::Ok();

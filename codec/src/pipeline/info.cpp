@@ -31,6 +31,7 @@ Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
   info->geometry_only = header.geometry_only();
   info->refined = header.refined();
   info->levels = header.levels();
+  info->reordered = header.reordered();
   for (int c = 0; c < 3; ++c) info->box_min[c] = header.box_min[c];
   info->step = header.step;
   info->anchors = header.anchors;

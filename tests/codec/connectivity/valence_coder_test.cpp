@@ -7,32 +7,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
 #include <random>
 #include <vector>
 
 #include "common/test_meshes.h"
+#include "gab/mesh/triangle_set.h"
 
 namespace gab {
 namespace {
-
-// A triangle with its smallest vertex first, orientation kept.
-std::array<int32_t, 3> canonical(int32_t a, int32_t b, int32_t c) {
-  if (b < a && b < c) return {b, c, a};
-  if (c < a && c < b) return {c, a, b};
-  return {a, b, c};
-}
-
-std::vector<std::array<int32_t, 3>> sorted_triangles(const std::vector<int32_t>& t,
-                                                     const std::vector<int32_t>* rename = nullptr) {
-  std::vector<std::array<int32_t, 3>> out;
-  for (size_t i = 0; i + 2 < t.size(); i += 3) {
-    auto r = [&](int32_t v) { return rename ? (*rename)[v] : v; };
-    out.push_back(canonical(r(t[i]), r(t[i + 1]), r(t[i + 2])));
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
 
 // Encodes the closed-up cut of `triangles`, decodes, and checks the decoded
 // triangles are the closed mesh's under the reported order; returns bytes.
@@ -54,7 +36,9 @@ size_t round_trip(int32_t n, const std::vector<int32_t>& triangles) {
   std::sort(sorted.begin(), sorted.end());
   EXPECT_TRUE(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end());
   for (int32_t k = 0; k < out.num_vertices; ++k) EXPECT_EQ(out.dummy[k], closed.dummy[order[k]]);
-  EXPECT_EQ(sorted_triangles(out.triangles, &order), sorted_triangles(closed.triangles));
+  std::vector<int32_t> renamed = out.triangles;
+  for (int32_t& v : renamed) v = order[v];
+  EXPECT_EQ(oriented_triangle_set(renamed), oriented_triangle_set(closed.triangles));
   return bytes.size();
 }
 

@@ -7,26 +7,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
 #include <random>
 #include <vector>
 
 #include "common/test_meshes.h"
+#include "gab/mesh/triangle_set.h"
 
 namespace gab {
 namespace {
-
-// Oriented triangles as a sorted list (each rotated to its smallest vertex).
-std::vector<std::array<int32_t, 3>> oriented_set(const std::vector<int32_t>& t) {
-  std::vector<std::array<int32_t, 3>> out;
-  for (size_t i = 0; i < t.size(); i += 3) {
-    std::array<int32_t, 3> a = {t[i], t[i + 1], t[i + 2]};
-    std::rotate(a.begin(), std::min_element(a.begin(), a.end()), a.end());
-    out.push_back(a);
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
 
 void expect_round_trip(int32_t n, const std::vector<int32_t>& triangles) {
   const ValenceSection section = encode_valence_section(n, triangles);
@@ -40,7 +28,7 @@ void expect_round_trip(int32_t n, const std::vector<int32_t>& triangles) {
   ASSERT_TRUE(s.ok()) << s.message();
   std::vector<int32_t> renamed;
   for (int32_t v : triangles) renamed.push_back(section.new_index[v]);
-  EXPECT_EQ(oriented_set(decoded), oriented_set(renamed));
+  EXPECT_EQ(oriented_triangle_set(decoded), oriented_triangle_set(renamed));
 }
 
 TEST(ValenceSectionTest, MeshesOfEveryKindRoundTrip) {

@@ -9,6 +9,7 @@
 #include "gab/codec/encoder.h"
 #include "gab/codec/gab_format.h"
 #include "gab/mesh/metrics.h"
+#include "gab/mesh/triangle_set.h"
 
 namespace gab {
 namespace {
@@ -243,6 +244,38 @@ TEST(EncodeDecode, DecoderRefusesAFactorOverItsLimit) {
   EXPECT_TRUE(decode_mesh(file.data(), file.size(), options, &out, &ds).ok());
 }
 
+TEST(EncodeDecode, ReorderedFileDecodesToTheRenumberedMesh) {
+  // Not a closed manifold: an isolated vertex, a degenerate triangle, a hole.
+  Mesh mesh = bumpy_torus(24, 12);
+  mesh.triangles.resize(mesh.triangles.size() - 6);
+  mesh.positions.insert(mesh.positions.end(), {3.0, 0.0, 0.0});
+  mesh.triangles.insert(mesh.triangles.end(), {5, 5, 7});
+  EncodeOptions options;
+  options.target_rms_rel = 2e-3;
+  options.reorder = true;
+  EncodeStats es;
+  const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
+  ASSERT_TRUE(es.reordered);
+  ASSERT_EQ(es.new_index.size(), static_cast<size_t>(mesh.num_vertices()));
+  EncodeOptions kept = options;
+  kept.reorder = false;
+  EncodeStats kept_stats;
+  encode_or_die(mesh, kept, &kept_stats);
+  EXPECT_LT(es.connectivity_bytes, kept_stats.connectivity_bytes);
+
+  DecodeStats ds;
+  const Mesh out = decode_or_die(file, DecodeOptions(), &ds);
+  EXPECT_TRUE(ds.reordered);
+  Mesh renumbered = mesh;
+  for (int32_t v = 0; v < mesh.num_vertices(); ++v) {
+    for (int c = 0; c < 3; ++c) renumbered.positions[3 * es.new_index[v] + c] = mesh.positions[3 * v + c];
+  }
+  for (int32_t& v : renumbered.triangles) v = es.new_index[v];
+  EXPECT_EQ(oriented_triangle_set(out.triangles), oriented_triangle_set(renumbered.triangles));
+  EXPECT_NEAR(relative_rms(renumbered, out), es.rms_rel, 1e-12);
+  EXPECT_LE(es.rms_rel, 2e-3);
+}
+
 TEST(EncodeDecode, OptionErrors) {
   const Mesh mesh = bumpy_torus(8, 6);
   std::vector<uint8_t> file;
@@ -254,6 +287,12 @@ TEST(EncodeDecode, OptionErrors) {
   bits.max_anchors = 5;
   bits.bits = 1;
   EXPECT_EQ(encode_mesh(mesh, bits, &file, &es).message(), "bits must be in 2..24");
+  EncodeOptions reorder;
+  reorder.max_anchors = 5;
+  reorder.reorder = true;
+  reorder.geometry_only = true;
+  EXPECT_EQ(encode_mesh(mesh, reorder, &file, &es).message(),
+            "a reordered file codes its connectivity: not with geometry only");
   EncodeOptions weight;
   weight.max_anchors = 5;
   weight.weight = 0;

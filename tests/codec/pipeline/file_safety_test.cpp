@@ -18,8 +18,9 @@ namespace gab {
 namespace {
 
 std::vector<uint8_t> small_file(bool geometry_only, bool refine = false,
-                                FileLayout layout = FileLayout::kLevels) {
+                                FileLayout layout = FileLayout::kLevels, bool reorder = false) {
   EncodeOptions options;
+  options.reorder = reorder;
   options.layout = layout;
   options.refine = refine;
   options.max_anchors = 24;
@@ -49,10 +50,11 @@ void expect_clean(const std::vector<uint8_t>& bytes, const DecodeOptions& option
 
 TEST(FileSafety, EveryByteFlipIsAnErrorOrAValidMesh) {
   const Mesh connectivity = testing_util::bumpy_torus(10, 6);
-  for (int variant : {0, 1, 2, 3, 4, 5}) {  // plain, geometry only, refined; levels, then selection order
-    const bool geometry_only = variant % 3 == 1;
-    const FileLayout layout = variant < 3 ? FileLayout::kLevels : FileLayout::kSelectionOrder;
-    const std::vector<uint8_t> file = small_file(geometry_only, variant % 3 == 2, layout);
+  // plain, geometry only, refined; levels, then selection order; then reordered (valence connectivity)
+  for (int variant : {0, 1, 2, 3, 4, 5, 6}) {
+    const bool geometry_only = variant % 3 == 1 && variant < 6;
+    const FileLayout layout = variant < 3 || variant == 6 ? FileLayout::kLevels : FileLayout::kSelectionOrder;
+    const std::vector<uint8_t> file = small_file(geometry_only, variant % 3 == 2, layout, variant == 6);
     DecodeOptions options;
     options.connectivity = geometry_only ? &connectivity : nullptr;
     int errors = 0;
@@ -169,7 +171,7 @@ TEST(FileSafety, HeaderErrorsNameTheProblem) {
   const Status unknown_flag = decode_mesh(bad.data(), bad.size(), DecodeOptions(), &out, &ds);
   EXPECT_EQ(unknown_flag.code(), StatusCode::kUnsupported);
   EXPECT_EQ(unknown_flag.message(), "unsupported .gab flags 0x" + std::string(file[9] & 4 ? "14" : "10") +
-                                        " 0x00 (this build knows 0x07 0x00)");
+                                        " 0x00 (this build knows 0x0f 0x00)");
   bad = file;
   bad[8] = 9;
   EXPECT_EQ(decode_mesh(bad.data(), bad.size(), DecodeOptions(), &out, &ds).code(), StatusCode::kUnsupported);

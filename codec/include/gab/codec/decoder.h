@@ -45,7 +45,9 @@ struct DecodeStats {
   int bits = 0;
   double weight = 0;
   bool geometry_only = false;
+  bool reordered = false;  // numbered in the connectivity coder's traversal order (kGabFlagReordered)
   double decode_s = 0, factor_s = 0, solve_s = 0, update_s = 0;
+  double connectivity_s = 0;  // decoding the connectivity section
   int32_t refactorizations = 0;  // chunks added by refactoring rather than updates
 };
 
@@ -64,6 +66,7 @@ struct GabFileInfo {
   int32_t chunks_present = 0;       // complete chunks with a valid checksum
   bool refined = false;             // the last chunk is a refinement (not counted below)
   bool levels = false;              // the level layout (gab_format.h, flag bit 2)
+  bool reordered = false;           // valence-coded connectivity, traversal numbering (flag bit 3)
   size_t refinement_bytes = 0;      // its framed size when present
   bool truncated = false;
   size_t bytes = 0, connectivity_bytes = 0, geometry_bytes = 0;

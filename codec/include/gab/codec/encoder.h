@@ -40,6 +40,10 @@ struct EncodeOptions {
   int bits = 0;
   double weight = 100;           // anchor weight w of the relaxed basis (positive)
   bool geometry_only = false;    // store a connectivity hash: the decoder must be given the same mesh
+  // Code the connectivity with the valence coder (flag kGabFlagReordered): several times smaller, but the
+  // decoded mesh is numbered in the coder's traversal order and lists its triangles in the order it meets
+  // them (EncodeStats::new_index maps input vertices to decoded ones). Not with geometry_only.
+  bool reorder = false;
   int32_t initial_anchors = 0;   // spread set size (at least one per component); 0: the encoder's
   // Greedy batch, a fraction (<= 1) of the anchors so far, fewer near an RMS target so the file does not
   // overshoot; 0: one anchor per step (the paper's); negative: the encoder's.
@@ -62,6 +66,8 @@ struct EncodeStats {
   int bits = 0;                   // q used
   size_t bytes = 0;               // whole file
   size_t connectivity_bytes = 0;  // the connectivity block with its framing (or the hash)
+  bool reordered = false;         // the file is numbered in traversal order (EncodeOptions::reorder)
+  std::vector<int32_t> new_index;  // reordered: the decoded mesh's number for each input vertex
   size_t geometry_bytes = 0;      // everything else: header and anchor chunks
   double rms_rel = 0, linf_rel = 0;  // of the decoded shape against the input
   bool refined = false;              // the file ends with a refinement chunk

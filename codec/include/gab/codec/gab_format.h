@@ -69,6 +69,9 @@ constexpr uint8_t kGabVersion = 1;
 constexpr uint8_t kGabFlagGeometryOnly = 1;
 constexpr uint8_t kGabFlagRefined = 2;
 constexpr uint8_t kGabFlagLevels = 4;
+// The connectivity block is the valence coder's: the vertices are numbered
+// in its traversal order and the triangles are a set (order not kept).
+constexpr uint8_t kGabFlagReordered = 8;
 constexpr int kGabMinBits = 2;
 constexpr int kGabMaxBits = 24;
 constexpr size_t kGabHeaderBytes = 72;
@@ -89,6 +92,7 @@ struct GabHeader {
   bool geometry_only() const { return (flags & kGabFlagGeometryOnly) != 0; }
   bool refined() const { return (flags & kGabFlagRefined) != 0; }
   bool levels() const { return (flags & kGabFlagLevels) != 0; }
+  bool reordered() const { return (flags & kGabFlagReordered) != 0; }
   // Chunks holding anchors (all but the refinement).
   int32_t anchor_chunks() const { return chunks - (refined() ? 1 : 0); }
 };
