@@ -1,5 +1,7 @@
 // The encoder: a short driver over the codec's layers, in the order the
 // decoder reads them back (decoder.cpp):
+//   (reorder: code the connectivity with the valence coder and renumber the
+//   mesh as its decoder will, connectivity/valence_section.h)
 //   select anchors (anchor_selection.h: greedy loop and refinement search, no bytes)
 //   -> code the anchor chunks in each layout (anchors/anchor_chunk.h, anchor_levels.h), keep one
 //   -> the refinement chunk (anchors/refinement_chunk.h)
