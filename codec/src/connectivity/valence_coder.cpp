@@ -44,6 +44,10 @@ struct ActiveLists {
     for (int32_t i = 0; i < steps; ++i) node = next[node];
     return node;
   }
+  int32_t retreat(int32_t node, int32_t steps) const {
+    for (int32_t i = 0; i < steps; ++i) node = prev[node];
+    return node;
+  }
   void link(int32_t a, int32_t b) {
     next[a] = b;
     prev[b] = a;
@@ -472,7 +476,9 @@ Status decode_valences(RangeDecoder* dec, int32_t max_vertices, int64_t max_tria
         const uint32_t distance = models.split_offset.decode(dec);
         if (distance > static_cast<uint32_t>(lists.length - 3)) return corrupt("split offset out of range");
         const uint32_t offset = backward ? static_cast<uint32_t>(lists.length) - 1 - distance : distance + 2;
-        const int32_t m = lists.advance(f, static_cast<int32_t>(offset));
+        // Walk the way the encoder counted: `distance` steps, not `offset`.
+        const int32_t m = backward ? lists.retreat(lists.prev[f], static_cast<int32_t>(distance))
+                                   : lists.advance(f, static_cast<int32_t>(offset));
         w = lists.vertex[m];
         ++vs.occurrences[w];
         lists.split(m, static_cast<int32_t>(offset));
