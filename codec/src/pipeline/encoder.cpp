@@ -22,6 +22,7 @@
 #include "container/gab_header.h"
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/relaxed_reconstruction.h"
+#include "gab/mesh/renumber.h"
 #include "pipeline/anchor_selection.h"
 #include "pipeline/encoder_tuning.h"
 
@@ -258,14 +259,10 @@ Quantizer dense_grid(const Box& box, double target_rms_rel, int* bits) {
 // section is decoded here, so the two sides agree by construction).
 Status renumber_for_valence(const Mesh& mesh, ValenceSection* section, Mesh* renumbered) {
   *section = encode_valence_section(mesh.num_vertices(), mesh.triangles);
-  GAB_RETURN_IF_ERROR(decode_valence_section(section->bytes.data(), section->bytes.size(), mesh.num_vertices(),
-                                             mesh.num_triangles(), &renumbered->triangles));
-  renumbered->positions.assign(mesh.positions.size(), 0.0);
-  for (int32_t v = 0; v < mesh.num_vertices(); ++v) {
-    for (int c = 0; c < 3; ++c) renumbered->positions[3 * static_cast<size_t>(section->new_index[v]) + c] =
-        mesh.positions[3 * static_cast<size_t>(v) + c];
-  }
-  return Status::Ok();
+  *renumbered = renumber_vertices(mesh, section->new_index);
+  // The same triangles, in the decoder's order and corner order.
+  return decode_valence_section(section->bytes.data(), section->bytes.size(), mesh.num_vertices(),
+                                mesh.num_triangles(), &renumbered->triangles);
 }
 
 // encode_mesh after the checks, on the mesh as the decoder will number it.

@@ -9,6 +9,7 @@
 #include "gab/codec/encoder.h"
 #include "gab/codec/gab_format.h"
 #include "gab/mesh/metrics.h"
+#include "gab/mesh/renumber.h"
 #include "gab/mesh/triangle_set.h"
 
 namespace gab {
@@ -266,11 +267,7 @@ TEST(EncodeDecode, ReorderedFileDecodesToTheRenumberedMesh) {
   DecodeStats ds;
   const Mesh out = decode_or_die(file, DecodeOptions(), &ds);
   EXPECT_TRUE(ds.reordered);
-  Mesh renumbered = mesh;
-  for (int32_t v = 0; v < mesh.num_vertices(); ++v) {
-    for (int c = 0; c < 3; ++c) renumbered.positions[3 * es.new_index[v] + c] = mesh.positions[3 * v + c];
-  }
-  for (int32_t& v : renumbered.triangles) v = es.new_index[v];
+  const Mesh renumbered = renumber_vertices(mesh, es.new_index);
   EXPECT_EQ(oriented_triangle_set(out.triangles), oriented_triangle_set(renumbered.triangles));
   EXPECT_NEAR(relative_rms(renumbered, out), es.rms_rel, 1e-12);
   EXPECT_LE(es.rms_rel, 2e-3);

@@ -18,6 +18,7 @@
 #include "gab/codec/encoder.h"
 #include "gab/codec/gab_format.h"
 #include "gab/mesh/file_io.h"
+#include "gab/mesh/renumber.h"
 #include "gab/mesh/triangle_set.h"
 
 namespace gab {
@@ -98,11 +99,7 @@ TEST(GoldenFiles, ReorderedSeedIsWhatTheEncoderWritesAndDecodesToTheTorus) {
   DecodeStats ds;
   ASSERT_TRUE(decode_mesh(golden.data(), golden.size(), DecodeOptions(), &out, &ds).ok());
   EXPECT_TRUE(ds.reordered);
-  Mesh renumbered = torus;
-  for (int32_t v = 0; v < torus.num_vertices(); ++v) {
-    for (int c = 0; c < 3; ++c) renumbered.positions[3 * es.new_index[v] + c] = torus.positions[3 * v + c];
-  }
-  for (int32_t& v : renumbered.triangles) v = es.new_index[v];
+  const Mesh renumbered = renumber_vertices(torus, es.new_index);
   EXPECT_EQ(oriented_triangle_set(out.triangles), oriented_triangle_set(renumbered.triangles));
   EXPECT_NEAR(testing_util::relative_rms(renumbered, out), 0.0225855, 5e-6);
 }

@@ -1,0 +1,17 @@
+// A mesh under a new vertex numbering: what a decoder that numbers vertices
+// its own way (a reordered .gab file) gives back.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gab/mesh/mesh.h"
+
+namespace gab {
+
+// Vertex v of `mesh` becomes vertex new_index[v] (a permutation of
+// 0..n-1): positions move, triangle indices are renamed, triangle order and
+// corner order stay. O(V + T).
+Mesh renumber_vertices(const Mesh& mesh, const std::vector<int32_t>& new_index);
+
+}  // namespace gab
