@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <string>
 
+#include "entropy/int_coder.h"
+
 namespace gab {
 
 namespace {
@@ -134,6 +136,21 @@ void refocus_after_close(ActiveLists* lists, const VertexState& vs) {
   if (vs.remaining[lists->vertex[n1]] < vs.remaining[lists->vertex[lists->focus]]) lists->focus = n1;
 }
 
+// The adaptive statistics both sides keep, in the same state.
+struct ValenceModels {
+  ValenceModels();
+  BitModel close[4], add[4], merge, split_backward, dummy[2], two_cycle;
+  UIntCoder valence, split_offset, merge_list, merge_offset, components;
+};
+
+ValenceModels::ValenceModels()
+    : merge(8), two_cycle(8), valence(kValenceContexts), split_offset(1), merge_list(1), merge_offset(1),
+      components(1) {
+  for (BitModel& m : close) m = BitModel(6);
+  for (BitModel& m : add) m = BitModel(7);
+  for (BitModel& m : dummy) m = BitModel(7);
+}
+
 // What conquering the focus's next triangle U = (focus, w, next(focus)) is.
 // kClose and kCloseNext are implied by the valences (kClose coded only when
 // the focus lies on the lists more than once); the others are coded.
@@ -148,13 +165,6 @@ bool closes_next(const ActiveLists& lists, const VertexState& vs, int32_t focus)
 
 }  // namespace
 
-ValenceModels::ValenceModels()
-    : merge(8), two_cycle(8), valence(kValenceContexts), split_offset(1), merge_list(1), merge_offset(1),
-      components(1) {
-  for (BitModel& m : close) m = BitModel(6);
-  for (BitModel& m : add) m = BitModel(7);
-  for (BitModel& m : dummy) m = BitModel(7);
-}
 
 ClosedMesh close_boundaries(const ManifoldCut& cut) {
   ClosedMesh closed;

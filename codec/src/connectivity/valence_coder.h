@@ -23,7 +23,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "entropy/int_coder.h"
 #include "entropy/range_coder.h"
 #include "gab/mesh/manifold_cut.h"
 #include "gab/status.h"
@@ -50,13 +49,6 @@ struct DecodedConnectivity {
   int32_t num_vertices = 0;
   std::vector<int32_t> triangles;
   std::vector<uint8_t> dummy;
-};
-
-// The adaptive statistics both sides keep, in the same state.
-struct ValenceModels {
-  ValenceModels();
-  BitModel close[4], add[4], merge, split_backward, dummy[2], two_cycle;
-  UIntCoder valence, split_offset, merge_list, merge_offset, components;
 };
 
 // Codes `mesh`; order[k] is the mesh vertex the decoder will number k.
