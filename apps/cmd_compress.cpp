@@ -110,23 +110,17 @@ int run_compress(int argc, char** argv) {
     o.add("unrefined_rms_rel", stats.unrefined_rms_rel);
     o.add_bool("levels", stats.levels);
     o.add_bool("reordered", stats.reordered);
-    // The list coder keeps the vertex order inside connectivity_bytes: its
-    // price is not known apart (null); a reordered file keeps none (0).
-    if (stats.reordered) {
-      o.add("order_bytes", static_cast<int64_t>(0));
-    } else {
-      o.add_null("order_bytes");
-    }
+    o.add("order_bytes", static_cast<int64_t>(stats.order_bytes));
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }
   std::printf("%s -> %s: %d vertices, %d triangles, %d anchors in %d chunks%s, q = %d\n", in.c_str(), out.c_str(),
               stats.num_vertices, stats.num_triangles, stats.anchors, stats.chunks,
               stats.refined ? " (the last a least-squares refinement)" : "", stats.bits);
-  std::printf("%zu bytes (geometry %zu = %.3f bits/vertex, connectivity %zu); error rms %.3g, max %.3g of the "
-              "bounding-box diagonal; %.2f s\n",
-              stats.bytes, stats.geometry_bytes, bpv, stats.connectivity_bytes, stats.rms_rel, stats.linf_rel,
-              stats.encode_s);
+  std::printf("%zu bytes (geometry %zu = %.3f bits/vertex, connectivity %zu, vertex order %zu); error rms %.3g, max "
+              "%.3g of the bounding-box diagonal; %.2f s\n",
+              stats.bytes, stats.geometry_bytes, bpv, stats.connectivity_bytes, stats.order_bytes, stats.rms_rel,
+              stats.linf_rel, stats.encode_s);
   return kExitOk;
 }
 

@@ -43,6 +43,7 @@ int run_info(int argc, char** argv) {
     o.add("bytes", static_cast<int64_t>(info.bytes));
     o.add("geometry_bytes", static_cast<int64_t>(info.geometry_bytes));
     o.add("connectivity_bytes", static_cast<int64_t>(info.connectivity_bytes));
+    o.add("order_bytes", static_cast<int64_t>(info.order_bytes));
     o.add("bpv_geometry", bpv);
     o.add_bool("refined", info.refined);
     o.add("refinement_bytes", static_cast<int64_t>(info.refinement_bytes));
@@ -57,11 +58,17 @@ int run_info(int argc, char** argv) {
               info.levels ? " (chunk 0 codes the anchor set, later chunks are the decoder's levels)" : "",
               info.truncated ? (" (truncated: " + std::to_string(info.chunks_present) + " complete)").c_str() : "",
               info.bits, info.weight);
-  std::printf("%zu bytes: geometry %zu (%.3f bits/vertex), connectivity %zu (%s)\n", info.bytes, info.geometry_bytes,
+  std::printf("%zu bytes: geometry %zu (%.3f bits/vertex), connectivity %zu (%s)", info.bytes, info.geometry_bytes,
               bpv, info.connectivity_bytes,
-              info.geometry_only ? "a hash"
-              : info.reordered   ? "valence coded, vertices in traversal order"
-                                 : "triangle list, order kept");
+              info.geometry_only       ? "a hash"
+              : info.versioned_valence ? "valence coded"
+              : info.reordered         ? "valence coded, version 1"
+                                       : "triangle list, order kept");
+  if (info.order_bytes > 0) {
+    std::printf(", vertex order %zu\n", info.order_bytes);
+  } else {
+    std::printf("%s\n", info.reordered ? ", vertices in traversal order" : "");
+  }
   int64_t anchors = 0;
   for (size_t c = 0; c < info.chunk_bytes.size(); ++c) {
     anchors += info.chunk_anchors[c];

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "connectivity/connectivity_coder.h"
+#include "connectivity/order_coder.h"
 #include "connectivity/valence_section.h"
 #include "container/framing.h"
 
@@ -12,20 +13,45 @@ namespace {
 
 Status corrupt(const std::string& what) { return Status::Error(StatusCode::kParseError, what); }
 
+// The valence coder version this build writes; it reads 1 to this one.
+// Version 1 is also what a file with the reordered flag alone holds,
+// without the version byte.
+constexpr uint8_t kValenceVersionWritten = 1;
+
 }  // namespace
 
-void write_connectivity_section(const Mesh& mesh, const GabHeader& header, const std::vector<uint8_t>& valence_block,
+Status code_connectivity(int32_t n, const std::vector<int32_t>& triangles, bool reorder, CodedConnectivity* coded) {
+  const int32_t t = static_cast<int32_t>(triangles.size() / 3);
+  ValenceSection section = encode_valence_section(n, triangles);
+  coded->valence.assign(1, kValenceVersionWritten);
+  coded->valence.insert(coded->valence.end(), section.bytes.begin(), section.bytes.end());
+  std::vector<int32_t> traversal;  // the triangles in traversal numbering
+  GAB_RETURN_IF_ERROR(
+      decode_valence_section(section.bytes.data(), section.bytes.size(), n, t, &traversal));
+  coded->order.clear();
+  if (reorder) {
+    coded->triangles = std::move(traversal);
+    coded->new_index = std::move(section.new_index);
+    return Status::Ok();
+  }
+  std::vector<int32_t> original(static_cast<size_t>(n));
+  for (int32_t v = 0; v < n; ++v) original[section.new_index[v]] = v;
+  coded->order = encode_vertex_order(n, traversal, original);
+  coded->triangles.resize(traversal.size());
+  for (size_t i = 0; i < traversal.size(); ++i) coded->triangles[i] = original[traversal[i]];
+  coded->new_index.resize(static_cast<size_t>(n));
+  for (int32_t v = 0; v < n; ++v) coded->new_index[v] = v;
+  return Status::Ok();
+}
+
+void write_connectivity_section(const Mesh& mesh, const GabHeader& header, const CodedConnectivity& coded,
                                 ByteWriter* out) {
   if (header.geometry_only()) {
     out->u64(connectivity_hash(mesh.num_vertices(), mesh.triangles));
     return;
   }
-  if (header.reordered()) {
-    write_framed(valence_block.data(), valence_block.size(), out);
-    return;
-  }
-  const std::vector<uint8_t> block = encode_connectivity(mesh.num_vertices(), mesh.triangles);
-  write_framed(block.data(), block.size(), out);
+  write_framed(coded.valence.data(), coded.valence.size(), out);
+  if (!header.reordered()) write_framed(coded.order.data(), coded.order.size(), out);
 }
 
 Status read_connectivity_section(ByteReader* in, const GabHeader& header, ConnectivitySection* section) {
@@ -38,6 +64,15 @@ Status read_connectivity_section(ByteReader* in, const GabHeader& header, Connec
     case FrameRead::kTruncated: return corrupt("file ends inside the connectivity block");
     case FrameRead::kCorrupt: return corrupt("connectivity block is corrupt (checksum mismatch)");
     case FrameRead::kOk: break;
+  }
+  if (header.keeps_coded_order()) {
+    const size_t before = in->offset();
+    switch (read_framed(in, &section->order, &section->order_size)) {
+      case FrameRead::kTruncated: return corrupt("file ends inside the vertex order block");
+      case FrameRead::kCorrupt: return corrupt("vertex order block is corrupt (checksum mismatch)");
+      case FrameRead::kOk: break;
+    }
+    section->order_bytes = in->offset() - before;
   }
   return Status::Ok();
 }
@@ -61,11 +96,32 @@ Status decode_connectivity_section(const ConnectivitySection& section, const Gab
     *triangles = m.triangles;
     return Status::Ok();
   }
-  const Status s = header.reordered() ? decode_valence_section(section.block, section.size, header.num_vertices,
-                                                              header.num_triangles, triangles)
-                                      : decode_connectivity(section.block, section.size, header.num_vertices,
-                                                            header.num_triangles, triangles);
+  const int32_t n = header.num_vertices, t = header.num_triangles;
+  if (!header.versioned_valence()) {
+    const Status s = header.reordered() ? decode_valence_section(section.block, section.size, n, t, triangles)
+                                        : decode_connectivity(section.block, section.size, n, t, triangles);
+    if (!s.ok()) return corrupt("connectivity block: " + s.message());
+    return Status::Ok();
+  }
+  if (section.size < 1) return corrupt("connectivity block: empty");
+  const int version = section.block[0];
+  if (version == 0) return corrupt("connectivity block: valence coder version 0");
+  if (version > kValenceVersionWritten) {
+    return Status::Error(StatusCode::kUnsupported, "connectivity block: valence coder version " +
+                                                       std::to_string(version) + " is newer than this build reads");
+  }
+  std::vector<int32_t> traversal;
+  const Status s = decode_valence_section(section.block + 1, section.size - 1, n, t, &traversal);
   if (!s.ok()) return corrupt("connectivity block: " + s.message());
+  if (!header.keeps_coded_order()) {
+    *triangles = std::move(traversal);
+    return Status::Ok();
+  }
+  std::vector<int32_t> original;
+  const Status o = decode_vertex_order(section.order, section.order_size, n, traversal, &original);
+  if (!o.ok()) return corrupt(o.message());
+  triangles->resize(traversal.size());
+  for (size_t i = 0; i < traversal.size(); ++i) (*triangles)[i] = original[traversal[i]];
   return Status::Ok();
 }
 

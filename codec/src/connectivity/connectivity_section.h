@@ -1,7 +1,14 @@
 // The connectivity section of a .gab file (gab/codec/gab_format.h), written
-// and read as twins: the framed triangle list (connectivity_coder.h), in a
-// reordered file the framed valence section (valence_section.h), or in a
-// geometry-only file the hash of the mesh the decoder must be given.
+// and read as twins. By the header's flags it is:
+//   geometry only          the hash of the mesh the decoder must be given
+//   versioned valence      a framed block: a version byte, then the valence
+//                          section (valence_section.h); unless reordered, a
+//                          second framed block: the input's vertex order
+//                          (order_coder.h). What the encoder writes.
+//   reordered alone        the framed valence section, version 1 (files of
+//                          the first --reorder)
+//   none of these          the framed triangle list (connectivity_coder.h,
+//                          files of the first version)
 #pragma once
 
 #include <cstddef>
@@ -15,27 +22,49 @@
 
 namespace gab {
 
-// Writes the section for `mesh`: the hash or the list coder's block as the
-// header's flags say, or for a reordered file `valence_block` (the valence
-// section of the mesh before it was renumbered, which decodes to `mesh`).
-// O(T).
-void write_connectivity_section(const Mesh& mesh, const GabHeader& header, const std::vector<uint8_t>& valence_block,
+// What the encoder codes for a mesh that is not geometry only: the blocks
+// and the mesh exactly as the decoder will return it (its triangles in the
+// decoder's order and corner order; numbered in traversal order when
+// reordered).
+struct CodedConnectivity {
+  std::vector<uint8_t> valence;  // version byte and valence section
+  std::vector<uint8_t> order;    // the vertex order (empty when reordered)
+  std::vector<int32_t> triangles;
+  // new_index[v]: the decoded mesh's number for input vertex v (the
+  // identity unless reordered).
+  std::vector<int32_t> new_index;
+};
+
+// Codes the triangles of an n-vertex mesh (every index in [0, n)). The
+// valence block is decoded again here, so encoder and decoder list the
+// triangles alike by construction. O(n log n + T) plus the valence coder's splits.
+Status code_connectivity(int32_t n, const std::vector<int32_t>& triangles, bool reorder, CodedConnectivity* coded);
+
+// Writes the section: the hash of `mesh` when geometry only, otherwise the
+// blocks of `coded` as the flags say (versioned valence; the legacy
+// variants are read, never written). O(T).
+void write_connectivity_section(const Mesh& mesh, const GabHeader& header, const CodedConnectivity& coded,
                                 ByteWriter* out);
 
-// The section as read: the hash, or the framed block (inside the file's buffer).
+// The section as read: the hash, or the framed blocks (inside the file's
+// buffer).
 struct ConnectivitySection {
   uint64_t hash = 0;
   const uint8_t* block = nullptr;
   size_t size = 0;
+  const uint8_t* order = nullptr;  // the vertex order's block, when the file keeps it
+  size_t order_size = 0;
+  size_t order_bytes = 0;  // the order block with its framing (0 without)
 };
 
-// Reads the section, checking its frame but decoding nothing; kParseError
-// if the file ends inside it or its checksum fails. O(block size).
+// Reads the section, checking its frames but decoding nothing; kParseError
+// if the file ends inside it or a checksum fails. O(section size).
 Status read_connectivity_section(ByteReader* in, const GabHeader& header, ConnectivitySection* section);
 
-// The triangles: decoded from the block (kParseError naming the problem), or
-// for a geometry-only file those of `given` once its counts and hash match
-// the header's (kInvalidArgument otherwise, or without `given`). O(T).
+// The triangles: decoded from the blocks (kParseError naming the problem),
+// or for a geometry-only file those of `given` once its counts and hash
+// match the header's (kInvalidArgument otherwise, or without `given`).
+// O(n log n + T).
 Status decode_connectivity_section(const ConnectivitySection& section, const GabHeader& header, const Mesh* given,
                                    std::vector<int32_t>* triangles);
 

@@ -21,7 +21,8 @@ constexpr GabFlagRow kGabFlagTable[] = {
     {kGabFlagGeometryOnly, "geometry-only"},  // a connectivity hash instead of the triangles
     {kGabFlagRefined, "refined"},             // a refinement chunk follows the anchor chunks
     {kGabFlagLevels, "levels"},               // the anchor chunks are in the level layout
-    {kGabFlagReordered, "reordered"},         // valence-coded connectivity, traversal numbering
+    {kGabFlagReordered, "reordered"},         // traversal numbering: no vertex order block
+    {kGabFlagVersionedValence, "versioned-valence"},  // a version byte before the valence section
 };
 
 // The bits of kGabFlagTable together. O(rows).

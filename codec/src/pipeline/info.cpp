@@ -32,6 +32,7 @@ Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
   info->refined = header.refined();
   info->levels = header.levels();
   info->reordered = header.reordered();
+  info->versioned_valence = header.versioned_valence();
   for (int c = 0; c < 3; ++c) info->box_min[c] = header.box_min[c];
   info->step = header.step;
   info->anchors = header.anchors;
@@ -40,7 +41,8 @@ Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
   const size_t before = in.offset();
   ConnectivitySection connectivity;
   GAB_RETURN_IF_ERROR(read_connectivity_section(&in, header, &connectivity));
-  info->connectivity_bytes = in.offset() - before;
+  info->order_bytes = connectivity.order_bytes;
+  info->connectivity_bytes = in.offset() - before - info->order_bytes;
   std::vector<int32_t> level_anchors;  // level layout: anchors of chunks 1.. (from chunk 0's plan)
   for (int32_t chunk = 0; chunk < header.chunks; ++chunk) {
     const size_t at = in.offset();
@@ -82,7 +84,7 @@ Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
     info->chunks_present = chunk + 1;
   }
   if (!info->truncated && in.remaining() != 0) return corrupt("trailing bytes after the last chunk");
-  info->geometry_bytes = size - info->connectivity_bytes;
+  info->geometry_bytes = size - info->connectivity_bytes - info->order_bytes;
   return Status::Ok();
 }
 

@@ -11,6 +11,7 @@
 
 #include "anchors/anchor_chunk.h"
 #include "anchors/anchor_levels.h"
+#include "connectivity/connectivity_section.h"
 #include "common/gab_files.h"
 #include "container/byte_io.h"
 #include "container/framing.h"
@@ -79,7 +80,7 @@ TEST(LevelLayout, DecodesToTheEncodersAnchorsAndSavesTheSelectionOrder) {
   GabFileInfo info;
   ASSERT_TRUE(read_gab_info(levels.data(), levels.size(), &info).ok());
   EXPECT_TRUE(info.levels);
-  EXPECT_EQ(levels[9], kGabFlagLevels);
+  EXPECT_EQ(levels[9], kGabFlagLevels | kGabFlagVersionedValence);
   EXPECT_EQ(info.chunk_anchors, levels_stats.chunk_anchors);
   EXPECT_EQ(info.chunks_present, levels_stats.chunks);
   EXPECT_GT(levels_stats.chunks, 3);
@@ -132,7 +133,8 @@ LevelHead read_level_head(const std::vector<uint8_t>& file, int32_t n) {
   h.quantizer = Quantizer::from_grid(h.header.box_min, h.header.step, h.header.bits);
   const uint8_t* payload = nullptr;
   size_t size = 0;
-  EXPECT_EQ(read_framed(&in, &payload, &size), FrameRead::kOk);  // connectivity
+  ConnectivitySection connectivity;
+  EXPECT_TRUE(read_connectivity_section(&in, h.header, &connectivity).ok());
   EXPECT_EQ(read_framed(&in, &payload, &size), FrameRead::kOk);  // chunk 0
   size_t offset = 0;
   EXPECT_TRUE(parse_level_plan(payload, size, h.header.anchors, h.header.anchor_chunks(), &h.plan, &offset).ok());

@@ -28,11 +28,15 @@ TEST(EncodeDecode, RoundTripKeepsConnectivityAndMatchesTheEncodersShape) {
   const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
   EXPECT_EQ(es.anchors, 80);
   EXPECT_EQ(es.bytes, file.size());
-  EXPECT_EQ(es.geometry_bytes + es.connectivity_bytes, es.bytes);
+  EXPECT_EQ(es.geometry_bytes + es.connectivity_bytes + es.order_bytes, es.bytes);
+  EXPECT_GT(es.order_bytes, 0u);
   EXPECT_GT(es.chunks, 2);
   DecodeStats ds;
   const Mesh out = decode_or_die(file, DecodeOptions(), &ds);
-  EXPECT_EQ(out.triangles, mesh.triangles);
+  // The same oriented triangles on the same vertex numbers; their order and
+  // first corners are the connectivity coder's.
+  EXPECT_EQ(oriented_triangle_set(out.triangles), oriented_triangle_set(mesh.triangles));
+  EXPECT_NE(out.triangles, mesh.triangles);
   ASSERT_EQ(out.num_vertices(), mesh.num_vertices());
   EXPECT_EQ(ds.anchors, 80);
   EXPECT_EQ(ds.chunks, es.chunks);
@@ -43,6 +47,7 @@ TEST(EncodeDecode, RoundTripKeepsConnectivityAndMatchesTheEncodersShape) {
   ASSERT_TRUE(read_gab_info(file.data(), file.size(), &info).ok());
   EXPECT_EQ(info.chunk_anchors, es.chunk_anchors);
   EXPECT_EQ(info.connectivity_bytes, es.connectivity_bytes);
+  EXPECT_EQ(info.order_bytes, es.order_bytes);
   EXPECT_EQ(info.chunks_present, es.chunks);
 }
 
@@ -261,8 +266,12 @@ TEST(EncodeDecode, ReorderedFileDecodesToTheRenumberedMesh) {
   EncodeOptions kept = options;
   kept.reorder = false;
   EncodeStats kept_stats;
-  encode_or_die(mesh, kept, &kept_stats);
-  EXPECT_LT(es.connectivity_bytes, kept_stats.connectivity_bytes);
+  const std::vector<uint8_t> kept_file = encode_or_die(mesh, kept, &kept_stats);
+  // The same triangles either way; only the order block differs.
+  EXPECT_EQ(es.connectivity_bytes, kept_stats.connectivity_bytes);
+  EXPECT_EQ(es.order_bytes, 0u);
+  EXPECT_GT(kept_stats.order_bytes, 0u);
+  EXPECT_TRUE(kept_stats.new_index.empty());
 
   DecodeStats ds;
   const Mesh out = decode_or_die(file, DecodeOptions(), &ds);
@@ -271,6 +280,13 @@ TEST(EncodeDecode, ReorderedFileDecodesToTheRenumberedMesh) {
   EXPECT_EQ(oriented_triangle_set(out.triangles), oriented_triangle_set(renumbered.triangles));
   EXPECT_NEAR(relative_rms(renumbered, out), es.rms_rel, 1e-12);
   EXPECT_LE(es.rms_rel, 2e-3);
+
+  // Kept: the input's numbering, the isolated vertex and the degenerate
+  // triangle included.
+  const Mesh kept_out = decode_or_die(kept_file, DecodeOptions(), &ds);
+  EXPECT_FALSE(ds.reordered);
+  EXPECT_EQ(oriented_triangle_set(kept_out.triangles), oriented_triangle_set(mesh.triangles));
+  EXPECT_NEAR(relative_rms(mesh, kept_out), kept_stats.rms_rel, 1e-12);
 }
 
 TEST(EncodeDecode, OptionErrors) {

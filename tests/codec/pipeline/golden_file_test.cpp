@@ -4,7 +4,8 @@
 // encoding must keep writing the same header. A deliberate format change
 // bumps kGabVersion and regenerates the seeds (tests/fuzz/make_gab_seeds.sh);
 // a new flag adds seeds beside the old ones (bit 1: torus-refined; bit 2,
-// the level layout: torus-levels*).
+// the level layout: torus-levels*; bit 3: torus-reordered; bit 4:
+// torus-*ordered-v1).
 #include <dirent.h>
 #include <gtest/gtest.h>
 
@@ -73,35 +74,51 @@ TEST(GoldenFiles, SeedsDecodeToTheirPinnedShapes) {
   }
 }
 
-// A fresh encoding's header against a seed's, byte for byte.
-void expect_same_header(const std::vector<uint8_t>& fresh, const std::vector<uint8_t>& golden) {
+// A fresh encoding's header against a seed's, byte for byte but for the
+// flags, where the fresh one has `added` too (and so the header's checksum).
+void expect_same_header(const std::vector<uint8_t>& fresh, const std::vector<uint8_t>& golden, uint8_t added) {
   ASSERT_GE(fresh.size(), kGabHeaderBytes);
   ASSERT_GE(golden.size(), kGabHeaderBytes);
-  EXPECT_EQ(std::vector<uint8_t>(fresh.begin(), fresh.begin() + kGabHeaderBytes),
-            std::vector<uint8_t>(golden.begin(), golden.begin() + kGabHeaderBytes));
+  std::vector<uint8_t> expected(golden.begin(), golden.begin() + kGabHeaderBytes - 4);
+  expected[9] |= added;
+  EXPECT_EQ(std::vector<uint8_t>(fresh.begin(), fresh.begin() + kGabHeaderBytes - 4), expected);
 }
 
-TEST(GoldenFiles, ReorderedSeedIsWhatTheEncoderWritesAndDecodesToTheTorus) {
-  // torus-reordered (flag bit 3, the valence-coded connectivity): the whole
-  // file is pinned, and it decodes to the torus renumbered by new_index.
+TEST(GoldenFiles, ValenceSeedsDecodeToTheTorusInTheirNumbering) {
+  // torus-reordered: flag bit 3 alone, the first --reorder (valence section
+  // version 1, no version byte). torus-ordered-v1 and torus-reordered-v1:
+  // bit 4, the versioned valence section at version 1, with the vertex
+  // order block and without it (bit 3).
   const Mesh torus = gab_fuzz::seed_torus();
   EncodeOptions options;
   options.max_anchors = 20;
   options.chunk_growth = 1.5;
   options.reorder = true;
   EncodeStats es;
-  const std::vector<uint8_t> fresh = testing_util::encode_or_die(torus, options, &es);
-  const std::vector<uint8_t> golden = seed("torus-reordered");
-  EXPECT_EQ(fresh, golden);
-  ASSERT_GE(golden.size(), kGabHeaderBytes);
-  EXPECT_EQ(golden[9] & kGabFlagReordered, kGabFlagReordered);
-  Mesh out;
-  DecodeStats ds;
-  ASSERT_TRUE(decode_mesh(golden.data(), golden.size(), DecodeOptions(), &out, &ds).ok());
-  EXPECT_TRUE(ds.reordered);
+  testing_util::encode_or_die(torus, options, &es);
   const Mesh renumbered = renumber_vertices(torus, es.new_index);
-  EXPECT_EQ(oriented_triangle_set(out.triangles), oriented_triangle_set(renumbered.triangles));
-  EXPECT_NEAR(testing_util::relative_rms(renumbered, out), 0.0225855, 5e-6);
+  struct Seed {
+    const char* name;
+    uint8_t flags;
+    bool reordered;
+    double rms_rel;
+  };
+  for (const Seed& s : {Seed{"torus-reordered", kGabFlagReordered | kGabFlagLevels, true, 0.0225855},
+                        Seed{"torus-ordered-v1", kGabFlagVersionedValence | kGabFlagLevels, false, 0.0225855},
+                        Seed{"torus-reordered-v1", kGabFlagReordered | kGabFlagVersionedValence | kGabFlagLevels,
+                             true, 0.0225855}}) {
+    const std::vector<uint8_t> golden = seed(s.name);
+    ASSERT_GE(golden.size(), kGabHeaderBytes) << s.name;
+    EXPECT_EQ(golden[9], s.flags) << s.name;
+    Mesh out;
+    DecodeStats ds;
+    const Status status = decode_mesh(golden.data(), golden.size(), DecodeOptions(), &out, &ds);
+    ASSERT_TRUE(status.ok()) << s.name << ": " << status.message();
+    EXPECT_EQ(ds.reordered, s.reordered) << s.name;
+    const Mesh& expected = s.reordered ? renumbered : torus;
+    EXPECT_EQ(oriented_triangle_set(out.triangles), oriented_triangle_set(expected.triangles)) << s.name;
+    EXPECT_NEAR(testing_util::relative_rms(expected, out), s.rms_rel, 5e-6) << s.name;
+  }
 }
 
 TEST(GoldenFiles, EncoderWritesThePinnedHeader) {
@@ -112,7 +129,7 @@ TEST(GoldenFiles, EncoderWritesThePinnedHeader) {
   EncodeStats es;
   const std::vector<uint8_t> fresh = testing_util::encode_or_die(gab_fuzz::seed_torus(), options, &es);
   const std::vector<uint8_t> golden = seed("torus-full");
-  expect_same_header(fresh, golden);
+  expect_same_header(fresh, golden, kGabFlagVersionedValence);
 }
 
 TEST(GoldenFiles, EncoderWritesThePinnedLevelHeader) {
@@ -127,7 +144,7 @@ TEST(GoldenFiles, EncoderWritesThePinnedLevelHeader) {
   const std::vector<uint8_t> fresh = testing_util::encode_or_die(gab_fuzz::seed_torus(), options, &es);
   EXPECT_EQ(es.chunk_anchors, (std::vector<int32_t>{4, 8, 8, 10, 10}));
   const std::vector<uint8_t> golden = seed("torus-levels");
-  expect_same_header(fresh, golden);
+  expect_same_header(fresh, golden, kGabFlagVersionedValence);
 }
 
 TEST(GoldenFiles, LevelPrefixSeedDecodesItsFirstLevel) {

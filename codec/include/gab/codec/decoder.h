@@ -66,10 +66,12 @@ struct GabFileInfo {
   int32_t chunks_present = 0;       // complete chunks with a valid checksum
   bool refined = false;             // the last chunk is a refinement (not counted below)
   bool levels = false;              // the level layout (gab_format.h, flag bit 2)
-  bool reordered = false;           // valence-coded connectivity, traversal numbering (flag bit 3)
+  bool reordered = false;           // traversal numbering, no vertex order (flag bit 3)
+  bool versioned_valence = false;   // a versioned valence section (flag bit 4)
   size_t refinement_bytes = 0;      // its framed size when present
   bool truncated = false;
   size_t bytes = 0, connectivity_bytes = 0, geometry_bytes = 0;
+  size_t order_bytes = 0;              // the vertex order block with its framing (0 without)
   std::vector<size_t> chunk_bytes;     // framed size of each complete anchor chunk
   std::vector<int32_t> chunk_anchors;  // anchors each complete anchor chunk declares
 };

@@ -40,9 +40,10 @@ struct EncodeOptions {
   int bits = 0;
   double weight = 100;           // anchor weight w of the relaxed basis (positive)
   bool geometry_only = false;    // store a connectivity hash: the decoder must be given the same mesh
-  // Code the connectivity with the valence coder (flag kGabFlagReordered): several times smaller, but the
-  // decoded mesh is numbered in the coder's traversal order and lists its triangles in the order it meets
-  // them (EncodeStats::new_index maps input vertices to decoded ones). Not with geometry_only.
+  // Drop the input's vertex numbering (flag kGabFlagReordered): the decoded mesh is numbered in the
+  // connectivity coder's traversal order (EncodeStats::new_index maps input vertices to decoded ones), which
+  // saves the vertex order block (EncodeStats::order_bytes). Either way the triangles come back as a set: in
+  // the coder's order, each from the corner it chooses, orientation kept. Not with geometry_only.
   bool reorder = false;
   int32_t initial_anchors = 0;   // spread set size (at least one per component); 0: the encoder's
   // Greedy batch, a fraction (<= 1) of the anchors so far, fewer near an RMS target so the file does not
@@ -65,10 +66,11 @@ struct EncodeStats {
   int32_t anchors = 0, chunks = 0;
   int bits = 0;                   // q used
   size_t bytes = 0;               // whole file
-  size_t connectivity_bytes = 0;  // the connectivity block with its framing (or the hash)
+  size_t connectivity_bytes = 0;  // the triangles: the connectivity block with its framing (or the hash)
+  size_t order_bytes = 0;         // the vertex order block with its framing (0 when reordered or geometry only)
   bool reordered = false;         // the file is numbered in traversal order (EncodeOptions::reorder)
   std::vector<int32_t> new_index;  // reordered: the decoded mesh's number for each input vertex
-  size_t geometry_bytes = 0;      // everything else: header and anchor chunks
+  size_t geometry_bytes = 0;      // everything else: header and chunks
   double rms_rel = 0, linf_rel = 0;  // of the decoded shape against the input
   bool refined = false;              // the file ends with a refinement chunk
   bool levels = false;               // the file is in the level layout (FileLayout)

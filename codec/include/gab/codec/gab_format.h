@@ -8,7 +8,8 @@
 //
 //   magic      8 bytes  89 'G' 'A' 'B' 0D 0A 1A 0A (binary-safe, like PNG's)
 //   version    u8 (1), flags u8 (bit 0: geometry only; bit 1: refined;
-//              bit 2: levels), bits q u8, 0 u8
+//              bit 2: levels; bit 3: reordered; bit 4: versioned valence),
+//              bits q u8, 0 u8
 //   n, faces   u32, u32   vertex and triangle counts
 //   weight     f64        anchor weight w of the relaxed basis
 //   box min    3 x f64    quantization grid origin
@@ -16,9 +17,15 @@
 //   anchors    u32        anchors in the file, over all chunks
 //   chunks     u32        chunks in the file (the refinement included)
 //   crc        u32        CRC-32 of the 68 bytes above
-//   connectivity: framed block (codec/src/connectivity/connectivity_coder.h),
-//              or in geometry-only mode the u64 connectivity_hash of the
-//              mesh the decoder must be given
+//   connectivity: in geometry-only mode the u64 connectivity_hash of the
+//              mesh the decoder must be given; with bit 4 a framed block,
+//              a version byte then the valence section
+//              (codec/src/connectivity/valence_section.h), and unless bit 3
+//              the framed vertex order (connectivity/order_coder.h); with
+//              bit 3 alone the framed valence section, version 1; with
+//              neither the framed triangle list (connectivity_coder.h).
+//              What each variant means for the decoded mesh:
+//              connectivity/connectivity_section.h
 //   chunks:    framed payloads: varint anchor count b, then one range-coded
 //              stream (codec/src/anchors/anchor_chunk.h): the b anchors as
 //              a sorted subset of the vertices not anchored by earlier
@@ -43,8 +50,10 @@
 //              optimal coefficient (codec/src/anchors/refinement_chunk.h);
 //              it applies to the whole anchor set only.
 // Any prefix of whole chunks is a valid coarser approximation. A file
-// without bits 1 and 2 is what the first version of this format wrote; a
-// reader that does not know a bit refuses such files ("unknown flags").
+// without bits 1 to 4 is what the first version of this format wrote; a
+// reader that does not know a bit refuses such files ("unknown flags"). The
+// encoder writes bit 4 (with bit 3 for --reorder) unless geometry only; the
+// triangle list and the unversioned valence section are read, not written.
 //
 // Why the levels are a flag and not version 2: the header, the framing, the
 // connectivity section and the refinement are unchanged, and the flag
@@ -69,9 +78,15 @@ constexpr uint8_t kGabVersion = 1;
 constexpr uint8_t kGabFlagGeometryOnly = 1;
 constexpr uint8_t kGabFlagRefined = 2;
 constexpr uint8_t kGabFlagLevels = 4;
-// The connectivity block is the valence coder's: the vertices are numbered
-// in its traversal order and the triangles are a set (order not kept).
+// The vertices are numbered in the valence coder's traversal order (no
+// vertex order block). Alone: the connectivity block is the valence
+// section, version 1, without a version byte (the first --reorder files).
 constexpr uint8_t kGabFlagReordered = 8;
+// The connectivity block is a version byte and the valence section of that
+// version; unless reordered, a framed vertex order block follows, which
+// renumbers the decoded mesh as the input was. In both, the triangles are a
+// set: their order and first corners are the coder's.
+constexpr uint8_t kGabFlagVersionedValence = 16;
 constexpr int kGabMinBits = 2;
 constexpr int kGabMaxBits = 24;
 constexpr size_t kGabHeaderBytes = 72;
@@ -93,6 +108,9 @@ struct GabHeader {
   bool refined() const { return (flags & kGabFlagRefined) != 0; }
   bool levels() const { return (flags & kGabFlagLevels) != 0; }
   bool reordered() const { return (flags & kGabFlagReordered) != 0; }
+  bool versioned_valence() const { return (flags & kGabFlagVersionedValence) != 0; }
+  // The connectivity section ends with the input's vertex order.
+  bool keeps_coded_order() const { return versioned_valence() && !reordered() && !geometry_only(); }
   // Chunks holding anchors (all but the refinement).
   int32_t anchor_chunks() const { return chunks - (refined() ? 1 : 0); }
 };

@@ -1,0 +1,408 @@
+#include "connectivity/order_coder.h"
+
+#include <algorithm>
+#include <string>
+
+#include "entropy/int_coder.h"
+#include "entropy/range_coder.h"
+
+namespace gab {
+
+namespace {
+
+// The block's first symbol.
+enum class OrderMode : uint32_t {
+  kTraversal = 0,  // original[k] == k
+  kPredicted = 1,  // ranks relative to the predictions
+  kUniform = 2,    // ranks, each a uniform choice among the remaining
+};
+
+// The input indices not yet used, as a Fenwick tree of 0/1 counts, so that
+// an index's rank among them and the index of a given rank both cost
+// O(log n).
+class UnusedIndices {
+ public:
+  explicit UnusedIndices(int32_t n) : tree_(static_cast<size_t>(n) + 1), used_(static_cast<size_t>(n), 0), top_(1) {
+    for (int32_t i = 1; i <= n; ++i) tree_[i] = i & -i;  // all ones
+    while (top_ * 2 <= n) top_ *= 2;
+  }
+  int32_t size() const { return static_cast<int32_t>(used_.size()); }
+  bool contains(int32_t x) const { return used_[x] == 0; }
+  // How many unused indices are below x (x in [0, n]).
+  int32_t rank(int32_t x) const {
+    int32_t count = 0;
+    for (int32_t i = x; i > 0; i -= i & -i) count += tree_[i];
+    return count;
+  }
+  // The unused index with `r` unused indices below it (r < remaining).
+  int32_t select(int32_t r) const {
+    int32_t at = 0;
+    for (int32_t step = top_; step > 0; step /= 2) {
+      const int32_t next = at + step;
+      if (next < static_cast<int32_t>(tree_.size()) && tree_[next] <= r) {
+        at = next;
+        r -= tree_[next];
+      }
+    }
+    return at;  // tree positions are 1-based: `at` is the 0-based index
+  }
+  // The nearest unused index above / below x, or -1.
+  int32_t above(int32_t x) const {
+    for (int32_t y = x + 1; y < size() && y <= x + 4; ++y) {
+      if (!used_[y]) return y;  // the usual case, without the tree
+    }
+    const int32_t r = rank(x + 1);
+    return r < remaining() ? select(r) : -1;
+  }
+  int32_t below(int32_t x) const {
+    for (int32_t y = x - 1; y >= 0 && y >= x - 4; --y) {
+      if (!used_[y]) return y;
+    }
+    const int32_t r = rank(x);
+    return r > 0 ? select(r - 1) : -1;
+  }
+  int32_t remaining() const { return remaining_ < 0 ? size() : remaining_; }
+  void remove(int32_t x) {
+    used_[x] = 1;
+    remaining_ = remaining() - 1;
+    for (int32_t i = x + 1; i < static_cast<int32_t>(tree_.size()); i += i & -i) --tree_[i];
+  }
+
+ private:
+  std::vector<int32_t> tree_;
+  std::vector<uint8_t> used_;
+  int32_t top_;
+  int32_t remaining_ = -1;
+};
+
+// Each vertex's neighbours, CSR, without repeats.
+struct Adjacency {
+  std::vector<int32_t> start, neighbour;
+};
+
+Adjacency adjacency(int32_t n, const std::vector<int32_t>& triangles) {
+  std::vector<int32_t> start(static_cast<size_t>(n) + 1, 0);
+  for (int32_t v : triangles) start[static_cast<size_t>(v) + 1] += 2;
+  for (int32_t v = 0; v < n; ++v) start[v + 1] += start[v];
+  std::vector<int32_t> fill(start.begin(), start.end() - 1), all(2 * triangles.size());
+  for (size_t f = 0; f + 2 < triangles.size(); f += 3) {
+    for (int i = 0; i < 3; ++i) {
+      const int32_t u = triangles[f + i];
+      all[fill[u]++] = triangles[f + (i + 1) % 3];
+      all[fill[u]++] = triangles[f + (i + 2) % 3];
+    }
+  }
+  Adjacency adj;
+  adj.start.assign(static_cast<size_t>(n) + 1, 0);
+  adj.neighbour.reserve(all.size() / 2);
+  for (int32_t v = 0; v < n; ++v) {
+    std::sort(all.begin() + start[v], all.begin() + start[v + 1]);
+    for (int32_t e = start[v]; e < start[v + 1]; ++e) {
+      if (all[e] != v && (e == start[v] || all[e] != all[e - 1])) adj.neighbour.push_back(all[e]);
+    }
+    adj.start[v + 1] = static_cast<int32_t>(adj.neighbour.size());
+  }
+  return adj;
+}
+
+// The walk both sides make along the input numbering: for input index i,
+// the vertices that input indices i - d name (d among the gaps that have
+// most often joined a vertex to its earlier neighbours: 1 and 2 along
+// strips, 1 and a row's length in scans) offer their unplaced neighbours as
+// candidates. Each candidate has a pattern (which of those vertices it
+// touches, how many placed neighbours it has), and candidates are ranked by
+// how often their pattern has been the right one so far, so the walk learns
+// the rule the numbering follows: a coherent numbering puts the right
+// vertex first.
+class OrderWalk {
+ public:
+  static constexpr int kSources = 3;
+  static constexpr int kMaxCandidates = 32;
+  static constexpr int32_t kMaxGap = 1 << 12;
+
+  OrderWalk(int32_t n, const std::vector<int32_t>& triangles)
+      : adj_(adjacency(n, triangles)),
+        vertex_of_(static_cast<size_t>(n), -1),
+        index_of_(static_cast<size_t>(n), -1),
+        stamp_(static_cast<size_t>(n), -1),
+        gap_count_(kMaxGap + 1, 0),
+        unplaced_(n) {
+    for (int s = 0; s < kSources; ++s) top_gap_[s] = s + 1;
+  }
+
+  // The candidates for input index i, best first (at most kMaxCandidates);
+  // `confident`: the first's pattern has hit more than twice as often as the
+  // second's.
+  int candidates(int32_t i, int32_t* out, bool* confident) {
+    int count = 0;
+    int64_t score[kMaxCandidates];
+    int32_t source[kSources];
+    for (int s = 0; s < kSources; ++s) source[s] = top_gap_[s] <= i ? vertex_of_[i - top_gap_[s]] : -1;
+    for (int s = 0; s < kSources; ++s) {
+      if (source[s] < 0) continue;
+      for (int32_t e = adj_.start[source[s]]; e < adj_.start[source[s] + 1] && count < kMaxCandidates; ++e) {
+        const int32_t w = adj_.neighbour[e];
+        if (index_of_[w] >= 0 || stamp_[w] == i) continue;
+        stamp_[w] = i;
+        int placed = 0, pattern = 0;
+        for (int32_t f = adj_.start[w]; f < adj_.start[w + 1]; ++f) {
+          const int32_t u = adj_.neighbour[f];
+          if (index_of_[u] < 0) continue;
+          ++placed;
+          for (int t = 0; t < kSources; ++t) {
+            if (u == source[t]) pattern |= 1 << t;
+          }
+        }
+        pattern |= std::min(placed, 3) << kSources;
+        const int64_t fit = ((hits_[pattern] + 1) << 20) / (offers_[pattern] + 2);
+        // insertion, stable: equal fits keep the order they were met in
+        int at = count++;
+        while (at > 0 && score[at - 1] < fit) {
+          score[at] = score[at - 1];
+          out[at] = out[at - 1];
+          offered_[at] = offered_[at - 1];
+          --at;
+        }
+        score[at] = fit;
+        out[at] = w;
+        offered_[at] = pattern;
+      }
+    }
+    offered_count_ = count;
+    *confident = count == 1 || (count > 1 && score[0] > 2 * score[1]);
+    return count;
+  }
+
+  // After candidates(): which one was right (-1: none); the patterns learn.
+  void learn(int position) {
+    for (int c = 0; c < offered_count_; ++c) ++offers_[offered_[c]];
+    if (position >= 0) ++hits_[offered_[position]];
+  }
+
+  // How far back input index i's latest placed neighbour of `vertex` is (0:
+  // none placed).
+  int32_t latest_gap(int32_t i, int32_t vertex) const {
+    int32_t latest = -1;
+    for (int32_t e = adj_.start[vertex]; e < adj_.start[vertex + 1]; ++e) latest = std::max(latest, index_of_[adj_.neighbour[e]]);
+    return latest < 0 ? 0 : i - latest;
+  }
+
+  // After a miss, for a vertex whose latest placed neighbour is input index
+  // i - gap: the unplaced neighbours of that one that were not candidates
+  // and have no later placed neighbour, in the adjacency's order (at most
+  // kMaxCandidates).
+  int gap_candidates(int32_t i, int32_t gap, int32_t* out) const {
+    int count = 0;
+    const int32_t source = vertex_of_[i - gap];
+    for (int32_t e = adj_.start[source]; e < adj_.start[source + 1] && count < kMaxCandidates; ++e) {
+      const int32_t w = adj_.neighbour[e];
+      if (index_of_[w] < 0 && stamp_[w] != i && latest_gap(i, w) == gap) out[count++] = w;
+    }
+    return count;
+  }
+
+  // Input index i names `vertex` (not yet placed).
+  void place(int32_t i, int32_t vertex) {
+    vertex_of_[i] = vertex;
+    index_of_[vertex] = i;
+    unplaced_.remove(vertex);
+    for (int32_t e = adj_.start[vertex]; e < adj_.start[vertex + 1]; ++e) {
+      const int32_t u = adj_.neighbour[e];
+      if (index_of_[u] < 0 || u == vertex || i - index_of_[u] > kMaxGap) continue;
+      count_gap(i - index_of_[u]);
+    }
+  }
+
+  int32_t vertex_of(int32_t i) const { return vertex_of_[i]; }
+  bool placed(int32_t vertex) const { return index_of_[vertex] >= 0; }
+  const UnusedIndices& unplaced() const { return unplaced_; }
+
+ private:
+  // One more time gap d joined a vertex to an earlier neighbour; keeps
+  // top_gap_ the kSources most frequent gaps, most frequent first.
+  void count_gap(int32_t d) {
+    const int64_t c = ++gap_count_[d];
+    int at = 0;
+    while (at < kSources && top_gap_[at] != d) ++at;
+    if (at == kSources) {
+      if (c <= gap_count_[top_gap_[kSources - 1]]) return;
+      at = kSources - 1;
+      top_gap_[at] = d;
+    }
+    while (at > 0 && gap_count_[top_gap_[at - 1]] < c) {
+      std::swap(top_gap_[at - 1], top_gap_[at]);
+      --at;
+    }
+  }
+
+  Adjacency adj_;
+  std::vector<int32_t> vertex_of_, index_of_, stamp_;
+  std::vector<int64_t> gap_count_;
+  int32_t top_gap_[kSources];
+  static constexpr int kPatterns = 4 << kSources;
+  int64_t hits_[kPatterns] = {}, offers_[kPatterns] = {};
+  int offered_[kMaxCandidates] = {};
+  int offered_count_ = 0;
+  UnusedIndices unplaced_;
+};
+
+// A uniform choice of r in [0, m) in truncated binary: floor(log2 m) or one
+// more bits, never more than 0.09 bit above log2 m on average.
+void encode_uniform(RangeEncoder* enc, uint32_t r, uint32_t m) {
+  if (m <= 1) return;
+  int bits = 0;
+  while ((uint64_t{1} << (bits + 1)) <= m) ++bits;          // 2^bits <= m < 2^(bits+1)
+  const uint32_t shorter = static_cast<uint32_t>((uint64_t{1} << (bits + 1)) - m);  // codes of `bits` bits
+  if (r < shorter) {
+    enc->encode_raw(r, bits);
+  } else {
+    enc->encode_raw(r + shorter, bits + 1);
+  }
+}
+
+uint32_t decode_uniform(RangeDecoder* dec, uint32_t m) {
+  if (m <= 1) return 0;
+  int bits = 0;
+  while ((uint64_t{1} << (bits + 1)) <= m) ++bits;
+  const uint32_t shorter = static_cast<uint32_t>((uint64_t{1} << (bits + 1)) - m);
+  const uint32_t r = bits > 0 ? dec->decode_raw(bits) : 0;
+  if (r < shorter) return r;
+  return ((r << 1) | dec->decode_raw(1)) - shorter;
+}
+
+// Input index i against its candidates: the position of its vertex among
+// them (0 for none; nothing is coded without candidates), in a context of
+// how many there are and whether the first stands out; without a hit, the
+// gap back to its latest placed neighbour and its place among that one's
+// neighbours that fit (gap_candidates); with no neighbour placed, its rank
+// among the unplaced vertices relative to that of the vertex after input
+// index i - 1's.
+struct OrderModels {
+  static constexpr int kContexts = 8;
+  static int context(int count, bool confident) { return 2 * std::min(count, 3) + (confident ? 1 : 0); }
+  UIntCoder position{kContexts}, gap, gap_position{3};
+  SIntCoder offset;
+};
+
+int32_t escape_guess(const OrderWalk& walk, int32_t i, int32_t n) {
+  return i > 0 ? std::min(walk.vertex_of(i - 1) + 1, n) : 0;
+}
+
+std::vector<uint8_t> encode_with(OrderMode mode, int32_t n, const std::vector<int32_t>& triangles,
+                                 const std::vector<int32_t>& original) {
+  RangeEncoder enc;
+  UIntCoder mode_coder;
+  mode_coder.encode(&enc, static_cast<uint32_t>(mode));
+  if (mode == OrderMode::kTraversal) return enc.finish();
+  if (mode == OrderMode::kUniform) {
+    UnusedIndices unused(n);
+    for (int32_t k = 0; k < n; ++k) {
+      encode_uniform(&enc, static_cast<uint32_t>(unused.rank(original[k])), static_cast<uint32_t>(n - k));
+      unused.remove(original[k]);
+    }
+    return enc.finish();
+  }
+  std::vector<int32_t> vertex_of(static_cast<size_t>(n));
+  for (int32_t k = 0; k < n; ++k) vertex_of[original[k]] = k;
+  OrderWalk walk(n, triangles);
+  OrderModels models;
+  int32_t cands[OrderWalk::kMaxCandidates];
+  for (int32_t i = 0; i < n; ++i) {
+    const int32_t v = vertex_of[i];
+    bool confident = false;
+    const int count = walk.candidates(i, cands, &confident);
+    int position = 0;
+    while (position < count && cands[position] != v) ++position;
+    if (count > 0) {
+      models.position.encode(&enc, position < count ? static_cast<uint32_t>(position + 1) : 0,
+                             OrderModels::context(count, confident));
+    }
+    walk.learn(position < count ? position : -1);
+    if (position == count) {
+      int32_t gap = walk.latest_gap(i, v);
+      int found = gap > 0 ? walk.gap_candidates(i, gap, cands) : 0, at = 0;
+      while (at < found && cands[at] != v) ++at;
+      if (at == found) gap = 0;  // beyond kMaxCandidates: by rank, as with no placed neighbour
+      models.gap.encode(&enc, static_cast<uint32_t>(gap));
+      if (gap == 0) {
+        models.offset.encode(&enc, walk.unplaced().rank(v) - walk.unplaced().rank(escape_guess(walk, i, n)));
+      } else if (found > 1) {
+        models.gap_position.encode(&enc, static_cast<uint32_t>(at), std::min(found, 4) - 2);
+      }
+    }
+    walk.place(i, v);
+  }
+  return enc.finish();
+}
+
+}  // namespace
+
+std::vector<uint8_t> encode_vertex_order(int32_t n, const std::vector<int32_t>& triangles,
+                                         const std::vector<int32_t>& original) {
+  bool traversal = true;
+  for (int32_t k = 0; k < n && traversal; ++k) traversal = original[k] == k;
+  if (traversal) return encode_with(OrderMode::kTraversal, n, triangles, original);
+  std::vector<uint8_t> predicted = encode_with(OrderMode::kPredicted, n, triangles, original);
+  std::vector<uint8_t> uniform = encode_with(OrderMode::kUniform, n, triangles, original);
+  return predicted.size() <= uniform.size() ? predicted : uniform;
+}
+
+Status decode_vertex_order(const uint8_t* data, size_t size, int32_t n, const std::vector<int32_t>& triangles,
+                           std::vector<int32_t>* original) {
+  auto corrupt = [](const std::string& what) {
+    return Status::Error(StatusCode::kParseError, "vertex order: " + what);
+  };
+  if (n < 1) return Status::Error(StatusCode::kInvalidArgument, "vertex order: bad vertex count");
+  RangeDecoder dec(data, size);
+  UIntCoder mode_coder;
+  const uint32_t mode = mode_coder.decode(&dec);
+  original->assign(static_cast<size_t>(n), 0);
+  if (mode == static_cast<uint32_t>(OrderMode::kTraversal)) {
+    for (int32_t k = 0; k < n; ++k) (*original)[k] = k;
+  } else if (mode == static_cast<uint32_t>(OrderMode::kPredicted) ||
+             mode == static_cast<uint32_t>(OrderMode::kUniform)) {
+    if (mode == static_cast<uint32_t>(OrderMode::kUniform)) {
+      UnusedIndices unused(n);
+      for (int32_t k = 0; k < n; ++k) {
+        (*original)[k] = unused.select(static_cast<int32_t>(decode_uniform(&dec, static_cast<uint32_t>(n - k))));
+        unused.remove((*original)[k]);
+      }
+    } else {
+      OrderWalk walk(n, triangles);
+      OrderModels models;
+      int32_t cands[OrderWalk::kMaxCandidates];
+      for (int32_t i = 0; i < n; ++i) {
+        bool confident = false;
+        const int count = walk.candidates(i, cands, &confident);
+        const uint32_t position = count > 0 ? models.position.decode(&dec, OrderModels::context(count, confident)) : 0;
+        if (position > static_cast<uint32_t>(count)) return corrupt("candidate out of range");
+        int32_t v;
+        const uint32_t gap = position > 0 ? 0 : models.gap.decode(&dec);
+        if (gap > static_cast<uint32_t>(i)) return corrupt("gap out of range");
+        walk.learn(static_cast<int>(position) - 1);
+        if (position > 0) {
+          v = cands[position - 1];
+        } else if (gap > 0) {
+          const int found = walk.gap_candidates(i, static_cast<int32_t>(gap), cands);
+          const uint32_t at = found > 1 ? models.gap_position.decode(&dec, std::min(found, 4) - 2) : 0;
+          if (at >= static_cast<uint32_t>(found)) return corrupt("gap candidate out of range");
+          v = cands[at];
+        } else {
+          const int64_t rank = static_cast<int64_t>(walk.unplaced().rank(escape_guess(walk, i, n))) +
+                               models.offset.decode(&dec);
+          if (rank < 0 || rank >= n - i) return corrupt("vertex rank out of range");
+          v = walk.unplaced().select(static_cast<int32_t>(rank));
+        }
+        (*original)[v] = i;
+        walk.place(i, v);
+      }
+    }
+  } else {
+    return corrupt("unknown mode " + std::to_string(mode));
+  }
+  if (dec.overrun()) return corrupt("stream truncated");
+  if (dec.bytes_consumed() != size) return corrupt("trailing bytes");
+  return Status::Ok();
+}
+
+}  // namespace gab
