@@ -111,9 +111,11 @@ Adjacency adjacency(int32_t n, const std::vector<int32_t>& triangles) {
 // strips, 1 and a row's length in scans) offer their unplaced neighbours as
 // candidates. Each candidate has a pattern (which of those vertices it
 // touches, how many placed neighbours it has), and candidates are ranked by
-// how often their pattern has been the right one so far, so the walk learns
-// the rule the numbering follows: a coherent numbering puts the right
-// vertex first.
+// how often their pattern has been the right one so far after the pattern
+// that was right for i - 1, so the walk learns the rule the numbering
+// follows and notices when it switches (igea's strips run along a row, then
+// across: 24,502 -> 19,949 bytes with the previous pattern as context): a
+// coherent numbering puts the right vertex first.
 class OrderWalk {
  public:
   static constexpr int kSources = 3;
@@ -131,9 +133,9 @@ class OrderWalk {
   }
 
   // The candidates for input index i, best first (at most kMaxCandidates);
-  // `confident`: the first's pattern has hit more than twice as often as the
-  // second's.
-  int candidates(int32_t i, int32_t* out, bool* confident) {
+  // `certainty` (0..3): whether the first's pattern has hit twice as often
+  // as the second's, and at least 7 times in 8.
+  int candidates(int32_t i, int32_t* out, int* certainty) {
     int count = 0;
     int64_t score[kMaxCandidates];
     int32_t source[kSources];
@@ -154,7 +156,7 @@ class OrderWalk {
           }
         }
         pattern |= std::min(placed, 3) << kSources;
-        const int64_t fit = ((hits_[pattern] + 1) << 20) / (offers_[pattern] + 2);
+        const int64_t fit = ((hits_[last_][pattern] + 1) << 20) / (offers_[last_][pattern] + 2);
         // insertion, stable: equal fits keep the order they were met in
         int at = count++;
         while (at > 0 && score[at - 1] < fit) {
@@ -169,14 +171,16 @@ class OrderWalk {
       }
     }
     offered_count_ = count;
-    *confident = count == 1 || (count > 1 && score[0] > 2 * score[1]);
+    const int64_t one = int64_t{1} << 20;
+    *certainty = count == 0 ? 0 : (count == 1 || score[0] > 2 * score[1] ? 2 : 0) + (score[0] >= one * 7 / 8 ? 1 : 0);
     return count;
   }
 
   // After candidates(): which one was right (-1: none); the patterns learn.
   void learn(int position) {
-    for (int c = 0; c < offered_count_; ++c) ++offers_[offered_[c]];
-    if (position >= 0) ++hits_[offered_[position]];
+    for (int c = 0; c < offered_count_; ++c) ++offers_[last_][offered_[c]];
+    if (position >= 0) ++hits_[last_][offered_[position]];
+    last_ = position >= 0 ? offered_[position] : kPatterns;
   }
 
   // How far back input index i's latest placed neighbour of `vertex` is (0:
@@ -240,7 +244,8 @@ class OrderWalk {
   std::vector<int64_t> gap_count_;
   int32_t top_gap_[kSources];
   static constexpr int kPatterns = 4 << kSources;
-  int64_t hits_[kPatterns] = {}, offers_[kPatterns] = {};
+  int64_t hits_[kPatterns + 1][kPatterns] = {}, offers_[kPatterns + 1][kPatterns] = {};
+  int last_ = kPatterns;  // the previous hit's pattern (kPatterns: a miss)
   int offered_[kMaxCandidates] = {};
   int offered_count_ = 0;
   UnusedIndices unplaced_;
@@ -278,8 +283,8 @@ uint32_t decode_uniform(RangeDecoder* dec, uint32_t m) {
 // among the unplaced vertices relative to that of the vertex after input
 // index i - 1's.
 struct OrderModels {
-  static constexpr int kContexts = 8;
-  static int context(int count, bool confident) { return 2 * std::min(count, 3) + (confident ? 1 : 0); }
+  static constexpr int kContexts = 16;
+  static int context(int count, int certainty) { return 4 * std::min(count, 3) + certainty; }
   UIntCoder position{kContexts}, gap, gap_position{3};
   SIntCoder offset;
 };
@@ -309,13 +314,13 @@ std::vector<uint8_t> encode_with(OrderMode mode, int32_t n, const std::vector<in
   int32_t cands[OrderWalk::kMaxCandidates];
   for (int32_t i = 0; i < n; ++i) {
     const int32_t v = vertex_of[i];
-    bool confident = false;
-    const int count = walk.candidates(i, cands, &confident);
+    int certainty = 0;
+    const int count = walk.candidates(i, cands, &certainty);
     int position = 0;
     while (position < count && cands[position] != v) ++position;
     if (count > 0) {
       models.position.encode(&enc, position < count ? static_cast<uint32_t>(position + 1) : 0,
-                             OrderModels::context(count, confident));
+                             OrderModels::context(count, certainty));
     }
     walk.learn(position < count ? position : -1);
     if (position == count) {
@@ -372,9 +377,9 @@ Status decode_vertex_order(const uint8_t* data, size_t size, int32_t n, const st
       OrderModels models;
       int32_t cands[OrderWalk::kMaxCandidates];
       for (int32_t i = 0; i < n; ++i) {
-        bool confident = false;
-        const int count = walk.candidates(i, cands, &confident);
-        const uint32_t position = count > 0 ? models.position.decode(&dec, OrderModels::context(count, confident)) : 0;
+        int certainty = 0;
+        const int count = walk.candidates(i, cands, &certainty);
+        const uint32_t position = count > 0 ? models.position.decode(&dec, OrderModels::context(count, certainty)) : 0;
         if (position > static_cast<uint32_t>(count)) return corrupt("candidate out of range");
         int32_t v;
         const uint32_t gap = position > 0 ? 0 : models.gap.decode(&dec);

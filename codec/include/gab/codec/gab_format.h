@@ -83,7 +83,8 @@ constexpr uint8_t kGabFlagLevels = 4;
 // section, version 1, without a version byte (the first --reorder files).
 constexpr uint8_t kGabFlagReordered = 8;
 // The connectivity block is a version byte and the valence section of that
-// version; unless reordered, a framed vertex order block follows, which
+// version (the byte versions the vertex order's coder too); unless
+// reordered, a framed vertex order block follows, which
 // renumbers the decoded mesh as the input was. In both, the triangles are a
 // set: their order and first corners are the coder's.
 constexpr uint8_t kGabFlagVersionedValence = 16;
