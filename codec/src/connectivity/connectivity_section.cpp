@@ -62,7 +62,7 @@ Status decode_connectivity_section(const ConnectivitySection& section, const Gab
     return Status::Ok();
   }
   const Status s = header.reordered() ? decode_valence_section(section.block, section.size, header.num_vertices,
-                                                              header.num_triangles, triangles)
+                                                              header.num_triangles, triangles, 1)
                                       : decode_connectivity(section.block, section.size, header.num_vertices,
                                                             header.num_triangles, triangles);
   if (!s.ok()) return corrupt("connectivity block: " + s.message());

@@ -208,7 +208,8 @@ ClosedMesh close_boundaries(const ManifoldCut& cut) {
   return closed;
 }
 
-void encode_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int32_t>* order) {
+void encode_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int32_t>* order, int version) {
+  version = std::min(std::max(version, 1), kValenceCoderLatest);
   ValenceModels models;
   const int32_t halves = static_cast<int32_t>(mesh.triangles.size());
   const int32_t n = mesh.num_vertices;
@@ -396,10 +397,14 @@ void encode_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int3
   }
 }
 
-Status decode_valences(RangeDecoder* dec, int32_t max_vertices, int64_t max_triangles, DecodedConnectivity* out) {
+Status decode_valences(RangeDecoder* dec, int32_t max_vertices, int64_t max_triangles, DecodedConnectivity* out,
+                       int version) {
   auto corrupt = [](const std::string& what) {
     return Status::Error(StatusCode::kParseError, "connectivity: " + what);
   };
+  if (version < 1 || version > kValenceCoderLatest) {
+    return corrupt("unknown valence coder version " + std::to_string(version));
+  }
   ValenceModels models;
   VertexState vs;
   out->num_vertices = 0;

@@ -51,14 +51,21 @@ struct DecodedConnectivity {
   std::vector<uint8_t> dummy;
 };
 
-// Codes `mesh`; order[k] is the mesh vertex the decoder will number k.
-// O(T) plus O(offset) per SPLIT and O(list) per MERGE.
-void encode_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int32_t>* order);
+// Coder versions. 1: Touma & Gotsman's traversal as first shipped (the
+// focus moves to a neighbour after each CLOSE). 2: see valence_coder.cpp.
+constexpr int kValenceCoderLatest = 2;
+
+// Codes `mesh` with coder `version` (1..kValenceCoderLatest, clamped into
+// it); order[k] is the mesh vertex the decoder will number k. O(T) plus
+// O(offset) per SPLIT and O(list) per MERGE.
+void encode_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int32_t>* order, int version);
 
 // Decodes what encode_valences coded. Untrusted input: at most
 // `max_triangles` triangles and `max_vertices` vertices (dummies included)
 // are built, every offset and valence is checked against the state, and
-// anything inconsistent is a kParseError naming what. O(T) as the encoder.
-Status decode_valences(RangeDecoder* dec, int32_t max_vertices, int64_t max_triangles, DecodedConnectivity* out);
+// anything inconsistent is a kParseError naming what, an unknown `version`
+// included. O(T) as the encoder.
+Status decode_valences(RangeDecoder* dec, int32_t max_vertices, int64_t max_triangles, DecodedConnectivity* out,
+                       int version);
 
 }  // namespace gab

@@ -258,11 +258,11 @@ Quantizer dense_grid(const Box& box, double target_rms_rel, int* bits) {
 // valence coder's traversal order, its triangles in the coder's order (the
 // section is decoded here, so the two sides agree by construction).
 Status renumber_for_valence(const Mesh& mesh, ValenceSection* section, Mesh* renumbered) {
-  *section = encode_valence_section(mesh.num_vertices(), mesh.triangles);
+  *section = encode_valence_section(mesh.num_vertices(), mesh.triangles, 1);
   *renumbered = renumber_vertices(mesh, section->new_index);
   // The same triangles, in the decoder's order and corner order.
   return decode_valence_section(section->bytes.data(), section->bytes.size(), mesh.num_vertices(),
-                                mesh.num_triangles(), &renumbered->triangles);
+                                mesh.num_triangles(), &renumbered->triangles, 1);
 }
 
 // encode_mesh after the checks, on the mesh as the decoder will number it.
