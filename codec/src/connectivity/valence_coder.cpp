@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <string>
 
+#include "connectivity/active_lists.h"
+#include "connectivity/lazy_valence_coder.h"
 #include "entropy/int_coder.h"
 
 namespace gab {
@@ -24,100 +26,6 @@ int valence_context(int32_t focus_degree, int32_t next_degree, bool dummy) {
   if (dummy) return kValenceContexts - 1;
   return std::min(std::max(focus_degree + next_degree - 8, 0), kValenceContexts - 2);
 }
-
-// The boundary of the conquered region: cycles of vertex occurrences
-// ("nodes"), the region on their left. The current cycle is the one the
-// focus is in; the others wait on a stack.
-struct ActiveLists {
-  struct Pending {
-    int32_t head, length;
-  };
-  std::vector<int32_t> vertex, next, prev;  // per node
-  std::vector<Pending> stack;
-  int32_t focus = -1, length = 0;
-
-  int32_t new_node(int32_t v) {
-    vertex.push_back(v);
-    next.push_back(-1);
-    prev.push_back(-1);
-    return static_cast<int32_t>(vertex.size()) - 1;
-  }
-  int32_t advance(int32_t node, int32_t steps) const {
-    for (int32_t i = 0; i < steps; ++i) node = next[node];
-    return node;
-  }
-  int32_t retreat(int32_t node, int32_t steps) const {
-    for (int32_t i = 0; i < steps; ++i) node = prev[node];
-    return node;
-  }
-  void link(int32_t a, int32_t b) {
-    next[a] = b;
-    prev[b] = a;
-  }
-  // The seed triangle a b c: one cycle, focus on a.
-  void start(int32_t a, int32_t b, int32_t c) {
-    const int32_t na = new_node(a), nb = new_node(b), nc = new_node(c);
-    link(na, nb);
-    link(nb, nc);
-    link(nc, na);
-    focus = na;
-    length = 3;
-  }
-  // ADD: the new vertex w between the focus and its successor.
-  int32_t add(int32_t w) {
-    const int32_t x = new_node(w), n1 = next[focus];
-    link(focus, x);
-    link(x, n1);
-    ++length;
-    return x;
-  }
-  // CLOSE: the focus's last triangle joins its neighbours; the focus leaves
-  // the list and its successor takes over. Returns the predecessor.
-  int32_t close() {
-    const int32_t p = prev[focus], n1 = next[focus];
-    link(p, n1);
-    --length;
-    focus = p;
-    return p;
-  }
-  // SPLIT at node m, `offset` steps after the focus: the cycle
-  // focus -> m -> ... stays current; w' -> next(focus) -> ... -> prev(m)
-  // (w' a new occurrence of m's vertex) waits. Returns w'.
-  int32_t split(int32_t m, int32_t offset) {
-    const int32_t x = new_node(vertex[m]), n1 = next[focus], mp = prev[m];
-    link(x, n1);
-    link(mp, x);
-    link(focus, m);
-    stack.push_back({x, offset});
-    length = length - offset + 1;
-    return x;
-  }
-  // MERGE with node m of the waiting cycle stack[index]: one cycle
-  // focus -> m -> ... -> prev(m) -> w' -> next(focus) -> ... Returns w'.
-  int32_t merge(int32_t m, size_t index) {
-    const int32_t x = new_node(vertex[m]), n1 = next[focus], mp = prev[m];
-    length += stack[index].length + 1;
-    stack.erase(stack.begin() + static_cast<std::ptrdiff_t>(index));
-    link(focus, m);
-    link(mp, x);
-    link(x, n1);
-    return x;
-  }
-  // CLOSE_NEXT: the focus's triangle was the successor's last: the
-  // successor leaves the list, the focus stays.
-  void close_next() {
-    link(focus, next[next[focus]]);
-    --length;
-  }
-  // The current cycle is done: the next waiting one becomes current.
-  bool pop() {
-    if (stack.empty()) return false;
-    focus = stack.back().head;
-    length = stack.back().length;
-    stack.pop_back();
-    return true;
-  }
-};
 
 // Per vertex, both sides: triangles not yet conquered around it, and its
 // occurrences on the active lists.
@@ -208,8 +116,9 @@ ClosedMesh close_boundaries(const ManifoldCut& cut) {
   return closed;
 }
 
-void encode_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int32_t>* order, int version) {
-  version = std::min(std::max(version, 1), kValenceCoderLatest);
+namespace {
+
+void encode_valences_v1(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int32_t>* order) {
   ValenceModels models;
   const int32_t halves = static_cast<int32_t>(mesh.triangles.size());
   const int32_t n = mesh.num_vertices;
@@ -397,14 +306,10 @@ void encode_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int3
   }
 }
 
-Status decode_valences(RangeDecoder* dec, int32_t max_vertices, int64_t max_triangles, DecodedConnectivity* out,
-                       int version) {
+Status decode_valences_v1(RangeDecoder* dec, int32_t max_vertices, int64_t max_triangles, DecodedConnectivity* out) {
   auto corrupt = [](const std::string& what) {
     return Status::Error(StatusCode::kParseError, "connectivity: " + what);
   };
-  if (version < 1 || version > kValenceCoderLatest) {
-    return corrupt("unknown valence coder version " + std::to_string(version));
-  }
   ValenceModels models;
   VertexState vs;
   out->num_vertices = 0;
@@ -517,6 +422,23 @@ Status decode_valences(RangeDecoder* dec, int32_t max_vertices, int64_t max_tria
     if (vs.remaining[v] != 0) return corrupt("vertex " + std::to_string(v) + " falls short of its valence");
   }
   return Status::Ok();
+}
+
+}  // namespace
+
+void encode_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int32_t>* order, int version) {
+  if (version <= 1) {
+    encode_valences_v1(mesh, enc, order);
+  } else {
+    encode_lazy_valences(mesh, enc, order);
+  }
+}
+
+Status decode_valences(RangeDecoder* dec, int32_t max_vertices, int64_t max_triangles, DecodedConnectivity* out,
+                       int version) {
+  if (version == 1) return decode_valences_v1(dec, max_vertices, max_triangles, out);
+  if (version == 2) return decode_lazy_valences(dec, max_vertices, max_triangles, out);
+  return Status::Error(StatusCode::kParseError, "connectivity: unknown valence coder version " + std::to_string(version));
 }
 
 }  // namespace gab
