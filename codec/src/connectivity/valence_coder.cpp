@@ -8,7 +8,7 @@
 #include <string>
 
 #include "connectivity/active_lists.h"
-#include "connectivity/lazy_valence_coder.h"
+#include "connectivity/adaptive_valence_coder.h"
 #include "entropy/int_coder.h"
 
 namespace gab {
@@ -74,6 +74,31 @@ bool closes_next(const ActiveLists& lists, const VertexState& vs, int32_t focus)
 }  // namespace
 
 
+int32_t count_components(const ClosedMesh& mesh) {
+  const int32_t count = static_cast<int32_t>(mesh.triangles.size() / 3);
+  int32_t components = 0;
+  std::vector<uint8_t> seen(static_cast<size_t>(count), 0);
+  std::vector<int32_t> queue;
+  for (int32_t t = 0; t < count; ++t) {
+    if (seen[t]) continue;
+    ++components;
+    seen[t] = 1;
+    queue.assign(1, t);
+    while (!queue.empty()) {
+      const int32_t u = queue.back();
+      queue.pop_back();
+      for (int i = 0; i < 3; ++i) {
+        const int32_t o = mesh.opposite[3 * u + i] / 3;
+        if (!seen[o]) {
+          seen[o] = 1;
+          queue.push_back(o);
+        }
+      }
+    }
+  }
+  return components;
+}
+
 ClosedMesh close_boundaries(const ManifoldCut& cut) {
   ClosedMesh closed;
   closed.num_vertices = cut.num_vertices;
@@ -130,29 +155,7 @@ void encode_valences_v1(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<i
   std::vector<uint8_t> conquered(static_cast<size_t>(halves / 3), 0), visited(static_cast<size_t>(n), 0);
   order->clear();
 
-  // Components of the closed mesh (connected through the opposites).
-  int32_t components = 0;
-  {
-    std::vector<uint8_t> seen(static_cast<size_t>(halves / 3), 0);
-    std::vector<int32_t> queue;
-    for (int32_t t = 0; t < halves / 3; ++t) {
-      if (seen[t]) continue;
-      ++components;
-      seen[t] = 1;
-      queue.assign(1, t);
-      while (!queue.empty()) {
-        const int32_t u = queue.back();
-        queue.pop_back();
-        for (int i = 0; i < 3; ++i) {
-          const int32_t o = mesh.opposite[3 * u + i] / 3;
-          if (!seen[o]) {
-            seen[o] = 1;
-            queue.push_back(o);
-          }
-        }
-      }
-    }
-  }
+  const int32_t components = count_components(mesh);
   models.components.encode(enc, static_cast<uint32_t>(components));
 
   // Encoder-only node data: the conquered triangle's half-edge each node
@@ -430,14 +433,14 @@ void encode_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int3
   if (version <= 1) {
     encode_valences_v1(mesh, enc, order);
   } else {
-    encode_lazy_valences(mesh, enc, order);
+    encode_adaptive_valences(mesh, enc, order);
   }
 }
 
 Status decode_valences(RangeDecoder* dec, int32_t max_vertices, int64_t max_triangles, DecodedConnectivity* out,
                        int version) {
   if (version == 1) return decode_valences_v1(dec, max_vertices, max_triangles, out);
-  if (version == 2) return decode_lazy_valences(dec, max_vertices, max_triangles, out);
+  if (version == 2) return decode_adaptive_valences(dec, max_vertices, max_triangles, out);
   return Status::Error(StatusCode::kParseError, "connectivity: unknown valence coder version " + std::to_string(version));
 }
 

@@ -43,6 +43,9 @@ struct ClosedMesh {
 // O(T).
 ClosedMesh close_boundaries(const ManifoldCut& cut);
 
+// Connected components of a closed mesh (through the opposites). O(T).
+int32_t count_components(const ClosedMesh& mesh);
+
 // What the decoder rebuilds: the triangles, oriented as in the input, over
 // vertices numbered in decoding order (dummies included and flagged).
 struct DecodedConnectivity {
@@ -52,7 +55,10 @@ struct DecodedConnectivity {
 };
 
 // Coder versions. 1: Touma & Gotsman's traversal as first shipped (the
-// focus moves to a neighbour after each CLOSE). 2: see valence_coder.cpp.
+// focus moves to a neighbour after each CLOSE, valences in the context of
+// two neighbours). 2: Alliez & Desbrun's adaptive traversal (the focus is
+// the vertex with the fewest free triangles) and richer valence statistics
+// (adaptive_valence_coder.h).
 constexpr int kValenceCoderLatest = 2;
 
 // Codes `mesh` with coder `version` (1..kValenceCoderLatest, clamped into
