@@ -22,6 +22,11 @@ struct ActiveLists {
   std::vector<Pending> stack;
   int32_t focus = -1, length = 0;
 
+  void reserve(size_t nodes) {
+    vertex.reserve(nodes);
+    next.reserve(nodes);
+    prev.reserve(nodes);
+  }
   int32_t new_node(int32_t v) {
     vertex.push_back(v);
     next.push_back(-1);

@@ -91,6 +91,12 @@ int valence_context(int32_t sum, bool dummy) {
 struct VertexState {
   std::vector<int32_t> degree, remaining, occurrences;
   std::vector<uint8_t> dummy;
+  void reserve(size_t n) {
+    degree.reserve(n);
+    remaining.reserve(n);
+    occurrences.reserve(n);
+    dummy.reserve(n);
+  }
 };
 
 // Nodes of the active lists in buckets by their vertex's free triangles,
@@ -100,6 +106,12 @@ class FocusQueue {
  public:
   static constexpr int kBuckets = 16;  // free counts 0..15; more share the last
 
+  void reserve(size_t nodes) {
+    next_.reserve(nodes);
+    prev_.reserve(nodes);
+    queue_.reserve(nodes);
+    bucket_.reserve(nodes);
+  }
   int32_t new_queue() {
     std::array<int32_t, kBuckets> empty;
     empty.fill(-1);
@@ -111,7 +123,7 @@ class FocusQueue {
   // out of wherever it was).
   void put(int32_t node, int32_t queue, int32_t free) {
     if (static_cast<size_t>(node) >= queue_.size()) {
-      const size_t size = static_cast<size_t>(node) + 1;
+      const size_t size = std::max(static_cast<size_t>(node) + 1, 2 * queue_.size());
       next_.resize(size, -1);
       prev_.resize(size, -1);
       bucket_.resize(size, 0);
@@ -172,6 +184,10 @@ struct Front {
   int32_t current = -1;          // the current list's queue
   std::vector<int32_t> waiting;  // per waiting list (as lists.stack)
 
+  void reserve(size_t nodes) {
+    lists.reserve(nodes);
+    queue.reserve(nodes);
+  }
   int32_t free_of(const VertexState& vs, int32_t node) const { return vs.remaining[lists.vertex[node]]; }
   void touch(const VertexState& vs, int32_t node) { queue.put(node, queue.queue_of(node), free_of(vs, node)); }
   void refocus() { lists.focus = queue.first(current); }
@@ -255,14 +271,13 @@ struct Front {
 // The adaptive statistics both sides keep, in the same state.
 struct AdaptiveModels {
   AdaptiveModels();
-  BitModel close[4], add[4], merge, split_backward, dummy[2], two_cycle;
+  BitModel close[4], add[4], merge, split_backward, dummy[2], two_cycle, another_component;
   CountCoder valence;
-  UIntCoder split_offset, merge_list, merge_offset, components;
+  UIntCoder split_offset, merge_list, merge_offset;
 };
 
 AdaptiveModels::AdaptiveModels()
-    : merge(8), two_cycle(8), valence(kDummyContext + 1), split_offset(1), merge_list(1), merge_offset(1),
-      components(1) {
+    : merge(8), two_cycle(8), valence(kDummyContext + 1), split_offset(1), merge_list(1), merge_offset(1) {
   for (BitModel& m : close) m = BitModel(6);
   for (BitModel& m : add) m = BitModel(7);
   for (BitModel& m : dummy) m = BitModel(7);
@@ -293,19 +308,20 @@ void encode_adaptive_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::ve
   std::vector<int32_t> valence(static_cast<size_t>(n), 0), number(static_cast<size_t>(n), -1);
   for (int32_t v : mesh.triangles) ++valence[v];
   VertexState vs;
+  vs.reserve(static_cast<size_t>(n));
   std::vector<uint8_t> conquered(static_cast<size_t>(halves / 3), 0);
   order->clear();
-  const int32_t components = count_components(mesh);
-  models.components.encode(enc, static_cast<uint32_t>(components));
+  order->reserve(static_cast<size_t>(n));
 
   // Encoder-only node data: the conquered triangle's half-edge each node
   // stands for (node -> its vertex to the next node's) and the reverse map
   // for boundary half-edges.
   Front front;
+  front.reserve(static_cast<size_t>(n));
   ActiveLists& lists = front.lists;
-  std::vector<int32_t> half, node_of_half(static_cast<size_t>(halves), -1);
+  std::vector<int32_t> half(static_cast<size_t>(n), -1), node_of_half(static_cast<size_t>(halves), -1);
   auto set_half = [&](int32_t node, int32_t h) {
-    if (static_cast<size_t>(node) >= half.size()) half.resize(static_cast<size_t>(node) + 1, -1);
+    if (static_cast<size_t>(node) >= half.size()) half.resize(std::max(static_cast<size_t>(node) + 1, 2 * half.size()), -1);
     half[node] = h;
     node_of_half[h] = node;
   };
@@ -321,10 +337,12 @@ void encode_adaptive_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::ve
     return number[w];
   };
 
-  int32_t seed_scan = 0;
-  for (int32_t component = 0; component < components; ++component) {
-    while (conquered[seed_scan]) ++seed_scan;
-    const int32_t s = seed_scan;
+  // Components one after the other, each seeded at its first triangle; a
+  // bit before each says whether one follows (the mesh may have none).
+  for (int32_t s = 0;; ++s) {
+    while (s < halves / 3 && conquered[s]) ++s;
+    enc->encode(&models.another_component, s < halves / 3);
+    if (s == halves / 3) break;
     int32_t seed[3];
     for (int i = 0; i < 3; ++i) seed[i] = code_new_vertex(mesh.triangles[3 * s + i], kSeedContext, false);
     conquered[s] = 1;
@@ -431,8 +449,6 @@ Status decode_adaptive_valences(RangeDecoder* dec, int32_t max_vertices, int64_t
   out->num_vertices = 0;
   out->triangles.clear();
   out->dummy.clear();
-  const uint32_t components = models.components.decode(dec);
-  if (components > static_cast<uint32_t>(max_triangles)) return corrupt("component count out of range");
   const int64_t max_valence = std::min<int64_t>(3 * max_triangles, INT32_MAX);
 
   auto new_vertex = [&](int context, bool focus_dummy, int32_t* v) {
@@ -455,13 +471,17 @@ Status decode_adaptive_valences(RangeDecoder* dec, int32_t max_vertices, int64_t
     for (int32_t v : {a, b, c}) {
       if (--vs.remaining[v] < 0) return corrupt("vertex " + std::to_string(v) + " exceeds its valence");
     }
-    out->triangles.insert(out->triangles.end(), {a, b, c});
+    out->triangles.push_back(a);
+    out->triangles.push_back(b);
+    out->triangles.push_back(c);
     return Status::Ok();
   };
 
   Front front;
   ActiveLists& lists = front.lists;
-  for (uint32_t component = 0; component < components; ++component) {
+  // Each component conquers a triangle, so the header's count bounds them.
+  while (dec->decode(&models.another_component)) {
+    if (dec->overrun()) return corrupt("stream truncated");
     int32_t seed[3];
     for (int32_t& v : seed) GAB_RETURN_IF_ERROR(new_vertex(kSeedContext, false, &v));
     GAB_RETURN_IF_ERROR(conquer(seed[0], seed[1], seed[2]));
