@@ -106,12 +106,7 @@ class FocusQueue {
  public:
   static constexpr int kBuckets = 16;  // free counts 0..15; more share the last
 
-  void reserve(size_t nodes) {
-    next_.reserve(nodes);
-    prev_.reserve(nodes);
-    queue_.reserve(nodes);
-    bucket_.reserve(nodes);
-  }
+  void reserve(size_t nodes) { slot_.reserve(nodes); }
   int32_t new_queue() {
     std::array<int32_t, kBuckets> empty;
     empty.fill(-1);
@@ -122,43 +117,39 @@ class FocusQueue {
   // Puts `node` last among `queue`'s nodes with `free` triangles (taking it
   // out of wherever it was).
   void put(int32_t node, int32_t queue, int32_t free) {
-    if (static_cast<size_t>(node) >= queue_.size()) {
-      const size_t size = std::max(static_cast<size_t>(node) + 1, 2 * queue_.size());
-      next_.resize(size, -1);
-      prev_.resize(size, -1);
-      bucket_.resize(size, 0);
-      queue_.resize(size, -1);
+    if (static_cast<size_t>(node) >= slot_.size()) {
+      slot_.resize(std::max(static_cast<size_t>(node) + 1, 2 * slot_.size()));
     }
     remove(node);
-    const int b = std::min(std::max(free, 0), kBuckets - 1);
-    queue_[node] = queue;
-    bucket_[node] = static_cast<uint8_t>(b);
-    next_[node] = -1;
-    prev_[node] = tail_[queue][b];
-    if (prev_[node] >= 0) {
-      next_[prev_[node]] = node;
+    const int32_t b = std::min(std::max(free, 0), kBuckets - 1);
+    Slot& s = slot_[node];
+    s.queue = queue;
+    s.bucket = b;
+    s.next = -1;
+    s.prev = tail_[queue][b];
+    if (s.prev >= 0) {
+      slot_[s.prev].next = node;
     } else {
       head_[queue][b] = node;
     }
     tail_[queue][b] = node;
   }
   void remove(int32_t node) {
-    if (static_cast<size_t>(node) >= queue_.size() || queue_[node] < 0) return;
-    const int32_t q = queue_[node];
-    const int b = bucket_[node];
-    if (prev_[node] >= 0) {
-      next_[prev_[node]] = next_[node];
+    if (static_cast<size_t>(node) >= slot_.size() || slot_[node].queue < 0) return;
+    Slot& s = slot_[node];
+    if (s.prev >= 0) {
+      slot_[s.prev].next = s.next;
     } else {
-      head_[q][b] = next_[node];
+      head_[s.queue][s.bucket] = s.next;
     }
-    if (next_[node] >= 0) {
-      prev_[next_[node]] = prev_[node];
+    if (s.next >= 0) {
+      slot_[s.next].prev = s.prev;
     } else {
-      tail_[q][b] = prev_[node];
+      tail_[s.queue][s.bucket] = s.prev;
     }
-    queue_[node] = -1;
+    s.queue = -1;
   }
-  int32_t queue_of(int32_t node) const { return queue_[node]; }
+  int32_t queue_of(int32_t node) const { return slot_[node].queue; }
   // The node of `queue` with the fewest free triangles (the earliest put
   // among equals); -1 if the queue is empty. O(kBuckets).
   int32_t first(int32_t queue) const {
@@ -169,8 +160,12 @@ class FocusQueue {
   }
 
  private:
-  std::vector<int32_t> next_, prev_, queue_;
-  std::vector<uint8_t> bucket_;
+  // Per node, in one place (a node's links, queue and bucket are read
+  // together).
+  struct Slot {
+    int32_t next = -1, prev = -1, queue = -1, bucket = 0;
+  };
+  std::vector<Slot> slot_;
   std::vector<std::array<int32_t, kBuckets>> head_, tail_;
 };
 
