@@ -99,45 +99,66 @@ int32_t count_components(const ClosedMesh& mesh) {
   return components;
 }
 
+namespace {
+
+// Closes a cut's triangles and opposites (already in `closed`, over
+// closed->num_vertices vertices) in place: a boundary half-edge is one
+// whose opposite is still -1 (the loops already closed have theirs set).
+void close_loops(ClosedMesh* closed) {
+  const int32_t cut_vertices = closed->num_vertices;
+  const int32_t halves = static_cast<int32_t>(closed->triangles.size());
+  std::vector<int32_t>& tri = closed->triangles;
+  std::vector<int32_t>& opposite = closed->opposite;
+  // Each cut vertex is one fan, so a boundary vertex has exactly one
+  // outgoing boundary half-edge: the loop continues from there.
+  std::vector<int32_t> leaving(static_cast<size_t>(cut_vertices), -1);
+  for (int32_t h = 0; h < halves; ++h) {
+    if (opposite[h] < 0) leaving[tri[h]] = h;
+  }
+  for (int32_t start = 0; start < halves; ++start) {
+    if (opposite[start] >= 0) continue;
+    const int32_t d = closed->num_vertices++;
+    // One triangle (b, a, d) per boundary half-edge a -> b, glued to it and
+    // to its neighbours in the loop.
+    const int32_t first = static_cast<int32_t>(tri.size());
+    int32_t h = start, previous = -1;
+    do {
+      const int32_t a = tri[h], b = tri[next_corner(h)];
+      const int32_t t = static_cast<int32_t>(tri.size());
+      tri.insert(tri.end(), {b, a, d});
+      opposite.insert(opposite.end(), {h, -1, -1});
+      opposite[h] = t;
+      if (previous >= 0) {  // previous: (a, z, d); its d -> a meets our a -> d
+        opposite[previous + 2] = t + 1;
+        opposite[t + 1] = previous + 2;
+      }
+      previous = t;
+      h = leaving[b];
+    } while (h != start);
+    opposite[previous + 2] = first + 1;
+    opposite[first + 1] = previous + 2;
+  }
+  closed->dummy.assign(static_cast<size_t>(closed->num_vertices), 0);
+  std::fill(closed->dummy.begin() + cut_vertices, closed->dummy.end(), 1);
+}
+
+}  // namespace
+
 ClosedMesh close_boundaries(const ManifoldCut& cut) {
   ClosedMesh closed;
   closed.num_vertices = cut.num_vertices;
   closed.triangles = cut.triangles;
   closed.opposite = cut.opposite;
-  const int32_t halves = static_cast<int32_t>(cut.triangles.size());
-  // Each cut vertex is one fan, so a boundary vertex has exactly one
-  // outgoing boundary half-edge: the loop continues from there.
-  std::vector<int32_t> leaving(static_cast<size_t>(cut.num_vertices), -1);
-  for (int32_t h = 0; h < halves; ++h) {
-    if (cut.opposite[h] < 0) leaving[cut.triangles[h]] = h;
-  }
-  std::vector<uint8_t> done(static_cast<size_t>(halves), 0);
-  for (int32_t start = 0; start < halves; ++start) {
-    if (cut.opposite[start] >= 0 || done[start]) continue;
-    const int32_t d = closed.num_vertices++;
-    // One triangle (b, a, d) per boundary half-edge a -> b, glued to it and
-    // to its neighbours in the loop.
-    const int32_t first = static_cast<int32_t>(closed.triangles.size());
-    int32_t h = start, previous = -1;
-    do {
-      done[h] = 1;
-      const int32_t a = cut.triangles[h], b = cut.triangles[next_corner(h)];
-      const int32_t t = static_cast<int32_t>(closed.triangles.size());
-      closed.triangles.insert(closed.triangles.end(), {b, a, d});
-      closed.opposite.insert(closed.opposite.end(), {h, -1, -1});
-      closed.opposite[h] = t;
-      if (previous >= 0) {  // previous: (a, z, d); its d -> a meets our a -> d
-        closed.opposite[previous + 2] = t + 1;
-        closed.opposite[t + 1] = previous + 2;
-      }
-      previous = t;
-      h = leaving[b];
-    } while (h != start);
-    closed.opposite[previous + 2] = first + 1;
-    closed.opposite[first + 1] = previous + 2;
-  }
-  closed.dummy.assign(static_cast<size_t>(closed.num_vertices), 0);
-  std::fill(closed.dummy.begin() + cut.num_vertices, closed.dummy.end(), 1);
+  close_loops(&closed);
+  return closed;
+}
+
+ClosedMesh close_boundaries(ManifoldCut* cut) {
+  ClosedMesh closed;
+  closed.num_vertices = cut->num_vertices;
+  closed.triangles.swap(cut->triangles);
+  closed.opposite.swap(cut->opposite);
+  close_loops(&closed);
   return closed;
 }
 

@@ -42,6 +42,9 @@ struct ClosedMesh {
 // loops' first boundary half-edges). The cut's triangles keep their indices.
 // O(T).
 ClosedMesh close_boundaries(const ManifoldCut& cut);
+// The same, taking the cut's triangles and opposites (left empty; its
+// other fields stay) instead of copying them: a closed mesh costs no copy.
+ClosedMesh close_boundaries(ManifoldCut* cut);
 
 // Connected components of a closed mesh (through the opposites). O(T).
 int32_t count_components(const ClosedMesh& mesh);

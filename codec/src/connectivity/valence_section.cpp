@@ -25,8 +25,10 @@ static_assert(kValenceVersionLatest == kValenceCoderLatest, "the section codes e
 
 ValenceSection encode_valence_section(int32_t n, const std::vector<int32_t>& triangles, int version) {
   version = std::min(std::max(version, 1), kValenceVersionLatest);
-  const ManifoldCut cut = cut_to_manifold(n, triangles);
-  const ClosedMesh closed = close_boundaries(cut);
+  ManifoldCut cut = cut_to_manifold(n, triangles);
+  // The cut's copies and degenerate triangles are read below; its triangles
+  // and opposites become the closed mesh's.
+  const ClosedMesh closed = close_boundaries(&cut);
   RangeEncoder enc;
   std::vector<int32_t> order;
   encode_valences(closed, &enc, &order, version);
