@@ -5,16 +5,22 @@
 //
 // What each piece buys, measured on the shared meshes (nefertiti bytes;
 // version 1: 17,661):
-//  * the adaptive focus: 3,071 SPLITs -> about 110 (their ADD/SPLIT flags
-//    and offsets cost 2.9 KB in version 1, 0.3 KB here);
-//  * the valence of a new vertex in the context of the sum of three known
-//    valences (focus, successor, predecessor; version 1 uses two), coded in
-//    unary with a model per step instead of Elias-gamma bits;
-//  * models whose adaptation follows a count (rate ~1/(n+2), then 2^-7):
-//    2% on every mesh over a fixed rate of 2^-5;
+//  * the adaptive focus with the valence of a new vertex in the context of
+//    three known valences summed (focus, successor, predecessor; version 1
+//    sums two), coded in unary with a model per step instead of
+//    Elias-gamma bits: 14,671. SPLITs fall from 3,071 to about 110: their
+//    flags and offsets cost 2.9 KB in version 1, 0.3 KB here;
+//  * models whose rate follows a count (~1/(n+2), then 2^-7) instead of a
+//    fixed 2^-5: 14,389 (1-2% on every mesh);
 //  * among vertices with equally few free triangles, the one whose count
-//    changed longest ago: 1.5% over the most recent one.
-// Together 17,661 -> 14,170 on nefertiti.
+//    changed longest ago: 14,144 (the most recently changed: 14,444; the
+//    first after the old focus: 14,389).
+// Tried and dropped: contexts of four valences (14,538), of twice the
+// focus and successor plus the predecessor (14,400), of the pair (focus +
+// successor, predecessor) (14,486); coding each valence late, as free
+// triangles given those already conquered when its vertex becomes the
+// focus (20% cheaper valences on version 1's traversal, but the adaptive
+// focus then cannot see free counts: 14,924 at best).
 //
 // The focus queue: the vertices of each list in buckets by free triangles
 // (FIFO within a bucket), one set of buckets per list. A SPLIT moves the
