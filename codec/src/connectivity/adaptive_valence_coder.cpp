@@ -322,7 +322,9 @@ void encode_adaptive_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::ve
   ActiveLists& lists = front.lists;
   std::vector<int32_t> half(static_cast<size_t>(n), -1), node_of_half(static_cast<size_t>(halves), -1);
   auto set_half = [&](int32_t node, int32_t h) {
-    if (static_cast<size_t>(node) >= half.size()) half.resize(std::max(static_cast<size_t>(node) + 1, 2 * half.size()), -1);
+    if (static_cast<size_t>(node) >= half.size()) {
+      half.resize(std::max(static_cast<size_t>(node) + 1, 2 * half.size()), -1);
+    }
     half[node] = h;
     node_of_half[h] = node;
   };

@@ -462,7 +462,8 @@ Status decode_valences(RangeDecoder* dec, int32_t max_vertices, int64_t max_tria
                        int version) {
   if (version == 1) return decode_valences_v1(dec, max_vertices, max_triangles, out);
   if (version == 2) return decode_adaptive_valences(dec, max_vertices, max_triangles, out);
-  return Status::Error(StatusCode::kParseError, "connectivity: unknown valence coder version " + std::to_string(version));
+  return Status::Error(StatusCode::kParseError,
+                       "connectivity: unknown valence coder version " + std::to_string(version));
 }
 
 }  // namespace gab
