@@ -14,7 +14,9 @@
 //    fixed 2^-5: 14,389 (1-2% on every mesh);
 //  * among vertices with equally few free triangles, the one whose count
 //    changed longest ago: 14,144 (the most recently changed: 14,444; the
-//    first after the old focus: 14,389).
+//    first after the old focus: 14,389);
+//  * the ADD, CLOSE and dummy flags' rates following a count too: 14,105
+//    (about 40 bytes on every mesh).
 // Tried and dropped: contexts of four valences (14,538), of twice the
 // focus and successor plus the predecessor (14,400), of the pair (focus +
 // successor, predecessor) (14,486); coding each valence late, as free
@@ -39,6 +41,12 @@
 namespace gab {
 
 namespace {
+
+// The adaptation rate (BitModel::shift) of a model used n times before:
+// about 1/(n + 2), as a count would give, down to 2^-7.
+uint8_t counted_shift(uint8_t n) {
+  return static_cast<uint8_t>(n < 2 ? 1 : n < 4 ? 2 : n < 8 ? 3 : n < 16 ? 4 : n < 32 ? 5 : n < 64 ? 6 : 7);
+}
 
 // Small counts (a valence minus 2, typically 1-6): one adaptive bit per
 // unit ("more?") up to kCap, then the rest through a UIntCoder; per context
@@ -71,13 +79,27 @@ class CountCoder {
  private:
   BitModel* model(size_t i) {
     const uint8_t n = seen_[i];
-    more_[i].shift = static_cast<uint8_t>(n < 2 ? 1 : n < 4 ? 2 : n < 8 ? 3 : n < 16 ? 4 : n < 32 ? 5 : n < 64 ? 6 : 7);
+    more_[i].shift = counted_shift(n);
     if (n < 255) seen_[i] = static_cast<uint8_t>(n + 1);
     return &more_[i];
   }
   std::vector<BitModel> more_;
   std::vector<uint8_t> seen_;
   UIntCoder rest_;
+};
+
+// A bit whose model's rate follows a count, as CountCoder's.
+class CountedBit {
+ public:
+  BitModel* model() {
+    model_.shift = counted_shift(seen_);
+    if (seen_ < 255) ++seen_;
+    return &model_;
+  }
+
+ private:
+  BitModel model_;
+  uint8_t seen_ = 0;
 };
 
 // Valence contexts: the sum of the focus's, its successor's and its
@@ -272,16 +294,14 @@ struct Front {
 // The adaptive statistics both sides keep, in the same state.
 struct AdaptiveModels {
   AdaptiveModels();
-  BitModel close[4], add[4], merge, split_backward, dummy[2], two_cycle, another_component;
+  BitModel merge, split_backward, two_cycle, another_component;
+  CountedBit close[4], add[4], dummy[2];
   CountCoder valence;
   UIntCoder split_offset, merge_list, merge_offset;
 };
 
 AdaptiveModels::AdaptiveModels()
     : merge(8), two_cycle(8), valence(kDummyContext + 1), split_offset(1), merge_list(1), merge_offset(1) {
-  for (BitModel& m : close) m = BitModel(6);
-  for (BitModel& m : add) m = BitModel(7);
-  for (BitModel& m : dummy) m = BitModel(7);
 }
 
 enum class Event { kAdd, kClose, kCloseNext, kSplit, kMerge };
@@ -329,7 +349,7 @@ void encode_adaptive_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::ve
     node_of_half[h] = node;
   };
   auto code_new_vertex = [&](int32_t w, int context, bool focus_dummy) {
-    enc->encode(&models.dummy[focus_dummy ? 1 : 0], mesh.dummy[w]);
+    enc->encode(models.dummy[focus_dummy ? 1 : 0].model(), mesh.dummy[w]);
     models.valence.encode(enc, static_cast<uint32_t>(valence[w] - 2), mesh.dummy[w] ? kDummyContext : context);
     number[w] = static_cast<int32_t>(order->size());
     order->push_back(w);
@@ -387,9 +407,9 @@ void encode_adaptive_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::ve
                           : front.queue.queue_of(m) == front.current ? Event::kSplit
                                                                      : Event::kMerge;
       const int context = std::min(vs.remaining[kf], 4) - 1;
-      if (vs.occurrences[kf] > 1) enc->encode(&models.close[context], event == Event::kClose);
+      if (vs.occurrences[kf] > 1) enc->encode(models.close[context].model(), event == Event::kClose);
       if (event != Event::kClose && event != Event::kCloseNext) {
-        enc->encode(&models.add[context], event == Event::kAdd);
+        enc->encode(models.add[context].model(), event == Event::kAdd);
       }
       conquered[u] = 1;
       if (event == Event::kClose) {
@@ -456,7 +476,7 @@ Status decode_adaptive_valences(RangeDecoder* dec, int32_t max_vertices, int64_t
 
   auto new_vertex = [&](int context, bool focus_dummy, int32_t* v) {
     if (out->num_vertices >= max_vertices) return corrupt("more vertices than the header says");
-    const bool dummy = dec->decode(&models.dummy[focus_dummy ? 1 : 0]) != 0;
+    const bool dummy = dec->decode(models.dummy[focus_dummy ? 1 : 0].model()) != 0;
     const uint32_t valence = models.valence.decode(dec, dummy ? kDummyContext : context);
     if (static_cast<int64_t>(valence) + 2 > max_valence) return corrupt("valence out of range");
     *v = out->num_vertices++;
@@ -513,7 +533,7 @@ Status decode_adaptive_valences(RangeDecoder* dec, int32_t max_vertices, int64_t
       if (vs.remaining[vf] < 1) return corrupt("a closed vertex is the focus");
       const int32_t n1 = lists.vertex[lists.next[f]];
       const int context = std::min(vs.remaining[vf], 4) - 1;
-      const bool close = vs.occurrences[vf] > 1 ? dec->decode(&models.close[context]) != 0
+      const bool close = vs.occurrences[vf] > 1 ? dec->decode(models.close[context].model()) != 0
                                                 : vs.remaining[vf] == 1;
       if (close) {
         if (lists.length < 3) return corrupt("a two-vertex boundary cannot close a triangle");
@@ -528,7 +548,7 @@ Status decode_adaptive_valences(RangeDecoder* dec, int32_t max_vertices, int64_t
         front.close_next(vs);
         continue;
       }
-      if (dec->decode(&models.add[context])) {
+      if (dec->decode(models.add[context].model())) {
         int32_t w;
         GAB_RETURN_IF_ERROR(new_vertex(valence_context(neighbour_sum(lists, vs), false), vs.dummy[vf] != 0, &w));
         GAB_RETURN_IF_ERROR(conquer(vf, w, n1));
