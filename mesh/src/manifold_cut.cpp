@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "gab/sparse/disjoint_set.h"
 
 namespace gab {
 
@@ -10,32 +9,39 @@ namespace {
 
 // Glues the half-edges of every edge that exactly two triangles share in
 // opposite directions. Half-edges are bucketed by their lower endpoint
-// (counting sort); a bucket holds a vertex's few edges, searched linearly.
+// (counting sort, so each bucket lists its half-edges in increasing order),
+// each stored with its higher endpoint so that the search within a bucket
+// (a vertex's few edges) reads memory in order.
 std::vector<int32_t> glue_edges(int32_t n, const std::vector<int32_t>& tri) {
+  struct Entry {
+    int32_t half, high;
+  };
   const int32_t halves = static_cast<int32_t>(tri.size());
-  std::vector<int32_t> start(static_cast<size_t>(n) + 1, 0);
-  auto low = [&](int32_t h) { return std::min(tri[h], tri[next_corner(h)]); };
-  auto high = [&](int32_t h) { return std::max(tri[h], tri[next_corner(h)]); };
-  for (int32_t h = 0; h < halves; ++h) ++start[low(h) + 1];
-  for (int32_t v = 0; v < n; ++v) start[v + 1] += start[v];
-  std::vector<int32_t> bucket(static_cast<size_t>(halves));
-  std::vector<int32_t> fill(start.begin(), start.end() - 1);
-  for (int32_t h = 0; h < halves; ++h) bucket[fill[low(h)]++] = h;
+  std::vector<int32_t> start(static_cast<size_t>(n) + 2, 0);
+  for (int32_t h = 0; h < halves; ++h) ++start[std::min(tri[h], tri[next_corner(h)]) + 2];
+  for (int32_t v = 0; v < n; ++v) start[v + 2] += start[v + 1];
+  // start[v + 1] is now bucket v's first slot; filling advances it to the
+  // next bucket's, leaving start[v] = bucket v's first slot.
+  std::vector<Entry> bucket(static_cast<size_t>(halves));
+  for (int32_t h = 0; h < halves; ++h) {
+    const int32_t a = tri[h], b = tri[next_corner(h)];
+    bucket[start[std::min(a, b) + 1]++] = {h, std::max(a, b)};
+  }
 
   std::vector<int32_t> opposite(static_cast<size_t>(halves), -1);
   for (int32_t v = 0; v < n; ++v) {
-    const int32_t* first = bucket.data() + start[v];
+    const Entry* first = bucket.data() + start[v];
     const int32_t size = start[v + 1] - start[v];
     for (int32_t i = 0; i < size; ++i) {
-      const int32_t h = first[i];
+      const int32_t h = first[i].half, high = first[i].high;
       if (opposite[h] != -1) continue;
       // Every half-edge of h's edge after h in the bucket (earlier ones
       // would have claimed h already).
       int32_t count = 1, other = -1;
       for (int32_t j = i + 1; j < size; ++j) {
-        if (high(first[j]) == high(h)) {
+        if (first[j].high == high) {
           ++count;
-          other = first[j];
+          other = first[j].half;
         }
       }
       if (count == 2 && tri[h] == tri[next_corner(other)]) {
@@ -44,7 +50,7 @@ std::vector<int32_t> glue_edges(int32_t n, const std::vector<int32_t>& tri) {
       } else {
         // Cut: mark the whole edge so that its later half-edges skip it.
         for (int32_t j = i; j < size; ++j) {
-          if (high(first[j]) == high(h)) opposite[first[j]] = -2;
+          if (first[j].high == high) opposite[first[j].half] = -2;
         }
       }
     }
@@ -58,6 +64,8 @@ std::vector<int32_t> glue_edges(int32_t n, const std::vector<int32_t>& tri) {
 ManifoldCut cut_to_manifold(int32_t n, const std::vector<int32_t>& triangles) {
   ManifoldCut cut;
   const int32_t count = static_cast<int32_t>(triangles.size() / 3);
+  cut.triangles.reserve(3 * static_cast<size_t>(count));
+  cut.source_triangle.reserve(static_cast<size_t>(count));
   for (int32_t t = 0; t < count; ++t) {
     const int32_t a = triangles[3 * t], b = triangles[3 * t + 1], c = triangles[3 * t + 2];
     const bool degenerate = a == b || b == c || a == c;
@@ -67,34 +75,40 @@ ManifoldCut cut_to_manifold(int32_t n, const std::vector<int32_t>& triangles) {
   }
   cut.opposite = glue_edges(n, cut.triangles);
 
-  // Fans: corner c and the corner of the same vertex across c's outgoing
-  // half-edge, next(opposite[c]), lie in one fan.
+  // Fans: the corners around a vertex linked through glued edges, walked
+  // from their first (smallest) corner: forward across each corner's
+  // outgoing half-edge, then, if the fan is open, backward across its
+  // incoming one. A vertex keeps its index for the fan met first; each
+  // further fan gets a copy, in the order of the fans' first corners.
   const int32_t corners = static_cast<int32_t>(cut.triangles.size());
-  std::vector<int32_t> fan(static_cast<size_t>(corners));
-  for (int32_t c = 0; c < corners; ++c) fan[c] = c;
-  for (int32_t c = 0; c < corners; ++c) {
-    if (cut.opposite[c] < 0) continue;
-    const int32_t a = find_set_root(&fan, c), b = find_set_root(&fan, next_corner(cut.opposite[c]));
-    if (a != b) fan[std::max(a, b)] = std::min(a, b);  // the root is the fan's first corner
-  }
-  // A vertex keeps its index for the fan met first; each further fan gets
-  // a copy. vertex_of_fan is indexed by the fan's root corner.
-  std::vector<int32_t> first_fan(static_cast<size_t>(n), -1);
-  std::vector<int32_t> vertex_of_fan(static_cast<size_t>(corners), -1);
+  std::vector<uint8_t> done(static_cast<size_t>(corners), 0), met(static_cast<size_t>(n), 0);
   cut.num_vertices = n;
   for (int32_t c = 0; c < corners; ++c) {
-    const int32_t root = find_set_root(&fan, c);
-    if (vertex_of_fan[root] < 0) {
-      const int32_t v = cut.triangles[c];
-      if (first_fan[v] < 0) {
-        first_fan[v] = root;
-        vertex_of_fan[root] = v;
-      } else {
-        vertex_of_fan[root] = cut.num_vertices++;
-        cut.copy_of.push_back(v);
-      }
+    if (done[c]) continue;
+    const int32_t v = cut.triangles[c];
+    int32_t id = v;
+    if (met[v]) {
+      id = cut.num_vertices++;
+      cut.copy_of.push_back(v);
     }
-    cut.triangles[c] = vertex_of_fan[root];
+    met[v] = 1;
+    auto take = [&](int32_t d) {
+      done[d] = 1;
+      cut.triangles[d] = id;
+    };
+    take(c);
+    int32_t d = c;
+    bool closed = false;
+    while (cut.opposite[d] >= 0) {
+      d = next_corner(cut.opposite[d]);
+      if (d == c) {
+        closed = true;
+        break;
+      }
+      take(d);
+    }
+    if (closed) continue;
+    for (int32_t e = cut.opposite[prev_corner(c)]; e >= 0; e = cut.opposite[prev_corner(e)]) take(e);
   }
   return cut;
 }

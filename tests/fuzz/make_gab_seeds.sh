@@ -8,7 +8,8 @@
 # (torus-refined was added later, with format flag bit 1, and the
 # torus-levels seeds later still, with flag bit 2, torus-reordered with
 # flag bit 3, torus-ordered-v1 and torus-reordered-v1 with flag bit 4 (their
-# valence section version 1), by running just their lines: the older seeds pin what the first encoder wrote; torus-coarse,
+# valence section version 1), torus-*ordered-v2 with its version 2, by
+# running just their lines: the older seeds pin what the first encoder wrote; torus-coarse,
 # made before the greedy batches ranked by error mass, no longer comes out
 # byte for byte, so keep the committed one.)
 set -euo pipefail
@@ -40,8 +41,8 @@ PY
 "$gab" compress -i "$tmp/torus.off" -o "$tmp/levels.gab" --anchors 40 --initial 4 --layout levels --chunk-growth 1.5
 "$gab" compress -i "$tmp/torus.off" -o "$tmp/levels-refined.gab" --anchors 24 --initial 3 --layout levels --refine
 "$gab" compress -i "$tmp/torus.off" -o "$tmp/reordered.gab" --anchors 20 --chunk-growth 1.5 --reorder
-"$gab" compress -i "$tmp/torus.off" -o "$tmp/ordered-v1.gab" --anchors 20 --chunk-growth 1.5
-"$gab" compress -i "$tmp/torus.off" -o "$tmp/reordered-v1.gab" --anchors 20 --chunk-growth 1.5 --reorder
+"$gab" compress -i "$tmp/torus.off" -o "$tmp/ordered-v2.gab" --anchors 20 --chunk-growth 1.5
+"$gab" compress -i "$tmp/torus.off" -o "$tmp/reordered-v2.gab" --anchors 20 --chunk-growth 1.5 --reorder
 mkdir -p "$out"
 { printf '\x00'; cat "$tmp/full.gab"; } > "$out/torus-full"
 { printf '\x01'; cat "$tmp/geo.gab"; } > "$out/torus-geometry-only"
@@ -52,5 +53,5 @@ mkdir -p "$out"
 { printf '\x2a'; cat "$tmp/levels.gab"; } > "$out/torus-levels-prefix-10"
 { printf '\x00'; cat "$tmp/levels-refined.gab"; } > "$out/torus-levels-refined"
 { printf '\x00'; cat "$tmp/reordered.gab"; } > "$out/torus-reordered"
-{ printf '\x00'; cat "$tmp/ordered-v1.gab"; } > "$out/torus-ordered-v1"
-{ printf '\x00'; cat "$tmp/reordered-v1.gab"; } > "$out/torus-reordered-v1"
+{ printf '\x00'; cat "$tmp/ordered-v2.gab"; } > "$out/torus-ordered-v2"
+{ printf '\x00'; cat "$tmp/reordered-v2.gab"; } > "$out/torus-reordered-v2"

@@ -13,21 +13,22 @@ namespace {
 
 Status corrupt(const std::string& what) { return Status::Error(StatusCode::kParseError, what); }
 
-// The valence coder version this build writes; it reads 1 to this one.
-// Version 1 is also what a file with the reordered flag alone holds,
-// without the version byte.
-constexpr uint8_t kValenceVersionWritten = 1;
+// The version byte: the valence coder's (valence_section.h), which names
+// the vertex order coder's too. This build writes kValenceVersionLatest and
+// reads 1 to it; version 1 is also what a file with the reordered flag
+// alone holds, without the byte.
+constexpr uint8_t kValenceVersionWritten = kValenceVersionLatest;
 
 }  // namespace
 
 Status code_connectivity(int32_t n, const std::vector<int32_t>& triangles, bool reorder, CodedConnectivity* coded) {
   const int32_t t = static_cast<int32_t>(triangles.size() / 3);
-  ValenceSection section = encode_valence_section(n, triangles);
+  ValenceSection section = encode_valence_section(n, triangles, kValenceVersionWritten);
   coded->valence.assign(1, kValenceVersionWritten);
   coded->valence.insert(coded->valence.end(), section.bytes.begin(), section.bytes.end());
   std::vector<int32_t> traversal;  // the triangles in traversal numbering
   GAB_RETURN_IF_ERROR(
-      decode_valence_section(section.bytes.data(), section.bytes.size(), n, t, &traversal));
+      decode_valence_section(section.bytes.data(), section.bytes.size(), n, t, &traversal, kValenceVersionWritten));
   coded->order.clear();
   if (reorder) {
     coded->triangles = std::move(traversal);
@@ -98,7 +99,7 @@ Status decode_connectivity_section(const ConnectivitySection& section, const Gab
   }
   const int32_t n = header.num_vertices, t = header.num_triangles;
   if (!header.versioned_valence()) {
-    const Status s = header.reordered() ? decode_valence_section(section.block, section.size, n, t, triangles)
+    const Status s = header.reordered() ? decode_valence_section(section.block, section.size, n, t, triangles, 1)
                                         : decode_connectivity(section.block, section.size, n, t, triangles);
     if (!s.ok()) return corrupt("connectivity block: " + s.message());
     return Status::Ok();
@@ -111,7 +112,7 @@ Status decode_connectivity_section(const ConnectivitySection& section, const Gab
                                                        std::to_string(version) + " is newer than this build reads");
   }
   std::vector<int32_t> traversal;
-  const Status s = decode_valence_section(section.block + 1, section.size - 1, n, t, &traversal);
+  const Status s = decode_valence_section(section.block + 1, section.size - 1, n, t, &traversal, version);
   if (!s.ok()) return corrupt("connectivity block: " + s.message());
   if (!header.keeps_coded_order()) {
     *triangles = std::move(traversal);

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <string>
 
+#include "connectivity/active_lists.h"
+#include "connectivity/adaptive_valence_coder.h"
 #include "entropy/int_coder.h"
 
 namespace gab {
@@ -24,100 +26,6 @@ int valence_context(int32_t focus_degree, int32_t next_degree, bool dummy) {
   if (dummy) return kValenceContexts - 1;
   return std::min(std::max(focus_degree + next_degree - 8, 0), kValenceContexts - 2);
 }
-
-// The boundary of the conquered region: cycles of vertex occurrences
-// ("nodes"), the region on their left. The current cycle is the one the
-// focus is in; the others wait on a stack.
-struct ActiveLists {
-  struct Pending {
-    int32_t head, length;
-  };
-  std::vector<int32_t> vertex, next, prev;  // per node
-  std::vector<Pending> stack;
-  int32_t focus = -1, length = 0;
-
-  int32_t new_node(int32_t v) {
-    vertex.push_back(v);
-    next.push_back(-1);
-    prev.push_back(-1);
-    return static_cast<int32_t>(vertex.size()) - 1;
-  }
-  int32_t advance(int32_t node, int32_t steps) const {
-    for (int32_t i = 0; i < steps; ++i) node = next[node];
-    return node;
-  }
-  int32_t retreat(int32_t node, int32_t steps) const {
-    for (int32_t i = 0; i < steps; ++i) node = prev[node];
-    return node;
-  }
-  void link(int32_t a, int32_t b) {
-    next[a] = b;
-    prev[b] = a;
-  }
-  // The seed triangle a b c: one cycle, focus on a.
-  void start(int32_t a, int32_t b, int32_t c) {
-    const int32_t na = new_node(a), nb = new_node(b), nc = new_node(c);
-    link(na, nb);
-    link(nb, nc);
-    link(nc, na);
-    focus = na;
-    length = 3;
-  }
-  // ADD: the new vertex w between the focus and its successor.
-  int32_t add(int32_t w) {
-    const int32_t x = new_node(w), n1 = next[focus];
-    link(focus, x);
-    link(x, n1);
-    ++length;
-    return x;
-  }
-  // CLOSE: the focus's last triangle joins its neighbours; the focus leaves
-  // the list and its successor takes over. Returns the predecessor.
-  int32_t close() {
-    const int32_t p = prev[focus], n1 = next[focus];
-    link(p, n1);
-    --length;
-    focus = p;
-    return p;
-  }
-  // SPLIT at node m, `offset` steps after the focus: the cycle
-  // focus -> m -> ... stays current; w' -> next(focus) -> ... -> prev(m)
-  // (w' a new occurrence of m's vertex) waits. Returns w'.
-  int32_t split(int32_t m, int32_t offset) {
-    const int32_t x = new_node(vertex[m]), n1 = next[focus], mp = prev[m];
-    link(x, n1);
-    link(mp, x);
-    link(focus, m);
-    stack.push_back({x, offset});
-    length = length - offset + 1;
-    return x;
-  }
-  // MERGE with node m of the waiting cycle stack[index]: one cycle
-  // focus -> m -> ... -> prev(m) -> w' -> next(focus) -> ... Returns w'.
-  int32_t merge(int32_t m, size_t index) {
-    const int32_t x = new_node(vertex[m]), n1 = next[focus], mp = prev[m];
-    length += stack[index].length + 1;
-    stack.erase(stack.begin() + static_cast<std::ptrdiff_t>(index));
-    link(focus, m);
-    link(mp, x);
-    link(x, n1);
-    return x;
-  }
-  // CLOSE_NEXT: the focus's triangle was the successor's last: the
-  // successor leaves the list, the focus stays.
-  void close_next() {
-    link(focus, next[next[focus]]);
-    --length;
-  }
-  // The current cycle is done: the next waiting one becomes current.
-  bool pop() {
-    if (stack.empty()) return false;
-    focus = stack.back().head;
-    length = stack.back().length;
-    stack.pop_back();
-    return true;
-  }
-};
 
 // Per vertex, both sides: triangles not yet conquered around it, and its
 // occurrences on the active lists.
@@ -166,49 +74,97 @@ bool closes_next(const ActiveLists& lists, const VertexState& vs, int32_t focus)
 }  // namespace
 
 
+int32_t count_components(const ClosedMesh& mesh) {
+  const int32_t count = static_cast<int32_t>(mesh.triangles.size() / 3);
+  int32_t components = 0;
+  std::vector<uint8_t> seen(static_cast<size_t>(count), 0);
+  std::vector<int32_t> queue;
+  for (int32_t t = 0; t < count; ++t) {
+    if (seen[t]) continue;
+    ++components;
+    seen[t] = 1;
+    queue.assign(1, t);
+    while (!queue.empty()) {
+      const int32_t u = queue.back();
+      queue.pop_back();
+      for (int i = 0; i < 3; ++i) {
+        const int32_t o = mesh.opposite[3 * u + i] / 3;
+        if (!seen[o]) {
+          seen[o] = 1;
+          queue.push_back(o);
+        }
+      }
+    }
+  }
+  return components;
+}
+
+namespace {
+
+// Closes a cut's triangles and opposites (already in `closed`, over
+// closed->num_vertices vertices) in place: a boundary half-edge is one
+// whose opposite is still -1 (the loops already closed have theirs set).
+void close_loops(ClosedMesh* closed) {
+  const int32_t cut_vertices = closed->num_vertices;
+  const int32_t halves = static_cast<int32_t>(closed->triangles.size());
+  std::vector<int32_t>& tri = closed->triangles;
+  std::vector<int32_t>& opposite = closed->opposite;
+  // Each cut vertex is one fan, so a boundary vertex has exactly one
+  // outgoing boundary half-edge: the loop continues from there.
+  std::vector<int32_t> leaving(static_cast<size_t>(cut_vertices), -1);
+  for (int32_t h = 0; h < halves; ++h) {
+    if (opposite[h] < 0) leaving[tri[h]] = h;
+  }
+  for (int32_t start = 0; start < halves; ++start) {
+    if (opposite[start] >= 0) continue;
+    const int32_t d = closed->num_vertices++;
+    // One triangle (b, a, d) per boundary half-edge a -> b, glued to it and
+    // to its neighbours in the loop.
+    const int32_t first = static_cast<int32_t>(tri.size());
+    int32_t h = start, previous = -1;
+    do {
+      const int32_t a = tri[h], b = tri[next_corner(h)];
+      const int32_t t = static_cast<int32_t>(tri.size());
+      tri.insert(tri.end(), {b, a, d});
+      opposite.insert(opposite.end(), {h, -1, -1});
+      opposite[h] = t;
+      if (previous >= 0) {  // previous: (a, z, d); its d -> a meets our a -> d
+        opposite[previous + 2] = t + 1;
+        opposite[t + 1] = previous + 2;
+      }
+      previous = t;
+      h = leaving[b];
+    } while (h != start);
+    opposite[previous + 2] = first + 1;
+    opposite[first + 1] = previous + 2;
+  }
+  closed->dummy.assign(static_cast<size_t>(closed->num_vertices), 0);
+  std::fill(closed->dummy.begin() + cut_vertices, closed->dummy.end(), 1);
+}
+
+}  // namespace
+
 ClosedMesh close_boundaries(const ManifoldCut& cut) {
   ClosedMesh closed;
   closed.num_vertices = cut.num_vertices;
   closed.triangles = cut.triangles;
   closed.opposite = cut.opposite;
-  const int32_t halves = static_cast<int32_t>(cut.triangles.size());
-  // Each cut vertex is one fan, so a boundary vertex has exactly one
-  // outgoing boundary half-edge: the loop continues from there.
-  std::vector<int32_t> leaving(static_cast<size_t>(cut.num_vertices), -1);
-  for (int32_t h = 0; h < halves; ++h) {
-    if (cut.opposite[h] < 0) leaving[cut.triangles[h]] = h;
-  }
-  std::vector<uint8_t> done(static_cast<size_t>(halves), 0);
-  for (int32_t start = 0; start < halves; ++start) {
-    if (cut.opposite[start] >= 0 || done[start]) continue;
-    const int32_t d = closed.num_vertices++;
-    // One triangle (b, a, d) per boundary half-edge a -> b, glued to it and
-    // to its neighbours in the loop.
-    const int32_t first = static_cast<int32_t>(closed.triangles.size());
-    int32_t h = start, previous = -1;
-    do {
-      done[h] = 1;
-      const int32_t a = cut.triangles[h], b = cut.triangles[next_corner(h)];
-      const int32_t t = static_cast<int32_t>(closed.triangles.size());
-      closed.triangles.insert(closed.triangles.end(), {b, a, d});
-      closed.opposite.insert(closed.opposite.end(), {h, -1, -1});
-      closed.opposite[h] = t;
-      if (previous >= 0) {  // previous: (a, z, d); its d -> a meets our a -> d
-        closed.opposite[previous + 2] = t + 1;
-        closed.opposite[t + 1] = previous + 2;
-      }
-      previous = t;
-      h = leaving[b];
-    } while (h != start);
-    closed.opposite[previous + 2] = first + 1;
-    closed.opposite[first + 1] = previous + 2;
-  }
-  closed.dummy.assign(static_cast<size_t>(closed.num_vertices), 0);
-  std::fill(closed.dummy.begin() + cut.num_vertices, closed.dummy.end(), 1);
+  close_loops(&closed);
   return closed;
 }
 
-void encode_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int32_t>* order) {
+ClosedMesh close_boundaries(ManifoldCut* cut) {
+  ClosedMesh closed;
+  closed.num_vertices = cut->num_vertices;
+  closed.triangles.swap(cut->triangles);
+  closed.opposite.swap(cut->opposite);
+  close_loops(&closed);
+  return closed;
+}
+
+namespace {
+
+void encode_valences_v1(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int32_t>* order) {
   ValenceModels models;
   const int32_t halves = static_cast<int32_t>(mesh.triangles.size());
   const int32_t n = mesh.num_vertices;
@@ -220,29 +176,7 @@ void encode_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int3
   std::vector<uint8_t> conquered(static_cast<size_t>(halves / 3), 0), visited(static_cast<size_t>(n), 0);
   order->clear();
 
-  // Components of the closed mesh (connected through the opposites).
-  int32_t components = 0;
-  {
-    std::vector<uint8_t> seen(static_cast<size_t>(halves / 3), 0);
-    std::vector<int32_t> queue;
-    for (int32_t t = 0; t < halves / 3; ++t) {
-      if (seen[t]) continue;
-      ++components;
-      seen[t] = 1;
-      queue.assign(1, t);
-      while (!queue.empty()) {
-        const int32_t u = queue.back();
-        queue.pop_back();
-        for (int i = 0; i < 3; ++i) {
-          const int32_t o = mesh.opposite[3 * u + i] / 3;
-          if (!seen[o]) {
-            seen[o] = 1;
-            queue.push_back(o);
-          }
-        }
-      }
-    }
-  }
+  const int32_t components = count_components(mesh);
   models.components.encode(enc, static_cast<uint32_t>(components));
 
   // Encoder-only node data: the conquered triangle's half-edge each node
@@ -396,7 +330,7 @@ void encode_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int3
   }
 }
 
-Status decode_valences(RangeDecoder* dec, int32_t max_vertices, int64_t max_triangles, DecodedConnectivity* out) {
+Status decode_valences_v1(RangeDecoder* dec, int32_t max_vertices, int64_t max_triangles, DecodedConnectivity* out) {
   auto corrupt = [](const std::string& what) {
     return Status::Error(StatusCode::kParseError, "connectivity: " + what);
   };
@@ -512,6 +446,24 @@ Status decode_valences(RangeDecoder* dec, int32_t max_vertices, int64_t max_tria
     if (vs.remaining[v] != 0) return corrupt("vertex " + std::to_string(v) + " falls short of its valence");
   }
   return Status::Ok();
+}
+
+}  // namespace
+
+void encode_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int32_t>* order, int version) {
+  if (version <= 1) {
+    encode_valences_v1(mesh, enc, order);
+  } else {
+    encode_adaptive_valences(mesh, enc, order);
+  }
+}
+
+Status decode_valences(RangeDecoder* dec, int32_t max_vertices, int64_t max_triangles, DecodedConnectivity* out,
+                       int version) {
+  if (version == 1) return decode_valences_v1(dec, max_vertices, max_triangles, out);
+  if (version == 2) return decode_adaptive_valences(dec, max_vertices, max_triangles, out);
+  return Status::Error(StatusCode::kParseError,
+                       "connectivity: unknown valence coder version " + std::to_string(version));
 }
 
 }  // namespace gab

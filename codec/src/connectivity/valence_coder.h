@@ -42,6 +42,12 @@ struct ClosedMesh {
 // loops' first boundary half-edges). The cut's triangles keep their indices.
 // O(T).
 ClosedMesh close_boundaries(const ManifoldCut& cut);
+// The same, taking the cut's triangles and opposites (left empty; its
+// other fields stay) instead of copying them: a closed mesh costs no copy.
+ClosedMesh close_boundaries(ManifoldCut* cut);
+
+// Connected components of a closed mesh (through the opposites). O(T).
+int32_t count_components(const ClosedMesh& mesh);
 
 // What the decoder rebuilds: the triangles, oriented as in the input, over
 // vertices numbered in decoding order (dummies included and flagged).
@@ -51,14 +57,24 @@ struct DecodedConnectivity {
   std::vector<uint8_t> dummy;
 };
 
-// Codes `mesh`; order[k] is the mesh vertex the decoder will number k.
-// O(T) plus O(offset) per SPLIT and O(list) per MERGE.
-void encode_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int32_t>* order);
+// Coder versions. 1: Touma & Gotsman's traversal as first shipped (the
+// focus moves to a neighbour after each CLOSE, valences in the context of
+// two neighbours). 2: Alliez & Desbrun's adaptive traversal (the focus is
+// the vertex with the fewest free triangles) and richer valence statistics
+// (adaptive_valence_coder.h).
+constexpr int kValenceCoderLatest = 2;
+
+// Codes `mesh` with coder `version` (1..kValenceCoderLatest, clamped into
+// it); order[k] is the mesh vertex the decoder will number k. O(T) plus
+// O(offset) per SPLIT and O(list) per MERGE.
+void encode_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int32_t>* order, int version);
 
 // Decodes what encode_valences coded. Untrusted input: at most
 // `max_triangles` triangles and `max_vertices` vertices (dummies included)
 // are built, every offset and valence is checked against the state, and
-// anything inconsistent is a kParseError naming what. O(T) as the encoder.
-Status decode_valences(RangeDecoder* dec, int32_t max_vertices, int64_t max_triangles, DecodedConnectivity* out);
+// anything inconsistent is a kParseError naming what, an unknown `version`
+// included. O(T) as the encoder.
+Status decode_valences(RangeDecoder* dec, int32_t max_vertices, int64_t max_triangles, DecodedConnectivity* out,
+                       int version);
 
 }  // namespace gab

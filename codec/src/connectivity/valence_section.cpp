@@ -21,12 +21,17 @@ struct SectionModels {
 
 }  // namespace
 
-ValenceSection encode_valence_section(int32_t n, const std::vector<int32_t>& triangles) {
-  const ManifoldCut cut = cut_to_manifold(n, triangles);
-  const ClosedMesh closed = close_boundaries(cut);
+static_assert(kValenceVersionLatest == kValenceCoderLatest, "the section codes every coder version");
+
+ValenceSection encode_valence_section(int32_t n, const std::vector<int32_t>& triangles, int version) {
+  version = std::min(std::max(version, 1), kValenceVersionLatest);
+  ManifoldCut cut = cut_to_manifold(n, triangles);
+  // The cut's copies and degenerate triangles are read below; its triangles
+  // and opposites become the closed mesh's.
+  const ClosedMesh closed = close_boundaries(&cut);
   RangeEncoder enc;
   std::vector<int32_t> order;
-  encode_valences(closed, &enc, &order);
+  encode_valences(closed, &enc, &order, version);
 
   // The decoder numbers each input vertex where it first meets it (or one
   // of its copies); a later copy is a stitch back to that first meeting.
@@ -64,17 +69,21 @@ ValenceSection encode_valence_section(int32_t n, const std::vector<int32_t>& tri
 }
 
 Status decode_valence_section(const uint8_t* data, size_t size, int32_t n, int32_t t,
-                              std::vector<int32_t>* triangles) {
+                              std::vector<int32_t>* triangles, int version) {
   auto corrupt = [](const std::string& what) {
     return Status::Error(StatusCode::kParseError, "connectivity: " + what);
   };
+  if (version < 1 || version > kValenceVersionLatest) {
+    return corrupt("unknown valence coder version " + std::to_string(version));
+  }
   if (n < 1 || t < 0) return Status::Error(StatusCode::kInvalidArgument, "connectivity: bad counts");
   // The closed mesh has at most the cut's vertices (n + 3t copies) plus a
   // dummy per boundary loop (<= t), and t + 3t triangles with the dummies'.
   const int64_t max_vertices = std::min<int64_t>(static_cast<int64_t>(n) + 4 * static_cast<int64_t>(t), INT32_MAX);
   RangeDecoder dec(data, size);
   DecodedConnectivity decoded;
-  GAB_RETURN_IF_ERROR(decode_valences(&dec, static_cast<int32_t>(max_vertices), 4 * static_cast<int64_t>(t), &decoded));
+  GAB_RETURN_IF_ERROR(
+      decode_valences(&dec, static_cast<int32_t>(max_vertices), 4 * static_cast<int64_t>(t), &decoded, version));
 
   SectionModels models;
   const uint32_t stitches = models.stitch_count.decode(&dec);

@@ -5,7 +5,7 @@
 // bumps kGabVersion and regenerates the seeds (tests/fuzz/make_gab_seeds.sh);
 // a new flag adds seeds beside the old ones (bit 1: torus-refined; bit 2,
 // the level layout: torus-levels*; bit 3: torus-reordered; bit 4:
-// torus-*ordered-v1).
+// torus-*ordered-vK for each valence coder version K).
 #include <dirent.h>
 #include <gtest/gtest.h>
 
@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "common/gab_files.h"
+#include "connectivity/valence_section.h"
 #include "fuzz/gab_fuzz_mesh.h"
 #include "gab/codec/decoder.h"
 #include "gab/codec/encoder.h"
@@ -86,27 +87,23 @@ void expect_same_header(const std::vector<uint8_t>& fresh, const std::vector<uin
 
 TEST(GoldenFiles, ValenceSeedsDecodeToTheTorusInTheirNumbering) {
   // torus-reordered: flag bit 3 alone, the first --reorder (valence section
-  // version 1, no version byte). torus-ordered-v1 and torus-reordered-v1:
-  // bit 4, the versioned valence section at version 1, with the vertex
-  // order block and without it (bit 3).
+  // version 1, no version byte). torus-ordered-vK and torus-reordered-vK:
+  // bit 4, the versioned valence section at version K, with the vertex
+  // order block and without it (bit 3). A reordered file is numbered as its
+  // version's traversal numbers the torus.
   const Mesh torus = gab_fuzz::seed_torus();
-  EncodeOptions options;
-  options.max_anchors = 20;
-  options.chunk_growth = 1.5;
-  options.reorder = true;
-  EncodeStats es;
-  testing_util::encode_or_die(torus, options, &es);
-  const Mesh renumbered = renumber_vertices(torus, es.new_index);
   struct Seed {
     const char* name;
     uint8_t flags;
-    bool reordered;
+    int version;  // 0: kept order, no traversal numbering to check against
     double rms_rel;
   };
-  for (const Seed& s : {Seed{"torus-reordered", kGabFlagReordered | kGabFlagLevels, true, 0.0225855},
-                        Seed{"torus-ordered-v1", kGabFlagVersionedValence | kGabFlagLevels, false, 0.0225855},
-                        Seed{"torus-reordered-v1", kGabFlagReordered | kGabFlagVersionedValence | kGabFlagLevels,
-                             true, 0.0225855}}) {
+  const uint8_t reordered = kGabFlagReordered | kGabFlagLevels, versioned = kGabFlagVersionedValence | kGabFlagLevels;
+  for (const Seed& s : {Seed{"torus-reordered", reordered, 1, 0.0225855},
+                        Seed{"torus-ordered-v1", versioned, 0, 0.0225855},
+                        Seed{"torus-reordered-v1", reordered | versioned, 1, 0.0225855},
+                        Seed{"torus-ordered-v2", versioned, 0, 0.0225855},
+                        Seed{"torus-reordered-v2", reordered | versioned, 2, 0.0225883}}) {
     const std::vector<uint8_t> golden = seed(s.name);
     ASSERT_GE(golden.size(), kGabHeaderBytes) << s.name;
     EXPECT_EQ(golden[9], s.flags) << s.name;
@@ -114,11 +111,24 @@ TEST(GoldenFiles, ValenceSeedsDecodeToTheTorusInTheirNumbering) {
     DecodeStats ds;
     const Status status = decode_mesh(golden.data(), golden.size(), DecodeOptions(), &out, &ds);
     ASSERT_TRUE(status.ok()) << s.name << ": " << status.message();
-    EXPECT_EQ(ds.reordered, s.reordered) << s.name;
-    const Mesh& expected = s.reordered ? renumbered : torus;
+    EXPECT_EQ(ds.reordered, s.version > 0) << s.name;
+    const Mesh expected =
+        s.version > 0
+            ? renumber_vertices(torus, encode_valence_section(torus.num_vertices(), torus.triangles, s.version).new_index)
+            : torus;
     EXPECT_EQ(oriented_triangle_set(out.triangles), oriented_triangle_set(expected.triangles)) << s.name;
     EXPECT_NEAR(testing_util::relative_rms(expected, out), s.rms_rel, 5e-6) << s.name;
   }
+}
+
+TEST(GoldenFiles, TheLatestValenceSeedsAreWhatTheEncoderWrites) {
+  EncodeOptions options;
+  options.max_anchors = 20;
+  options.chunk_growth = 1.5;
+  EncodeStats es;
+  EXPECT_EQ(testing_util::encode_or_die(gab_fuzz::seed_torus(), options, &es), seed("torus-ordered-v2"));
+  options.reorder = true;
+  EXPECT_EQ(testing_util::encode_or_die(gab_fuzz::seed_torus(), options, &es), seed("torus-reordered-v2"));
 }
 
 TEST(GoldenFiles, EncoderWritesThePinnedHeader) {
