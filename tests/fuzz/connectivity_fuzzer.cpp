@@ -1,33 +1,22 @@
 // libFuzzer target: the connectivity section's decoders (valence section,
 // vertex order, the first triangle list) on untrusted bytes, without the
 // checksums that stop most mutations of a whole .gab file before they
-// reach them. Input: flags u8 (the header's bits 3 and 4 as bits 0 and 1),
-// vertex count - 1 u16, triangle count u16, valence block length u16, the
-// valence block, then the vertex order block. Checks beyond "no crash": a
-// failure is a one-line message; a success is exactly the declared
-// triangles, every index in range.
+// reach them (input format: connectivity_fuzz_input.h; an input that ever
+// broke it goes to regressions/connectivity-<what>, replayed by
+// tests/codec/connectivity/connectivity_fuzz_regression_test.cpp). Checks
+// beyond "no crash": a failure is a one-line message; a success is exactly
+// the declared triangles, every index in range.
 #include <cstdint>
 #include <string>
 #include <vector>
 
-#include "connectivity/connectivity_section.h"
+#include "connectivity_fuzz_input.h"
 #include "fuzz_check.h"
-#include "gab/codec/gab_format.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  if (size < 7) return 0;
-  auto u16 = [&](size_t at) { return static_cast<int32_t>(data[at] | (data[at + 1] << 8)); };
   gab::GabHeader header;
-  header.flags = static_cast<uint8_t>(((data[0] & 1) ? gab::kGabFlagReordered : 0) |
-                                      ((data[0] & 2) ? gab::kGabFlagVersionedValence : 0));
-  header.num_vertices = u16(1) + 1;
-  header.num_triangles = u16(3);
-  const size_t valence = std::min<size_t>(static_cast<size_t>(u16(5)), size - 7);
   gab::ConnectivitySection section;
-  section.block = data + 7;
-  section.size = valence;
-  section.order = data + 7 + valence;
-  section.order_size = size - 7 - valence;
+  if (!gab_fuzz::parse_connectivity_input(data, size, &header, &section)) return 0;
   std::vector<int32_t> triangles;
   const gab::Status status = gab::decode_connectivity_section(section, header, nullptr, &triangles);
   if (!status.ok()) {

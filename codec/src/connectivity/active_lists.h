@@ -11,6 +11,15 @@
 
 namespace gab {
 
+// The most list steps (ActiveLists::walked) a decoder allowed at most
+// `max_triangles` triangles may take: 2^20 plus 16 per triangle (a valence
+// section allows 4 per triangle of the file, dummies' included: 64 per
+// file triangle), far above any real mesh's (the shared meshes and
+// libcgal-demo's walk at most 13.3 per file triangle with coder version 1,
+// 1.9 with version 2), so that a forged stream cannot make a decoder
+// quadratic.
+inline int64_t walk_budget(int64_t max_triangles) { return (int64_t{1} << 20) + 16 * max_triangles; }
+
 // The boundary of the conquered region: cycles of vertex occurrences
 // ("nodes"), the region on their left. The current cycle is the one the
 // focus is in; the others wait on a stack.
@@ -21,6 +30,11 @@ struct ActiveLists {
   std::vector<int32_t> vertex, next, prev;  // per node
   std::vector<Pending> stack;
   int32_t focus = -1, length = 0;
+  // List steps walked beyond O(1) per triangle: by splits and merges
+  // (advance, retreat, the stack's upkeep, the callers' own walks). Linear
+  // in practice, but a forged stream could make it quadratic: the decoders
+  // stop at walk_budget.
+  int64_t walked = 0;
 
   void reserve(size_t nodes) {
     vertex.reserve(nodes);
@@ -33,11 +47,13 @@ struct ActiveLists {
     prev.push_back(-1);
     return static_cast<int32_t>(vertex.size()) - 1;
   }
-  int32_t advance(int32_t node, int32_t steps) const {
+  int32_t advance(int32_t node, int32_t steps) {
+    walked += steps;
     for (int32_t i = 0; i < steps; ++i) node = next[node];
     return node;
   }
-  int32_t retreat(int32_t node, int32_t steps) const {
+  int32_t retreat(int32_t node, int32_t steps) {
+    walked += steps;
     for (int32_t i = 0; i < steps; ++i) node = prev[node];
     return node;
   }
@@ -88,6 +104,7 @@ struct ActiveLists {
   int32_t merge(int32_t m, size_t index) {
     const int32_t x = new_node(vertex[m]), n1 = next[focus], mp = prev[m];
     length += stack[index].length + 1;
+    walked += static_cast<int64_t>(stack.size() - index);
     stack.erase(stack.begin() + static_cast<std::ptrdiff_t>(index));
     link(focus, m);
     link(mp, x);

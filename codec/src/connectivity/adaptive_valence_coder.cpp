@@ -250,6 +250,7 @@ struct Front {
     // The smaller part moves to a new queue: the waiting one (x, n1, ...,
     // offset nodes) or the current one (f, m, ...).
     const int32_t fresh = queue.new_queue();
+    lists.walked += std::min(offset, lists.length);
     if (offset <= lists.length) {
       int32_t node = x;
       for (int32_t i = 0; i < offset; ++i, node = lists.next[node]) queue.put(node, fresh, free_of(vs, node));
@@ -267,6 +268,7 @@ struct Front {
     return x;
   }
   int32_t merge(const VertexState& vs, int32_t m, size_t index) {
+    lists.walked += lists.stack[index].length + static_cast<int64_t>(waiting.size() - index);
     int32_t node = m;
     for (int32_t i = 0; i < lists.stack[index].length; ++i, node = lists.next[node]) {
       queue.put(node, current, free_of(vs, node));
@@ -320,7 +322,7 @@ int32_t neighbour_sum(const ActiveLists& lists, const VertexState& vs) {
 
 }  // namespace
 
-void encode_adaptive_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int32_t>* order) {
+int64_t encode_adaptive_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int32_t>* order) {
   AdaptiveModels models;
   const int32_t halves = static_cast<int32_t>(mesh.triangles.size());
   const int32_t n = mesh.num_vertices;
@@ -438,6 +440,7 @@ void encode_adaptive_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::ve
         ++vs.occurrences[kw];
         int32_t offset = 0;
         for (int32_t node = f; node != m; node = lists.next[node]) ++offset;
+        front.lists.walked += offset;
         // The nearer way round: splits are mostly local.
         const bool backward = lists.length - offset < offset;
         enc->encode(&models.split_backward, backward);
@@ -453,6 +456,7 @@ void encode_adaptive_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::ve
         models.merge_list.encode(enc, static_cast<uint32_t>(front.waiting.size() - 1 - index));
         int32_t offset = 0;
         for (int32_t node = lists.stack[index].head; node != m; node = lists.next[node]) ++offset;
+        front.lists.walked += offset;
         models.merge_offset.encode(enc, static_cast<uint32_t>(offset));
         for (int32_t k : {kf, kn1, kw}) --vs.remaining[k];
         x = front.merge(vs, m, index);
@@ -460,6 +464,7 @@ void encode_adaptive_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::ve
       set_half(x, prev_corner(across));  // w's new occurrence runs to next(focus)
     }
   }
+  return front.lists.walked;
 }
 
 Status decode_adaptive_valences(RangeDecoder* dec, int32_t max_vertices, int64_t max_triangles,
@@ -467,6 +472,7 @@ Status decode_adaptive_valences(RangeDecoder* dec, int32_t max_vertices, int64_t
   auto corrupt = [](const std::string& what) {
     return Status::Error(StatusCode::kParseError, "connectivity: " + what);
   };
+  const int64_t budget = walk_budget(max_triangles);
   AdaptiveModels models;
   VertexState vs;
   out->num_vertices = 0;
@@ -543,6 +549,7 @@ Status decode_adaptive_valences(RangeDecoder* dec, int32_t max_vertices, int64_t
         continue;
       }
       if (closes_next(lists, vs, f)) {
+        if (lists.length < 3) return corrupt("a two-vertex boundary cannot close a triangle");
         GAB_RETURN_IF_ERROR(conquer(vf, lists.vertex[lists.next[lists.next[f]]], n1));
         --vs.occurrences[n1];
         front.close_next(vs);
@@ -556,7 +563,9 @@ Status decode_adaptive_valences(RangeDecoder* dec, int32_t max_vertices, int64_t
       } else if (!dec->decode(&models.merge)) {
         const bool backward = dec->decode(&models.split_backward) != 0;
         const uint32_t distance = models.split_offset.decode(dec);
-        if (distance > static_cast<uint32_t>(lists.length - 3)) return corrupt("split offset out of range");
+        if (lists.length < 3 || distance > static_cast<uint32_t>(lists.length - 3)) {
+          return corrupt("split offset out of range");
+        }
         const uint32_t offset = backward ? static_cast<uint32_t>(lists.length) - 1 - distance : distance + 2;
         // Walk the way the encoder counted: `distance` steps, not `offset`.
         const int32_t m = backward ? lists.retreat(lists.prev[f], static_cast<int32_t>(distance))
@@ -566,6 +575,7 @@ Status decode_adaptive_valences(RangeDecoder* dec, int32_t max_vertices, int64_t
         ++vs.occurrences[w];
         GAB_RETURN_IF_ERROR(conquer(vf, w, n1));
         front.split(vs, m, static_cast<int32_t>(offset));
+        if (lists.walked > budget) return corrupt("splits walk more than " + std::to_string(budget) + " list steps");
       } else {
         const uint32_t back = models.merge_list.decode(dec);
         if (back >= lists.stack.size()) return corrupt("merge names a list that does not exist");
@@ -578,6 +588,7 @@ Status decode_adaptive_valences(RangeDecoder* dec, int32_t max_vertices, int64_t
         ++vs.occurrences[w];
         GAB_RETURN_IF_ERROR(conquer(vf, w, n1));
         front.merge(vs, m, index);
+        if (lists.walked > budget) return corrupt("merges walk more than " + std::to_string(budget) + " list steps");
       }
     }
   }

@@ -18,7 +18,7 @@
 namespace gab {
 
 // encode_valences / decode_valences with version 2 (same contracts).
-void encode_adaptive_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int32_t>* order);
+int64_t encode_adaptive_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int32_t>* order);
 Status decode_adaptive_valences(RangeDecoder* dec, int32_t max_vertices, int64_t max_triangles,
                                 DecodedConnectivity* out);
 

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "connectivity/active_lists.h"
 #include "connectivity/connectivity_coder.h"
 #include "connectivity/order_coder.h"
 #include "connectivity/valence_section.h"
@@ -24,6 +25,12 @@ constexpr uint8_t kValenceVersionWritten = kValenceVersionLatest;
 Status code_connectivity(int32_t n, const std::vector<int32_t>& triangles, bool reorder, CodedConnectivity* coded) {
   const int32_t t = static_cast<int32_t>(triangles.size() / 3);
   ValenceSection section = encode_valence_section(n, triangles, kValenceVersionWritten);
+  if (section.walked > walk_budget(4 * static_cast<int64_t>(t))) {
+    return Status::Error(StatusCode::kResourceExhausted,
+                         "connectivity: the valence coder's traversal would walk " + std::to_string(section.walked) +
+                             " list steps, more than a decoder accepts (" +
+                             std::to_string(walk_budget(4 * static_cast<int64_t>(t))) + ")");
+  }
   coded->valence.assign(1, kValenceVersionWritten);
   coded->valence.insert(coded->valence.end(), section.bytes.begin(), section.bytes.end());
   std::vector<int32_t> traversal;  // the triangles in traversal numbering

@@ -164,7 +164,7 @@ ClosedMesh close_boundaries(ManifoldCut* cut) {
 
 namespace {
 
-void encode_valences_v1(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int32_t>* order) {
+int64_t encode_valences_v1(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int32_t>* order) {
   ValenceModels models;
   const int32_t halves = static_cast<int32_t>(mesh.triangles.size());
   const int32_t n = mesh.num_vertices;
@@ -296,6 +296,7 @@ void encode_valences_v1(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<i
         ++vs.occurrences[w];
         int32_t offset = 0;
         for (int32_t node = f; node != m; node = lists.next[node]) ++offset;
+        lists.walked += offset;
         // The nearer way round: splits are mostly local.
         const bool backward = lists.length - offset < offset;
         enc->encode(&models.split_backward, backward);
@@ -317,6 +318,7 @@ void encode_valences_v1(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<i
         models.merge_list.encode(enc, static_cast<uint32_t>(stack_ids.size() - 1 - index));
         int32_t offset = 0;
         for (int32_t node = lists.stack[index].head; node != m; node = lists.next[node]) ++offset;
+        lists.walked += offset;
         models.merge_offset.encode(enc, static_cast<uint32_t>(offset));
         for (int32_t node = m, i = 0; i < lists.stack[index].length; ++i, node = lists.next[node]) {
           label(node, current);
@@ -328,12 +330,14 @@ void encode_valences_v1(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<i
       set_half(x, prev_corner(across));  // w's new occurrence runs to next(focus)
     }
   }
+  return lists.walked;
 }
 
 Status decode_valences_v1(RangeDecoder* dec, int32_t max_vertices, int64_t max_triangles, DecodedConnectivity* out) {
   auto corrupt = [](const std::string& what) {
     return Status::Error(StatusCode::kParseError, "connectivity: " + what);
   };
+  const int64_t budget = walk_budget(max_triangles);
   ValenceModels models;
   VertexState vs;
   out->num_vertices = 0;
@@ -406,6 +410,7 @@ Status decode_valences_v1(RangeDecoder* dec, int32_t max_vertices, int64_t max_t
         continue;
       }
       if (closes_next(lists, vs, f)) {
+        if (lists.length < 3) return corrupt("a two-vertex boundary cannot close a triangle");
         GAB_RETURN_IF_ERROR(conquer(vf, lists.vertex[lists.next[lists.next[f]]], n1));
         --vs.occurrences[n1];
         lists.close_next();
@@ -418,7 +423,9 @@ Status decode_valences_v1(RangeDecoder* dec, int32_t max_vertices, int64_t max_t
       } else if (!dec->decode(&models.merge)) {
         const bool backward = dec->decode(&models.split_backward) != 0;
         const uint32_t distance = models.split_offset.decode(dec);
-        if (distance > static_cast<uint32_t>(lists.length - 3)) return corrupt("split offset out of range");
+        if (lists.length < 3 || distance > static_cast<uint32_t>(lists.length - 3)) {
+          return corrupt("split offset out of range");
+        }
         const uint32_t offset = backward ? static_cast<uint32_t>(lists.length) - 1 - distance : distance + 2;
         // Walk the way the encoder counted: `distance` steps, not `offset`.
         const int32_t m = backward ? lists.retreat(lists.prev[f], static_cast<int32_t>(distance))
@@ -426,6 +433,7 @@ Status decode_valences_v1(RangeDecoder* dec, int32_t max_vertices, int64_t max_t
         w = lists.vertex[m];
         ++vs.occurrences[w];
         lists.split(m, static_cast<int32_t>(offset));
+        if (lists.walked > budget) return corrupt("splits walk more than " + std::to_string(budget) + " list steps");
       } else {
         const uint32_t back = models.merge_list.decode(dec);
         if (back >= lists.stack.size()) return corrupt("merge names a list that does not exist");
@@ -436,6 +444,7 @@ Status decode_valences_v1(RangeDecoder* dec, int32_t max_vertices, int64_t max_t
         w = lists.vertex[m];
         ++vs.occurrences[w];
         lists.merge(m, index);
+        if (lists.walked > budget) return corrupt("merges walk more than " + std::to_string(budget) + " list steps");
       }
       if (w == vf || w == n1) return corrupt("a triangle repeats a vertex");
       GAB_RETURN_IF_ERROR(conquer(vf, w, n1));
@@ -450,12 +459,8 @@ Status decode_valences_v1(RangeDecoder* dec, int32_t max_vertices, int64_t max_t
 
 }  // namespace
 
-void encode_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int32_t>* order, int version) {
-  if (version <= 1) {
-    encode_valences_v1(mesh, enc, order);
-  } else {
-    encode_adaptive_valences(mesh, enc, order);
-  }
+int64_t encode_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int32_t>* order, int version) {
+  return version <= 1 ? encode_valences_v1(mesh, enc, order) : encode_adaptive_valences(mesh, enc, order);
 }
 
 Status decode_valences(RangeDecoder* dec, int32_t max_vertices, int64_t max_triangles, DecodedConnectivity* out,

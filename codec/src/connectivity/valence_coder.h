@@ -65,15 +65,18 @@ struct DecodedConnectivity {
 constexpr int kValenceCoderLatest = 2;
 
 // Codes `mesh` with coder `version` (1..kValenceCoderLatest, clamped into
-// it); order[k] is the mesh vertex the decoder will number k. O(T) plus
+// it); order[k] is the mesh vertex the decoder will number k. Returns the
+// list steps walked (active_lists.h), at least the decoder's. O(T) plus
 // O(offset) per SPLIT and O(list) per MERGE.
-void encode_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int32_t>* order, int version);
+int64_t encode_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<int32_t>* order, int version);
 
 // Decodes what encode_valences coded. Untrusted input: at most
 // `max_triangles` triangles and `max_vertices` vertices (dummies included)
 // are built, every offset and valence is checked against the state, and
 // anything inconsistent is a kParseError naming what, an unknown `version`
-// included. O(T) as the encoder.
+// included, as is a stream whose splits and merges would walk more than
+// walk_budget(max_triangles) list steps. O(T) as the encoder, and never
+// more than that budget.
 Status decode_valences(RangeDecoder* dec, int32_t max_vertices, int64_t max_triangles, DecodedConnectivity* out,
                        int version);
 

@@ -31,11 +31,12 @@ ValenceSection encode_valence_section(int32_t n, const std::vector<int32_t>& tri
   const ClosedMesh closed = close_boundaries(&cut);
   RangeEncoder enc;
   std::vector<int32_t> order;
-  encode_valences(closed, &enc, &order, version);
+  const int64_t walked = encode_valences(closed, &enc, &order, version);
 
   // The decoder numbers each input vertex where it first meets it (or one
   // of its copies); a later copy is a stitch back to that first meeting.
   ValenceSection section;
+  section.walked = walked;
   section.new_index.assign(static_cast<size_t>(n), -1);
   std::vector<int32_t> first_met(static_cast<size_t>(n), -1);
   std::vector<int32_t> stitch_at, stitch_to;

@@ -25,6 +25,9 @@ struct ValenceSection {
   std::vector<uint8_t> bytes;
   // new_index[v]: the decoder's number for input vertex v (a permutation).
   std::vector<int32_t> new_index;
+  // The traversal's list steps (active_lists.h): the section decodes only
+  // if this is within walk_budget(4 t).
+  int64_t walked = 0;
 };
 
 // Codes `triangles` over n vertices (indices in [0, n), n >= 1) with coder
