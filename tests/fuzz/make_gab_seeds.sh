@@ -7,9 +7,9 @@
 # (bump kGabVersion too) — then update the pinned numbers in the golden test.
 # (torus-refined was added later, with format flag bit 1, and the
 # torus-levels seeds later still, with flag bit 2, torus-reordered with
-# flag bit 3, torus-ordered-v1 and torus-reordered-v1 with flag bit 4 (their
-# valence section version 1), torus-*ordered-v2 with its version 2, by
-# running just their lines: the older seeds pin what the first encoder wrote; torus-coarse,
+# flag bit 3, torus-reordered-v1 with flag bit 4 (its valence section
+# version 1), torus-*ordered-v2 with its version 2, by running just their
+# lines: the older seeds pin what the first encoder wrote; torus-coarse,
 # made before the greedy batches ranked by error mass, no longer comes out
 # byte for byte, so keep the committed one.)
 set -euo pipefail

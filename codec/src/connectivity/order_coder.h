@@ -9,9 +9,9 @@
 // index plus one. It is coded as its rank among the indices not yet used,
 // relative to the prediction's rank, so a coherent numbering costs a few
 // bits per hundred vertices while any numbering costs at most a uniform
-// choice among the remaining indices: the encoder falls back to that (close
-// to log2(n!) bits) when it is smaller, and a numbering that already is the
-// traversal's costs one byte.
+// choice among the remaining indices: the encoder falls back to that
+// (log2(n!) bits and a few bytes) when it is smaller, and a numbering that
+// already is the traversal's costs one byte.
 #pragma once
 
 #include <cstddef>

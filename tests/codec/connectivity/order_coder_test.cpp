@@ -66,7 +66,7 @@ TEST(OrderCoderTest, AnArbitraryNumberingCostsAboutLog2NFactorial) {
   for (size_t i = 0; i < triangles.size(); ++i) triangles[i] = scramble[torus.triangles[i]];
   const std::vector<int32_t> original = shuffled(n, 12);
   const std::vector<uint8_t> block = round_trip(n, triangles, original);
-  EXPECT_LT(block.size(), 1.01 * log2_factorial_bytes(n) + 8);
+  EXPECT_LE(block.size(), log2_factorial_bytes(n) + 8);  // the mode and the coder's flush
   EXPECT_GT(block.size(), 0.99 * log2_factorial_bytes(n));  // nothing to find: no miracle either
 }
 
