@@ -14,6 +14,7 @@
 #include "gab/codec/decoder.h"
 #include "gab/codec/encoder.h"
 #include "gab/codec/gab_format.h"
+#include "gab/mesh/file_io.h"
 
 namespace gab {
 namespace {
@@ -77,6 +78,48 @@ TEST(FileSafety, EveryByteFlipIsAnErrorOrAValidMesh) {
       }
     }
     EXPECT_GT(errors, static_cast<int>(2 * file.size()));
+  }
+}
+
+TEST(FileSafety, DamageInsideAConnectivityBlockIsAnErrorOrAValidMesh) {
+  // Every byte of the connectivity block flipped with the block's checksum
+  // made whole again, so the damage reaches the decoders: the variants the
+  // encoder writes (order kept, reordered) and, from the golden seeds, the
+  // ones it no longer writes (the triangle list, the first valence section).
+  const std::string here = __FILE__;  // .../tests/codec/pipeline/file_safety_test.cpp
+  const std::string corpus = here.substr(0, here.rfind("/codec/")) + "/fuzz/corpus/gab/";
+  std::vector<std::pair<std::string, std::vector<uint8_t>>> files = {
+      {"order kept", small_file(false)}, {"reordered", small_file(false, false, FileLayout::kLevels, true)}};
+  for (const char* name : {"torus-full", "torus-reordered"}) {
+    std::string bytes;
+    ASSERT_TRUE(read_file(corpus + name, &bytes).ok()) << name;
+    files.push_back({name, std::vector<uint8_t>(bytes.begin() + 1, bytes.end())});  // past the options byte
+  }
+  for (const auto& [name, file] : files) {
+    // Frames after the header: the connectivity block, and with the order
+    // kept the vertex order's block.
+    const int frames = name == "order kept" ? 2 : 1;
+    size_t begin = kGabHeaderBytes;
+    for (int frame = 0; frame < frames; ++frame) {
+      const size_t length = file[begin] | (file[begin + 1] << 8) | (file[begin + 2] << 16);
+      const size_t payload = begin + 8;
+      ASSERT_LE(payload + length, file.size()) << name;
+      int errors = 0;
+      for (size_t i = payload; i < payload + length; ++i) {
+        for (uint8_t mask : {0x01, 0x80, 0xFF}) {
+          std::vector<uint8_t> bad = file;
+          bad[i] ^= mask;
+          const uint32_t crc = crc32(bad.data() + payload, length);
+          for (int b = 0; b < 4; ++b) bad[begin + 4 + b] = static_cast<uint8_t>(crc >> (8 * b));
+          Mesh out;
+          DecodeStats ds;
+          if (!decode_mesh(bad.data(), bad.size(), DecodeOptions(), &out, &ds).ok()) ++errors;
+          expect_clean(bad, DecodeOptions(), name + " byte " + std::to_string(i) + " ^ " + std::to_string(mask));
+        }
+      }
+      EXPECT_GT(errors, static_cast<int>(length)) << name << ", frame " << frame;  // most damage is caught
+      begin = payload + length;
+    }
   }
 }
 
