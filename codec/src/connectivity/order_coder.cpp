@@ -1,6 +1,7 @@
 #include "connectivity/order_coder.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "entropy/int_coder.h"
@@ -92,13 +93,19 @@ Adjacency adjacency(int32_t n, const std::vector<int32_t>& triangles) {
       all[fill[u]++] = triangles[f + (i + 2) % 3];
     }
   }
+  // Repeats dropped, in the order the triangles list them (`seen` marks
+  // the neighbours taken for the vertex at hand).
   Adjacency adj;
   adj.start.assign(static_cast<size_t>(n) + 1, 0);
   adj.neighbour.reserve(all.size() / 2);
+  std::vector<int32_t> seen(static_cast<size_t>(n), -1);
   for (int32_t v = 0; v < n; ++v) {
-    std::sort(all.begin() + start[v], all.begin() + start[v + 1]);
+    seen[v] = v;
     for (int32_t e = start[v]; e < start[v + 1]; ++e) {
-      if (all[e] != v && (e == start[v] || all[e] != all[e - 1])) adj.neighbour.push_back(all[e]);
+      if (seen[all[e]] != v) {
+        seen[all[e]] = v;
+        adj.neighbour.push_back(all[e]);
+      }
     }
     adj.start[v + 1] = static_cast<int32_t>(adj.neighbour.size());
   }
@@ -367,6 +374,11 @@ std::vector<uint8_t> encode_vertex_order(int32_t n, const std::vector<int32_t>& 
   for (int32_t k = 0; k < n && traversal; ++k) traversal = original[k] == k;
   if (traversal) return encode_with(OrderMode::kTraversal, n, triangles, original);
   std::vector<uint8_t> predicted = encode_with(OrderMode::kPredicted, n, triangles, original);
+  // The uniform block needs log2(n!) / 8 bytes at least: no need to make it
+  // when the prediction is clearly below (the margin keeps the choice the
+  // same whatever the libm's last bits).
+  const double uniform_at_least = std::lgamma(static_cast<double>(n) + 1.0) / std::log(2.0) / 8.0;
+  if (static_cast<double>(predicted.size()) + 16.0 < uniform_at_least) return predicted;
   std::vector<uint8_t> uniform = encode_with(OrderMode::kUniform, n, triangles, original);
   return predicted.size() <= uniform.size() ? predicted : uniform;
 }
