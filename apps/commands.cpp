@@ -12,7 +12,10 @@ const std::vector<Command>& commands() {
         "[--geometry-only | --reorder] [--refine] [--threads T] [--json]",
         "(tuning: --batch F --chunk-growth G --initial K --layout smaller|levels|selection)"},
        "compress a mesh's geometry with geometry-aware anchors (default --error 0.001: relative\n"
-       "vertex RMS over the bounding-box diagonal; q picked from the target, 12 for --anchors)"},
+       "vertex RMS over the bounding-box diagonal; q picked from the target, 12 for --anchors);\n"
+       "the connectivity and the vertex numbering are kept, triangles as a set (their order is the\n"
+       "coder's). --reorder drops the numbering for a smaller file: the decoded mesh is numbered in\n"
+       "the coder's traversal order, so per-vertex data kept outside the file no longer lines up"},
       {"decompress", run_decompress,
        {"-i IN.gab -o OUT [--anchors K] [--connectivity MESH] [--threads T] [--json]"},
        "decode a .gab file (its first K anchors only: a coarser level of detail)"},
