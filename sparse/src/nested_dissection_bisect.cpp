@@ -50,14 +50,14 @@ const Graph& level(const Graph& g, const Hierarchy& h, size_t k) { return k == 0
 // Projects `where` from level k + 1 to level k and refines it there, for
 // k = from - 1 down to to (levels numbered as level()).
 void uncoarsen(const Graph& g, const Hierarchy& h, size_t from, size_t to, const NestedDissectionOptions& params,
-               std::vector<uint8_t>* where, std::vector<uint8_t>* scratch) {
+               Workspace* ws, std::vector<uint8_t>* where, std::vector<uint8_t>* scratch) {
   for (size_t k = from; k-- > to;) {
     const Graph& finer = level(g, h, k);
     const std::vector<int32_t>& map = h.maps[k];
     scratch->resize(static_cast<size_t>(finer.n));
     for (int32_t v = 0; v < finer.n; ++v) (*scratch)[v] = (*where)[map[v]];
     where->swap(*scratch);
-    refine_separator(finer, params, where);
+    refine_separator(finer, params, ws, where);
   }
 }
 
@@ -86,14 +86,14 @@ void find_separator(const Graph& g, const NestedDissectionOptions& params, Rng* 
   std::pair<int64_t, int64_t> best_cost{-1, 0};
   for (int32_t c = 0; c < candidates; ++c) {
     initial_separator(level(g, h, coarsest), params, rng, ws, &candidate);
-    uncoarsen(g, h, coarsest, judge, params, &candidate, &scratch);
+    uncoarsen(g, h, coarsest, judge, params, ws, &candidate, &scratch);
     const std::pair<int64_t, int64_t> candidate_cost = cost(level(g, h, judge), params, candidate);
     if (best_cost.first < 0 || candidate_cost < best_cost) {
       best_cost = candidate_cost;
       best.swap(candidate);
     }
   }
-  uncoarsen(g, h, judge, 0, params, &best, &scratch);
+  uncoarsen(g, h, judge, 0, params, ws, &best, &scratch);
   where->swap(best);
 }
 

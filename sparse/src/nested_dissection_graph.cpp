@@ -20,6 +20,12 @@ void Workspace::grow(int32_t n) {
   slot.assign(n, -1);
   queue.resize(n);
   mark.resize(n);
+  refine.ext.resize(2 * static_cast<size_t>(n));
+  refine.locked.assign(n, 0);
+  for (int s = 0; s < 2; ++s) {
+    refine.pos[s].assign(n, -1);
+    refine.key[s].resize(n);
+  }
 }
 
 void induced_subgraph(const Graph& g, const std::vector<int32_t>& vertices, Workspace* ws, Graph* sub) {

@@ -39,6 +39,20 @@ using Rng = SplitMix64;
 // The heaviest a side may be: (1 + imbalance) / 2 of the graph's weight.
 int64_t max_side_weight(const Graph& g, double imbalance);
 
+// The FM refinement's state (nested_dissection_refine.cpp), kept between
+// calls: pos[] is -1 and locked[] 0 for every vertex outside a call.
+struct RefineWorkspace {
+  std::vector<int32_t> ext;         // 2 per vertex: neighbour weight on side 0, side 1
+  std::vector<uint8_t> locked;      // moved in this pass
+  std::vector<int32_t> pos[2];      // place in the gain heap of the move to side 0 / 1
+  std::vector<int32_t> key[2];      // gain of that move
+  std::vector<int32_t> heap[2];     // the heaps themselves
+  std::vector<int32_t> separator;   // the separator's vertices, increasing
+  std::vector<int32_t> moved;       // this pass's moves in order
+  std::vector<int32_t> pulled;      // vertices each move pulled into the separator
+  std::vector<int32_t> pulled_end;  // end of each move's run in pulled
+};
+
 // Buffers reused by every call so the recursion does not allocate per
 // vertex; sized for the largest graph (grow() keeps the invariants below).
 struct Workspace {
@@ -46,6 +60,7 @@ struct Workspace {
   std::vector<int32_t> slot;    // coarse vertex -> its entry in the row being built; -1 elsewhere
   std::vector<int32_t> queue;   // breadth-first searches
   std::vector<int32_t> mark;    // scratch labels (no invariant)
+  RefineWorkspace refine;
   void grow(int32_t n);
 };
 
@@ -74,7 +89,8 @@ void initial_separator(const Graph& g, const NestedDissectionOptions& params, Rn
 // separator vertices to a side (pulling their neighbours on the other side
 // into the separator) while it shrinks, keeping both sides under
 // max_side_weight, undoing each pass's moves past its best point.
-void refine_separator(const Graph& g, const NestedDissectionOptions& params, std::vector<uint8_t>* where);
+void refine_separator(const Graph& g, const NestedDissectionOptions& params, Workspace* ws,
+                      std::vector<uint8_t>* where);
 
 // A small, balanced vertex separator of a connected graph, multilevel:
 // coarsen, initial_separator on the coarsest graph, then project back level
