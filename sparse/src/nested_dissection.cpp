@@ -192,7 +192,7 @@ Status nested_dissection_order(const CscMatrix& lower, std::vector<int32_t>* per
   g.n = n;
   g.xadj = full.colptr;
   g.adj = full.rowind;
-  g.adjw.assign(g.adj.size(), 1);
+  // adjw stays empty: every edge of the matrix graph weighs 1.
   g.vw.assign(static_cast<size_t>(n), 1);
   g.total_weight = n;
   Dissection dissection(options, n, perm);

@@ -18,29 +18,31 @@ namespace gab {
 namespace nd {
 namespace {
 
-// The hierarchy: levels[0] is g's first coarsening; maps[k] takes level k-1
-// (g for k = 0) to level k.
-struct Hierarchy {
-  std::vector<Graph> levels;
-  std::vector<std::vector<int32_t>> maps;
-};
-
-void build_hierarchy(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws, Hierarchy* h) {
+// Coarsens g into ws->hierarchy: levels[0 .. depth) are its coarsenings, maps[k]
+// takes level k-1 (g for k = 0) to level k. The level graphs are the
+// workspace's, reused from call to call: their buffers keep their capacity.
+void build_hierarchy(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws) {
+  Hierarchy& h = ws->hierarchy;
+  h.depth = 0;
   const int32_t target = std::max(2, params.coarsest_size);
   // Coarse vertices heavier than this could not sit on a side of a balanced split.
   const int64_t max_vertex_weight =
       std::max<int64_t>(1, static_cast<int64_t>(1.5 * static_cast<double>(g.total_weight) / target));
-  const Graph* fine = &g;
-  while (fine->n > target) {
-    Graph coarse;
-    std::vector<int32_t> map;
-    coarsen(*fine, max_vertex_weight, rng, ws, &map, &coarse);
+  for (;;) {
+    const Graph& fine = h.depth == 0 ? g : h.levels[h.depth - 1];
+    if (fine.n <= target) break;
+    if (h.levels.size() == h.depth) {
+      h.levels.emplace_back();
+      h.maps.emplace_back();
+    }
+    // emplace_back may have moved the levels: take fine again.
+    const Graph& finer = h.depth == 0 ? g : h.levels[h.depth - 1];
+    Graph& coarse = h.levels[h.depth];
+    coarsen(finer, max_vertex_weight, rng, ws, &h.maps[h.depth], &coarse);
     // A matching that barely shrinks the graph (stars, heavy vertices) ends the coarsening.
-    const bool stalled = coarse.n > fine->n - fine->n / 20;
-    if (coarse.n == fine->n) break;
-    h->levels.push_back(std::move(coarse));
-    h->maps.push_back(std::move(map));
-    fine = &h->levels.back();
+    const bool stalled = coarse.n > finer.n - finer.n / 20;
+    if (coarse.n == finer.n) break;
+    ++h.depth;
     if (stalled) break;
   }
 }
@@ -73,9 +75,9 @@ std::pair<int64_t, int64_t> cost(const Graph& g, const NestedDissectionOptions& 
 
 void find_separator(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws,
                     std::vector<uint8_t>* where) {
-  Hierarchy h;
-  build_hierarchy(g, params, rng, ws, &h);
-  const size_t coarsest = h.levels.size();
+  build_hierarchy(g, params, rng, ws);
+  const Hierarchy& h = ws->hierarchy;
+  const size_t coarsest = h.depth;
   // The judging level: the finest with at most trial_size vertices.
   size_t judge = coarsest;
   while (judge > 0 && level(g, h, judge - 1).n <= params.trial_size) --judge;

@@ -38,7 +38,8 @@ void induced_subgraph(const Graph& g, const std::vector<int32_t>& vertices, Work
   sub->n = m;
   sub->xadj.resize(static_cast<size_t>(m) + 1);
   sub->adj.resize(static_cast<size_t>(entries));
-  sub->adjw.resize(static_cast<size_t>(entries));
+  const bool unit_edges = g.adjw.empty();
+  sub->adjw.resize(unit_edges ? 0 : static_cast<size_t>(entries));
   sub->vw.resize(static_cast<size_t>(m));
   sub->total_weight = 0;
   int32_t q = 0;
@@ -48,8 +49,8 @@ void induced_subgraph(const Graph& g, const std::vector<int32_t>& vertices, Work
     for (int32_t p = g.xadj[v]; p < g.xadj[v + 1]; ++p) {
       const int32_t u = ws->local[g.adj[p]];
       if (u < 0) continue;
-      sub->adj[q] = u;
-      sub->adjw[q++] = g.adjw[p];
+      if (!unit_edges) sub->adjw[q] = g.adjw[p];
+      sub->adj[q++] = u;
     }
     sub->xadj[k + 1] = q;
     sub->vw[k] = g.vw[v];

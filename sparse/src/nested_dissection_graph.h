@@ -25,7 +25,7 @@ struct Graph {
   int32_t n = 0;
   std::vector<int32_t> xadj;    // n + 1
   std::vector<int32_t> adj;     // xadj[n] neighbours
-  std::vector<int32_t> adjw;    // weight of each adj entry
+  std::vector<int32_t> adjw;    // weight of each adj entry; empty: every weight is 1
   std::vector<int32_t> vw;      // n vertex weights
   int64_t total_weight = 0;     // sum of vw
 };
@@ -53,6 +53,14 @@ struct RefineWorkspace {
   std::vector<int32_t> pulled_end;  // end of each move's run in pulled
 };
 
+// The coarsenings of the graph being separated (nested_dissection_bisect.cpp):
+// levels[0 .. depth) in use, those past depth kept for their buffers.
+struct Hierarchy {
+  std::vector<Graph> levels;
+  std::vector<std::vector<int32_t>> maps;  // maps[k]: level k-1 (the graph for k = 0) -> level k
+  size_t depth = 0;
+};
+
 // Buffers reused by every call so the recursion does not allocate per
 // vertex; sized for the largest graph (grow() keeps the invariants below).
 struct Workspace {
@@ -61,6 +69,7 @@ struct Workspace {
   std::vector<int32_t> queue;   // breadth-first searches
   std::vector<int32_t> mark;    // scratch labels (no invariant)
   RefineWorkspace refine;
+  Hierarchy hierarchy;
   void grow(int32_t n);
 };
 
