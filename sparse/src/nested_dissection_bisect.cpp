@@ -18,12 +18,11 @@ namespace gab {
 namespace nd {
 namespace {
 
-// Coarsens g into ws->hierarchy: levels[0 .. depth) are its coarsenings, maps[k]
-// takes level k-1 (g for k = 0) to level k. The level graphs are the
-// workspace's, reused from call to call: their buffers keep their capacity.
-void build_hierarchy(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws) {
-  Hierarchy& h = ws->hierarchy;
-  h.depth = 0;
+// Coarsens g's hierarchy h further until its coarsest level has at most
+// coarsest_size vertices (or matching stalls): levels[0 .. depth) are g's
+// coarsenings, maps[k] takes level k-1 (g for k = 0) to level k.
+void build_hierarchy(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws, Hierarchy* hierarchy) {
+  Hierarchy& h = *hierarchy;
   const int32_t target = std::max(2, params.coarsest_size);
   // Coarse vertices heavier than this could not sit on a side of a balanced split.
   const int64_t max_vertex_weight =
@@ -73,10 +72,10 @@ std::pair<int64_t, int64_t> cost(const Graph& g, const NestedDissectionOptions& 
 
 }  // namespace
 
-void find_separator(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws,
+void find_separator(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws, Hierarchy* hierarchy,
                     std::vector<uint8_t>* where) {
-  build_hierarchy(g, params, rng, ws);
-  const Hierarchy& h = ws->hierarchy;
+  build_hierarchy(g, params, rng, ws, hierarchy);
+  const Hierarchy& h = *hierarchy;
   const size_t coarsest = h.depth;
   // The judging level: the finest with at most trial_size vertices.
   size_t judge = coarsest;

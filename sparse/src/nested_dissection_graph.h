@@ -53,8 +53,8 @@ struct RefineWorkspace {
   std::vector<int32_t> pulled_end;  // end of each move's run in pulled
 };
 
-// The coarsenings of the graph being separated (nested_dissection_bisect.cpp):
-// levels[0 .. depth) in use, those past depth kept for their buffers.
+// The coarsenings of a graph g (nested_dissection_bisect.cpp): levels[0 ..
+// depth) in use, those past depth kept for their buffers.
 struct Hierarchy {
   std::vector<Graph> levels;
   std::vector<std::vector<int32_t>> maps;  // maps[k]: level k-1 (the graph for k = 0) -> level k
@@ -69,7 +69,8 @@ struct Workspace {
   std::vector<int32_t> queue;   // breadth-first searches
   std::vector<int32_t> mark;    // scratch labels (no invariant)
   RefineWorkspace refine;
-  Hierarchy hierarchy;
+  std::vector<int32_t> restrict_local[2];  // restrict_hierarchy's numberings (no invariant)
+  std::vector<int32_t> restrict_weight;    // and weights (no invariant)
   void grow(int32_t n);
 };
 
@@ -103,9 +104,20 @@ void refine_separator(const Graph& g, const NestedDissectionOptions& params, Wor
 
 // A small, balanced vertex separator of a connected graph, multilevel:
 // coarsen, initial_separator on the coarsest graph, then project back level
-// by level, refining at each.
-void find_separator(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws,
+// by level, refining at each. *h holds g's coarsenings: those it comes with
+// (restrict_hierarchy) are kept and coarsened further down to
+// coarsest_size; the caller may restrict them to the parts.
+void find_separator(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws, Hierarchy* h,
                     std::vector<uint8_t>* where);
+
+// The coarsenings of the part g[vertices] (vertices increasing) read off g's
+// coarsenings h, down to the first level with at most `target` vertices or
+// h's coarsest: each level's vertices are the coarse vertices holding part
+// vertices, weighing what they hold, with h's edges among them (a superset
+// of the part's coarse edges, so coarse separators stay separators).
+// O(n + edges) of h's levels.
+void restrict_hierarchy(const Graph& g, const Hierarchy& h, const std::vector<int32_t>& vertices, int32_t target,
+                        Workspace* ws, Hierarchy* part);
 
 }  // namespace nd
 }  // namespace gab
