@@ -151,6 +151,10 @@ class SeparatorRefiner {
   void enter(int32_t v) {
     int32_t ext[3] = {0, 0, 0};
     for (int32_t p = g_.xadj[v]; p < g_.xadj[v + 1]; ++p) ext[where_[g_.adj[p]]] += g_.vw[g_.adj[p]];
+    enter(v, ext);
+  }
+  // The same with v's neighbour weights per side already counted.
+  void enter(int32_t v, const int32_t ext[3]) {
     r_.ext[2 * v] = ext[0];
     r_.ext[2 * v + 1] = ext[1];
     if (r_.locked[v]) return;
@@ -198,11 +202,16 @@ class SeparatorRefiner {
         weight_[other] -= g_.vw[u];
         weight_[2] += g_.vw[u];
         r_.pulled.push_back(u);
+        // One sweep of u's list counts u's neighbours per side and updates
+        // its separator neighbours (g has no self loops: x != u).
+        int32_t ext[3] = {0, 0, 0};
         for (int32_t q = g_.xadj[u]; q < g_.xadj[u + 1]; ++q) {
           const int32_t x = g_.adj[q];
-          if (where_[x] == kSeparator && x != u) change_ext(x, other, -g_.vw[u]);
+          const uint8_t side = where_[x];
+          ext[side] += g_.vw[x];
+          if (side == kSeparator) change_ext(x, other, -g_.vw[u]);
         }
-        enter(u);
+        enter(u, ext);
       }
     }
     r_.pulled_end.push_back(static_cast<int32_t>(r_.pulled.size()));
