@@ -22,9 +22,7 @@ void Workspace::grow(int32_t n) {
   mark.resize(n);
   refine.ext.resize(2 * static_cast<size_t>(n));
   refine.locked.assign(n, 0);
-  restrict_local[0].resize(n);
-  restrict_local[1].resize(n);
-  restrict_weight.resize(n);
+
   for (int s = 0; s < 2; ++s) {
     refine.pos[s].assign(n, -1);
     refine.key[s].resize(n);

@@ -69,8 +69,7 @@ struct Workspace {
   std::vector<int32_t> queue;   // breadth-first searches
   std::vector<int32_t> mark;    // scratch labels (no invariant)
   RefineWorkspace refine;
-  std::vector<int32_t> restrict_local[2];  // restrict_hierarchy's numberings (no invariant)
-  std::vector<int32_t> restrict_weight;    // and weights (no invariant)
+  std::vector<int32_t> restrict_source[2];  // restrict_hierarchy's vertex lists (no invariant)
   void grow(int32_t n);
 };
 

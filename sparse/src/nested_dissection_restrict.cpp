@@ -23,64 +23,67 @@ namespace nd {
 void restrict_hierarchy(const Graph& g, const Hierarchy& h, const std::vector<int32_t>& vertices, int32_t target,
                         Workspace* ws, Hierarchy* part) {
   part->depth = 0;
-  int32_t finer_n = static_cast<int32_t>(vertices.size());
-  // local[c]: c's index in the part's level (-1 outside); the previous level's in prev.
-  std::vector<int32_t>& local = ws->restrict_local[0];
-  std::vector<int32_t>& prev = ws->restrict_local[1];
-  std::vector<int32_t>& weight = ws->restrict_weight;
-  for (size_t k = 0; k < h.depth && finer_n > std::max(2, target); ++k) {
+  // source[i]: the vertex of h's level k (g for k = 0) that is vertex i of the
+  // part's level k. Only the part's vertices and lists are read: O(its size).
+  std::vector<int32_t>& source = ws->restrict_source[0];
+  std::vector<int32_t>& next_source = ws->restrict_source[1];
+  source.assign(vertices.begin(), vertices.end());
+  std::vector<int32_t>& local = ws->local;  // -1 outside the level being built
+  for (size_t k = 0; k < h.depth && static_cast<int32_t>(source.size()) > std::max(2, target); ++k) {
     const Graph& coarse = h.levels[k];
     const std::vector<int32_t>& map = h.maps[k];
-    std::fill(weight.begin(), weight.begin() + coarse.n, 0);
-    if (k == 0) {
-      for (int32_t v : vertices) weight[map[v]] += g.vw[v];
-    } else {
-      const Graph& finer = part->levels[k - 1];
-      for (int32_t c = 0; c < h.levels[k - 1].n; ++c) {
-        if (prev[c] >= 0) weight[map[c]] += finer.vw[prev[c]];
-      }
-    }
-    int32_t n = 0;
-    for (int32_t c = 0; c < coarse.n; ++c) local[c] = weight[c] > 0 ? n++ : -1;
-
+    const std::vector<int32_t>& finer_vw = k == 0 ? g.vw : part->levels[k - 1].vw;
     if (part->levels.size() == k) {
       part->levels.emplace_back();
       part->maps.emplace_back();
     }
     Graph& level = part->levels[k];
+    std::vector<int32_t>& part_map = part->maps[k];
+    const int32_t finer_n = static_cast<int32_t>(source.size());
+    part_map.resize(static_cast<size_t>(finer_n));
+    level.vw.clear();
+    next_source.clear();
+    // The part's coarse vertices, numbered in order of their first fine
+    // vertex (as coarsen numbers them), weighing what they hold of the part.
+    for (int32_t i = 0; i < finer_n; ++i) {
+      const int32_t c = map[source[i]];
+      if (local[c] < 0) {
+        local[c] = static_cast<int32_t>(next_source.size());
+        next_source.push_back(c);
+        level.vw.push_back(0);
+      }
+      level.vw[local[c]] += finer_vw[i];
+      part_map[i] = local[c];
+    }
+    const int32_t n = static_cast<int32_t>(next_source.size());
+    size_t bound = 0;
+    for (int32_t c : next_source) bound += static_cast<size_t>(coarse.xadj[c + 1] - coarse.xadj[c]);
     level.n = n;
     level.xadj.resize(static_cast<size_t>(n) + 1);
-    level.adj.clear();
-    level.adjw.clear();
-    level.vw.resize(static_cast<size_t>(n));
+    level.adj.resize(bound);
+    level.adjw.resize(bound);
     level.total_weight = 0;
+    int32_t* adj = level.adj.data();
+    int32_t* adjw = level.adjw.data();
+    const bool unit_edges = coarse.adjw.empty();
+    int32_t q = 0;
     level.xadj[0] = 0;
-    for (int32_t c = 0; c < coarse.n; ++c) {
-      const int32_t i = local[c];
-      if (i < 0) continue;
+    for (int32_t i = 0; i < n; ++i) {
+      const int32_t c = next_source[i];
       for (int32_t p = coarse.xadj[c]; p < coarse.xadj[c + 1]; ++p) {
         const int32_t j = local[coarse.adj[p]];
-        if (j < 0) continue;
-        level.adj.push_back(j);
-        level.adjw.push_back(coarse.adjw.empty() ? 1 : coarse.adjw[p]);
+        adj[q] = j;
+        adjw[q] = unit_edges ? 1 : coarse.adjw[p];
+        q += j >= 0;
       }
-      level.xadj[i + 1] = static_cast<int32_t>(level.adj.size());
-      level.vw[i] = weight[c];
-      level.total_weight += weight[c];
+      level.xadj[i + 1] = q;
+      level.total_weight += level.vw[i];
     }
-
-    std::vector<int32_t>& part_map = part->maps[k];
-    part_map.resize(static_cast<size_t>(finer_n));
-    if (k == 0) {
-      for (int32_t i = 0; i < finer_n; ++i) part_map[i] = local[map[vertices[i]]];
-    } else {
-      for (int32_t c = 0; c < h.levels[k - 1].n; ++c) {
-        if (prev[c] >= 0) part_map[prev[c]] = local[map[c]];
-      }
-    }
+    level.adj.resize(static_cast<size_t>(q));
+    level.adjw.resize(static_cast<size_t>(q));
+    for (int32_t c : next_source) local[c] = -1;
     part->depth = k + 1;
-    finer_n = n;
-    local.swap(prev);
+    source.swap(next_source);
   }
 }
 
