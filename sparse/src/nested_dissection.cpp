@@ -205,8 +205,8 @@ Status nested_dissection_order(const CscMatrix& lower, std::vector<int32_t>* per
 
   Graph g;
   g.n = n;
-  g.xadj = full.colptr;
-  g.adj = full.rowind;
+  g.xadj.assign(full.colptr.begin(), full.colptr.end());
+  g.adj.assign(full.rowind.begin(), full.rowind.end());
   // adjw stays empty: every edge of the matrix graph weighs 1.
   g.vw.assign(static_cast<size_t>(n), 1);
   g.total_weight = n;

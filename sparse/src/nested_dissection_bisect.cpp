@@ -54,7 +54,7 @@ void uncoarsen(const Graph& g, const Hierarchy& h, size_t from, size_t to, const
                Workspace* ws, std::vector<uint8_t>* where, std::vector<uint8_t>* scratch) {
   for (size_t k = from; k-- > to;) {
     const Graph& finer = level(g, h, k);
-    const std::vector<int32_t>& map = h.maps[k];
+    const IntArray& map = h.maps[k];
     scratch->resize(static_cast<size_t>(finer.n));
     for (int32_t v = 0; v < finer.n; ++v) (*scratch)[v] = (*where)[map[v]];
     where->swap(*scratch);

@@ -13,7 +13,7 @@ namespace gab {
 namespace nd {
 
 void coarsen(const Graph& fine, int64_t max_vertex_weight, Rng* rng, Workspace* ws,
-             std::vector<int32_t>* fine_to_coarse, Graph* coarse) {
+             IntArray* fine_to_coarse, Graph* coarse) {
   const int32_t n = fine.n;
   // Random visiting order (Fisher-Yates with our own generator: reproducible).
   std::vector<int32_t>& order = ws->queue;
@@ -74,6 +74,7 @@ void coarsen(const Graph& fine, int64_t max_vertex_weight, Rng* rng, Workspace* 
   int32_t* cadj = coarse->adj.data();
   int32_t* cadjw = coarse->adjw.data();
   int32_t* slot = ws->slot.data();
+  cadjw[scratch] = 0;  // the self loops' sum, never read
   int32_t q = 0, c = 0;
   coarse->xadj[0] = 0;
   for (int32_t v = 0; v < n; ++v) {

@@ -10,6 +10,9 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <new>
+#include <utility>
 #include <vector>
 
 #include "gab/sparse/nested_dissection.h"
@@ -18,15 +21,39 @@
 namespace gab {
 namespace nd {
 
+// std::vector whose resize() leaves new ints unset: the graphs' arrays are
+// written in full right after they are sized, and zero-filling them first
+// (and the subgraphs and coarse levels of every recursion step) was a few
+// percent of the ordering.
+template <typename T>
+struct UninitializedAllocator : std::allocator<T> {
+  template <typename U>
+  struct rebind {
+    using other = UninitializedAllocator<U>;
+  };
+  UninitializedAllocator() = default;
+  template <typename U>
+  UninitializedAllocator(const UninitializedAllocator<U>&) noexcept {}
+  template <typename U>
+  void construct(U* p) noexcept {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <typename U, typename... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+using IntArray = std::vector<int32_t, UninitializedAllocator<int32_t>>;
+
 // An undirected graph without self loops, adjacency lists in CSR form, with
 // vertex weights (how many original vertices a coarse vertex stands for) and
 // edge weights (how many original edges a coarse edge stands for).
 struct Graph {
   int32_t n = 0;
-  std::vector<int32_t> xadj;    // n + 1
-  std::vector<int32_t> adj;     // xadj[n] neighbours
-  std::vector<int32_t> adjw;    // weight of each adj entry; empty: every weight is 1
-  std::vector<int32_t> vw;      // n vertex weights
+  IntArray xadj;    // n + 1
+  IntArray adj;     // xadj[n] neighbours
+  IntArray adjw;    // weight of each adj entry; empty: every weight is 1
+  IntArray vw;      // n vertex weights
   int64_t total_weight = 0;     // sum of vw
 };
 
@@ -57,7 +84,7 @@ struct RefineWorkspace {
 // depth) in use, those past depth kept for their buffers.
 struct Hierarchy {
   std::vector<Graph> levels;
-  std::vector<std::vector<int32_t>> maps;  // maps[k]: level k-1 (the graph for k = 0) -> level k
+  std::vector<IntArray> maps;  // maps[k]: level k-1 (the graph for k = 0) -> level k
   size_t depth = 0;
 };
 
@@ -85,7 +112,7 @@ int32_t connected_components(const Graph& g, Workspace* ws, std::vector<int32_t>
 // order, each matched pair (or lone vertex) contracted into one coarse vertex.
 // No coarse vertex weighs more than max_vertex_weight. fine_to_coarse[v] is
 // v's coarse vertex. O(n + edges).
-void coarsen(const Graph& fine, int64_t max_vertex_weight, Rng* rng, Workspace* ws, std::vector<int32_t>* fine_to_coarse,
+void coarsen(const Graph& fine, int64_t max_vertex_weight, Rng* rng, Workspace* ws, IntArray* fine_to_coarse,
              Graph* coarse);
 
 // A vertex separator of a small graph: regions grown breadth-first from

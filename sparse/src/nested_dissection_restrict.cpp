@@ -31,14 +31,14 @@ void restrict_hierarchy(const Graph& g, const Hierarchy& h, const std::vector<in
   std::vector<int32_t>& local = ws->local;  // -1 outside the level being built
   for (size_t k = 0; k < h.depth && static_cast<int32_t>(source.size()) > std::max(2, target); ++k) {
     const Graph& coarse = h.levels[k];
-    const std::vector<int32_t>& map = h.maps[k];
-    const std::vector<int32_t>& finer_vw = k == 0 ? g.vw : part->levels[k - 1].vw;
+    const IntArray& map = h.maps[k];
+    const IntArray& finer_vw = k == 0 ? g.vw : part->levels[k - 1].vw;
     if (part->levels.size() == k) {
       part->levels.emplace_back();
       part->maps.emplace_back();
     }
     Graph& level = part->levels[k];
-    std::vector<int32_t>& part_map = part->maps[k];
+    IntArray& part_map = part->maps[k];
     const int32_t finer_n = static_cast<int32_t>(source.size());
     part_map.resize(static_cast<size_t>(finer_n));
     level.vw.clear();
