@@ -47,7 +47,7 @@ class Dissection {
       const int32_t count = nd::connected_components(g, &ws_, &component);
       if (count > 1) return order_components(g, label, h, component, count, begin, roots);
     }
-    if (g.n <= std::max<int32_t>(options_.leaf_size, 2)) return order_leaf(g, label, begin, roots);
+    if (is_leaf(g.n)) return order_leaf(g, label, begin, roots);
 
     std::vector<uint8_t> where;
     nd::find_separator(g, options_, &rng_, &ws_, &h, &where);
@@ -65,7 +65,10 @@ class Dissection {
     nd::Hierarchy part_hierarchy[2];
     for (int s = 0; s < 2; ++s) {
       nd::induced_subgraph(g, side[s], &ws_, &part[s]);
-      nd::restrict_hierarchy(g, h, side[s], options_.coarsest_size, &ws_, &part_hierarchy[s]);
+      // A part that will be a leaf needs no coarsening.
+      if (!is_leaf(part[s].n)) {
+        nd::restrict_hierarchy(g, h, side[s], options_.coarsest_size, &ws_, &part_hierarchy[s]);
+      }
       part_label[s].reserve(side[s].size());
       for (int32_t v : side[s]) part_label[s].push_back(label[v]);
     }
@@ -110,6 +113,9 @@ class Dissection {
   }
 
  private:
+  // Pieces this small are ordered by AMD whole.
+  bool is_leaf(int32_t n) const { return n <= std::max<int32_t>(options_.leaf_size, 2); }
+
   Status order_components(const Graph& g, const std::vector<int32_t>& label, const nd::Hierarchy& h,
                           const std::vector<int32_t>& component, int32_t count, int32_t begin,
                           std::vector<int32_t>* roots) {
@@ -119,7 +125,7 @@ class Dissection {
       Graph sub;
       nd::induced_subgraph(g, members[c], &ws_, &sub);
       nd::Hierarchy sub_hierarchy;
-      nd::restrict_hierarchy(g, h, members[c], options_.coarsest_size, &ws_, &sub_hierarchy);
+      if (!is_leaf(sub.n)) nd::restrict_hierarchy(g, h, members[c], options_.coarsest_size, &ws_, &sub_hierarchy);
       std::vector<int32_t> sub_label;
       sub_label.reserve(members[c].size());
       for (int32_t v : members[c]) sub_label.push_back(label[v]);
