@@ -4,6 +4,7 @@
 //   nested_dissection.cpp          the recursion: components, dense rows, leaves by AMD, tree
 //   nested_dissection_bisect.cpp   one vertex separator, multilevel: coarsen, separate, refine
 //   nested_dissection_coarsen.cpp  heavy-edge matching and contraction
+//   nested_dissection_restrict.cpp a part's coarsenings read off its parent's
 //   nested_dissection_initial.cpp  separator of the coarsest graph by greedy growing
 //   nested_dissection_refine.cpp   FM refinement of a vertex separator
 //   nested_dissection_graph.cpp    induced subgraphs, connected components
