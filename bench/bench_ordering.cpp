@@ -4,7 +4,7 @@
 // factor's nnz(L) and flops from the symbolic analysis, and one numeric
 // factorization's time. Usage: bench_ordering [mesh names...] (default: all).
 // Environment variables ND_LEAF, ND_IMBALANCE, ND_COARSEST, ND_TRIES, ND_PASSES
-// ND_PATIENCE, ND_CANDIDATES and ND_TRIAL_SIZE override the nested-dissection options (for tuning);
+// ND_PATIENCE, ND_CANDIDATES, ND_TRIAL_SIZE, ND_LARGE_CANDIDATES and ND_LARGE_SIZE override the nested-dissection options (for tuning);
 // ND_SEED the generator's seed; ND_RUNS sets how many runs the best time is taken of (3), ND_ONLY skips AMD,
 // ND_NO_FACTOR skips the numeric factorization, ND_HASH prints a hash of the ND permutation to stderr (to check that a
 // change keeps the ordering).
@@ -86,6 +86,8 @@ gab::NestedDissectionOptions nd_options() {
   o.refine_patience = static_cast<int32_t>(read("ND_PATIENCE", o.refine_patience));
   o.candidates = static_cast<int32_t>(read("ND_CANDIDATES", o.candidates));
   o.trial_size = static_cast<int32_t>(read("ND_TRIAL_SIZE", o.trial_size));
+  o.large_candidates = static_cast<int32_t>(read("ND_LARGE_CANDIDATES", o.large_candidates));
+  o.large_size = static_cast<int32_t>(read("ND_LARGE_SIZE", o.large_size));
   if (const char* seed = std::getenv("ND_SEED")) o.seed = std::strtoull(seed, nullptr, 0);
   return o;
 }

@@ -81,7 +81,8 @@ void find_separator(const Graph& g, const NestedDissectionOptions& params, Rng* 
   size_t judge = coarsest;
   while (judge > 0 && level(g, h, judge - 1).n <= params.trial_size) --judge;
   // Pieces already this small take their first candidate: their separators weigh little in the factor.
-  const int32_t candidates = judge > 0 && judge < coarsest ? std::max(1, params.candidates) : 1;
+  const int32_t wanted = g.n >= params.large_size ? params.large_candidates : params.candidates;
+  const int32_t candidates = judge > 0 && judge < coarsest ? std::max(1, wanted) : 1;
 
   std::vector<uint8_t> best, candidate, scratch;
   std::pair<int64_t, int64_t> best_cost{-1, 0};
