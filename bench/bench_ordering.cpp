@@ -4,7 +4,10 @@
 // factor's nnz(L) and flops from the symbolic analysis, and one numeric
 // factorization's time. Usage: bench_ordering [mesh names...] (default: all).
 // Environment variables ND_LEAF, ND_IMBALANCE, ND_COARSEST, ND_TRIES, ND_PASSES
-// ND_PATIENCE, ND_CANDIDATES and ND_TRIAL_SIZE override the nested-dissection options (for tuning).
+// ND_PATIENCE, ND_CANDIDATES, ND_TRIAL_SIZE, ND_LARGE_CANDIDATES and ND_LARGE_SIZE override the nested-dissection options (for tuning);
+// ND_SEED the generator's seed; ND_RUNS sets how many runs the best time is taken of (3), ND_ONLY skips AMD,
+// ND_NO_FACTOR skips the numeric factorization, ND_HASH prints a hash of the ND permutation to stderr (to check that a
+// change keeps the ordering).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -60,7 +63,7 @@ void report(const char* mesh, const char* method, const gab::CscMatrix& lower,
   gab::Cholesky chol;
   gab_bench::check(chol.analyze(lower, options), "analyze");
   const Clock::time_point start = Clock::now();
-  gab_bench::check(chol.factorize(lower), "factorize");
+  if (!std::getenv("ND_NO_FACTOR")) gab_bench::check(chol.factorize(lower), "factorize");
   const double factor_seconds = seconds_since(start);
   const gab::SymbolicFactor& f = chol.symbolic();
   std::printf("| %-11s | %-4s | %8.3f | %10.3fM | %9.3e | %8.3f |\n", mesh, method, order_seconds,
@@ -83,6 +86,9 @@ gab::NestedDissectionOptions nd_options() {
   o.refine_patience = static_cast<int32_t>(read("ND_PATIENCE", o.refine_patience));
   o.candidates = static_cast<int32_t>(read("ND_CANDIDATES", o.candidates));
   o.trial_size = static_cast<int32_t>(read("ND_TRIAL_SIZE", o.trial_size));
+  o.large_candidates = static_cast<int32_t>(read("ND_LARGE_CANDIDATES", o.large_candidates));
+  o.large_size = static_cast<int32_t>(read("ND_LARGE_SIZE", o.large_size));
+  if (const char* seed = std::getenv("ND_SEED")) o.seed = std::strtoull(seed, nullptr, 0);
   return o;
 }
 
@@ -140,9 +146,15 @@ int main(int argc, char** argv) {
       t = time_ordering([&](std::vector<int32_t>* p) { return gab::amd_order(lower, p); }, &perm, 3);
       report(name.c_str(), "AMD", lower, perm, t);
     }
+    const int runs = std::getenv("ND_RUNS") ? std::max(1, std::atoi(std::getenv("ND_RUNS"))) : 3;
     t = time_ordering(
-        [&](std::vector<int32_t>* p) { return gab::nested_dissection_order(lower, p, options); }, &perm, 3);
+        [&](std::vector<int32_t>* p) { return gab::nested_dissection_order(lower, p, options); }, &perm, runs);
     report(name.c_str(), "ND", lower, perm, t);
+    if (std::getenv("ND_HASH")) {
+      uint64_t hash = 1469598103934665603ull;  // FNV-1a over the permutation
+      for (int32_t v : perm) hash = (hash ^ static_cast<uint32_t>(v)) * 1099511628211ull;
+      std::fprintf(stderr, "%s ND permutation hash %016llx\n", name.c_str(), static_cast<unsigned long long>(hash));
+    }
     if (std::getenv("ND_TREE")) print_top_separators(lower, options);
   }
   return 0;

@@ -18,29 +18,30 @@ namespace gab {
 namespace nd {
 namespace {
 
-// The hierarchy: levels[0] is g's first coarsening; maps[k] takes level k-1
-// (g for k = 0) to level k.
-struct Hierarchy {
-  std::vector<Graph> levels;
-  std::vector<std::vector<int32_t>> maps;
-};
-
-void build_hierarchy(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws, Hierarchy* h) {
+// Coarsens g's hierarchy h further until its coarsest level has at most
+// coarsest_size vertices (or matching stalls): levels[0 .. depth) are g's
+// coarsenings, maps[k] takes level k-1 (g for k = 0) to level k.
+void build_hierarchy(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws, Hierarchy* hierarchy) {
+  Hierarchy& h = *hierarchy;
   const int32_t target = std::max(2, params.coarsest_size);
   // Coarse vertices heavier than this could not sit on a side of a balanced split.
   const int64_t max_vertex_weight =
       std::max<int64_t>(1, static_cast<int64_t>(1.5 * static_cast<double>(g.total_weight) / target));
-  const Graph* fine = &g;
-  while (fine->n > target) {
-    Graph coarse;
-    std::vector<int32_t> map;
-    coarsen(*fine, max_vertex_weight, rng, ws, &map, &coarse);
+  for (;;) {
+    const Graph& fine = h.depth == 0 ? g : h.levels[h.depth - 1];
+    if (fine.n <= target) break;
+    if (h.levels.size() == h.depth) {
+      h.levels.emplace_back();
+      h.maps.emplace_back();
+    }
+    // emplace_back may have moved the levels: take fine again.
+    const Graph& finer = h.depth == 0 ? g : h.levels[h.depth - 1];
+    Graph& coarse = h.levels[h.depth];
+    coarsen(finer, max_vertex_weight, rng, ws, &h.maps[h.depth], &coarse);
     // A matching that barely shrinks the graph (stars, heavy vertices) ends the coarsening.
-    const bool stalled = coarse.n > fine->n - fine->n / 20;
-    if (coarse.n == fine->n) break;
-    h->levels.push_back(std::move(coarse));
-    h->maps.push_back(std::move(map));
-    fine = &h->levels.back();
+    const bool stalled = coarse.n > finer.n - finer.n / 20;
+    if (coarse.n == finer.n) break;
+    ++h.depth;
     if (stalled) break;
   }
 }
@@ -50,14 +51,14 @@ const Graph& level(const Graph& g, const Hierarchy& h, size_t k) { return k == 0
 // Projects `where` from level k + 1 to level k and refines it there, for
 // k = from - 1 down to to (levels numbered as level()).
 void uncoarsen(const Graph& g, const Hierarchy& h, size_t from, size_t to, const NestedDissectionOptions& params,
-               std::vector<uint8_t>* where, std::vector<uint8_t>* scratch) {
+               Workspace* ws, std::vector<uint8_t>* where, std::vector<uint8_t>* scratch) {
   for (size_t k = from; k-- > to;) {
     const Graph& finer = level(g, h, k);
-    const std::vector<int32_t>& map = h.maps[k];
+    const IntArray& map = h.maps[k];
     scratch->resize(static_cast<size_t>(finer.n));
     for (int32_t v = 0; v < finer.n; ++v) (*scratch)[v] = (*where)[map[v]];
     where->swap(*scratch);
-    refine_separator(finer, params, where);
+    refine_separator(finer, params, ws, where);
   }
 }
 
@@ -71,29 +72,30 @@ std::pair<int64_t, int64_t> cost(const Graph& g, const NestedDissectionOptions& 
 
 }  // namespace
 
-void find_separator(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws,
+void find_separator(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws, Hierarchy* hierarchy,
                     std::vector<uint8_t>* where) {
-  Hierarchy h;
-  build_hierarchy(g, params, rng, ws, &h);
-  const size_t coarsest = h.levels.size();
+  build_hierarchy(g, params, rng, ws, hierarchy);
+  const Hierarchy& h = *hierarchy;
+  const size_t coarsest = h.depth;
   // The judging level: the finest with at most trial_size vertices.
   size_t judge = coarsest;
   while (judge > 0 && level(g, h, judge - 1).n <= params.trial_size) --judge;
   // Pieces already this small take their first candidate: their separators weigh little in the factor.
-  const int32_t candidates = judge > 0 && judge < coarsest ? std::max(1, params.candidates) : 1;
+  const int32_t wanted = g.n >= params.large_size ? params.large_candidates : params.candidates;
+  const int32_t candidates = judge > 0 && judge < coarsest ? std::max(1, wanted) : 1;
 
   std::vector<uint8_t> best, candidate, scratch;
   std::pair<int64_t, int64_t> best_cost{-1, 0};
   for (int32_t c = 0; c < candidates; ++c) {
     initial_separator(level(g, h, coarsest), params, rng, ws, &candidate);
-    uncoarsen(g, h, coarsest, judge, params, &candidate, &scratch);
+    uncoarsen(g, h, coarsest, judge, params, ws, &candidate, &scratch);
     const std::pair<int64_t, int64_t> candidate_cost = cost(level(g, h, judge), params, candidate);
     if (best_cost.first < 0 || candidate_cost < best_cost) {
       best_cost = candidate_cost;
       best.swap(candidate);
     }
   }
-  uncoarsen(g, h, judge, 0, params, &best, &scratch);
+  uncoarsen(g, h, judge, 0, params, ws, &best, &scratch);
   where->swap(best);
 }
 

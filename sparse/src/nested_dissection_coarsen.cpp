@@ -13,7 +13,7 @@ namespace gab {
 namespace nd {
 
 void coarsen(const Graph& fine, int64_t max_vertex_weight, Rng* rng, Workspace* ws,
-             std::vector<int32_t>* fine_to_coarse, Graph* coarse) {
+             IntArray* fine_to_coarse, Graph* coarse) {
   const int32_t n = fine.n;
   // Random visiting order (Fisher-Yates with our own generator: reproducible).
   std::vector<int32_t>& order = ws->queue;
@@ -22,17 +22,20 @@ void coarsen(const Graph& fine, int64_t max_vertex_weight, Rng* rng, Workspace* 
 
   std::vector<int32_t>& match = ws->mark;
   std::fill(match.begin(), match.begin() + n, -1);
+  const bool unit_edges = fine.adjw.empty();
   for (int32_t k = 0; k < n; ++k) {
     const int32_t v = order[k];
     if (match[v] >= 0) continue;
     int32_t best = v, best_weight = -1;
     for (int32_t p = fine.xadj[v]; p < fine.xadj[v + 1]; ++p) {
       const int32_t u = fine.adj[p];
-      if (match[u] >= 0 || fine.adjw[p] <= best_weight) continue;
+      const int32_t weight = unit_edges ? 1 : fine.adjw[p];
+      if (match[u] >= 0 || weight <= best_weight) continue;
       // Heavy coarse vertices would make a balanced coarse separator impossible.
       if (fine.vw[v] + fine.vw[u] > max_vertex_weight) continue;
       best = u;
-      best_weight = fine.adjw[p];
+      best_weight = weight;
+      if (unit_edges) break;  // no later edge is heavier
     }
     match[v] = best;
     match[best] = v;
@@ -52,19 +55,26 @@ void coarsen(const Graph& fine, int64_t max_vertex_weight, Rng* rng, Workspace* 
   // parallel edges merged (weights summed) through slot[], self loops dropped.
   // Raw pointers: the compiler cannot keep vector internals in registers
   // across the stores otherwise, and this loop is most of the coarsening.
+  // The merge is branch-free (whether a neighbour is new is a coin toss on
+  // these graphs, and mispredictions were most of the loop's time): every
+  // entry is written at its slot, a new one at q; c's own slot points at a
+  // scratch entry past the end that takes the self loops.
+  const size_t fine_entries = fine.adj.size();
+  const int32_t scratch = static_cast<int32_t>(fine_entries);
   coarse->n = nc;
   coarse->xadj.resize(static_cast<size_t>(nc) + 1);
-  coarse->adj.resize(fine.adj.size());  // contraction never adds entries
-  coarse->adjw.resize(fine.adj.size());
+  coarse->adj.resize(fine_entries + 1);  // contraction never adds entries; + the scratch entry
+  coarse->adjw.resize(fine_entries + 1);
   coarse->vw.assign(static_cast<size_t>(nc), 0);
   coarse->total_weight = fine.total_weight;
   const int32_t* xadj = fine.xadj.data();
   const int32_t* adj = fine.adj.data();
-  const int32_t* adjw = fine.adjw.data();
+  const int32_t* adjw = unit_edges ? nullptr : fine.adjw.data();
   const int32_t* to_coarse = fine_to_coarse->data();
   int32_t* cadj = coarse->adj.data();
   int32_t* cadjw = coarse->adjw.data();
   int32_t* slot = ws->slot.data();
+  cadjw[scratch] = 0;  // the self loops' sum, never read
   int32_t q = 0, c = 0;
   coarse->xadj[0] = 0;
   for (int32_t v = 0; v < n; ++v) {
@@ -72,22 +82,23 @@ void coarsen(const Graph& fine, int64_t max_vertex_weight, Rng* rng, Workspace* 
     const int32_t row_start = q;
     const int32_t pair[2] = {v, match[v]};
     const int32_t members = match[v] == v ? 1 : 2;
+    slot[c] = scratch;
     for (int32_t m = 0; m < members; ++m) {
       const int32_t x = pair[m];
       coarse->vw[c] += fine.vw[x];
       for (int32_t p = xadj[x]; p < xadj[x + 1]; ++p) {
         const int32_t cu = to_coarse[adj[p]];
-        if (cu == c) continue;
         const int32_t s = slot[cu];
-        if (s < 0) {
-          slot[cu] = q;
-          cadj[q] = cu;
-          cadjw[q++] = adjw[p];
-        } else {
-          cadjw[s] += adjw[p];
-        }
+        const bool fresh = s < 0;
+        const int32_t at = fresh ? q : s;
+        const int32_t w = adjw ? adjw[p] : 1;
+        cadjw[at] = (fresh ? 0 : cadjw[at]) + w;
+        cadj[at] = cu;
+        slot[cu] = at;
+        q += fresh;
       }
     }
+    slot[c] = -1;
     for (int32_t r = row_start; r < q; ++r) slot[cadj[r]] = -1;
     coarse->xadj[++c] = q;
   }

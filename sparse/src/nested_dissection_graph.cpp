@@ -20,35 +20,47 @@ void Workspace::grow(int32_t n) {
   slot.assign(n, -1);
   queue.resize(n);
   mark.resize(n);
+  refine.ext.resize(2 * static_cast<size_t>(n));
+  refine.locked.assign(n, 0);
+
+  for (int s = 0; s < 2; ++s) {
+    refine.pos[s].assign(n, -1);
+    refine.key[s].resize(n);
+  }
 }
 
 void induced_subgraph(const Graph& g, const std::vector<int32_t>& vertices, Workspace* ws, Graph* sub) {
   const int32_t m = static_cast<int32_t>(vertices.size());
   for (int32_t k = 0; k < m; ++k) ws->local[vertices[k]] = k;
-  int64_t entries = 0;
-  for (int32_t v : vertices) {
-    for (int32_t p = g.xadj[v]; p < g.xadj[v + 1]; ++p) entries += ws->local[g.adj[p]] >= 0;
-  }
+  // One sweep of the lists, written into room for all of them (the arrays are
+  // not zero-filled) and cut to size after.
+  size_t bound = 0;
+  for (int32_t v : vertices) bound += static_cast<size_t>(g.xadj[v + 1] - g.xadj[v]);
+  const bool unit_edges = g.adjw.empty();
   sub->n = m;
   sub->xadj.resize(static_cast<size_t>(m) + 1);
-  sub->adj.resize(static_cast<size_t>(entries));
-  sub->adjw.resize(static_cast<size_t>(entries));
+  sub->adj.resize(bound);
+  sub->adjw.resize(unit_edges ? 0 : bound);
   sub->vw.resize(static_cast<size_t>(m));
   sub->total_weight = 0;
+  const int32_t* local = ws->local.data();
+  int32_t* adj = sub->adj.data();
   int32_t q = 0;
   sub->xadj[0] = 0;
   for (int32_t k = 0; k < m; ++k) {
     const int32_t v = vertices[k];
     for (int32_t p = g.xadj[v]; p < g.xadj[v + 1]; ++p) {
-      const int32_t u = ws->local[g.adj[p]];
-      if (u < 0) continue;
-      sub->adj[q] = u;
-      sub->adjw[q++] = g.adjw[p];
+      const int32_t u = local[g.adj[p]];
+      if (!unit_edges) sub->adjw[q] = g.adjw[p];
+      adj[q] = u;
+      q += u >= 0;
     }
     sub->xadj[k + 1] = q;
     sub->vw[k] = g.vw[v];
     sub->total_weight += g.vw[v];
   }
+  sub->adj.resize(static_cast<size_t>(q));
+  if (!unit_edges) sub->adjw.resize(static_cast<size_t>(q));
   for (int32_t v : vertices) ws->local[v] = -1;
 }
 

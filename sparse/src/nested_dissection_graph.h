@@ -4,12 +4,16 @@
 //   nested_dissection.cpp          the recursion: components, dense rows, leaves by AMD, tree
 //   nested_dissection_bisect.cpp   one vertex separator, multilevel: coarsen, separate, refine
 //   nested_dissection_coarsen.cpp  heavy-edge matching and contraction
+//   nested_dissection_restrict.cpp a part's coarsenings read off its parent's
 //   nested_dissection_initial.cpp  separator of the coarsest graph by greedy growing
 //   nested_dissection_refine.cpp   FM refinement of a vertex separator
 //   nested_dissection_graph.cpp    induced subgraphs, connected components
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <new>
+#include <utility>
 #include <vector>
 
 #include "gab/sparse/nested_dissection.h"
@@ -18,15 +22,39 @@
 namespace gab {
 namespace nd {
 
+// std::vector whose resize() leaves new ints unset: the graphs' arrays are
+// written in full right after they are sized, and zero-filling them first
+// (and the subgraphs and coarse levels of every recursion step) was a few
+// percent of the ordering.
+template <typename T>
+struct UninitializedAllocator : std::allocator<T> {
+  template <typename U>
+  struct rebind {
+    using other = UninitializedAllocator<U>;
+  };
+  UninitializedAllocator() = default;
+  template <typename U>
+  UninitializedAllocator(const UninitializedAllocator<U>&) noexcept {}
+  template <typename U>
+  void construct(U* p) noexcept {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <typename U, typename... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+using IntArray = std::vector<int32_t, UninitializedAllocator<int32_t>>;
+
 // An undirected graph without self loops, adjacency lists in CSR form, with
 // vertex weights (how many original vertices a coarse vertex stands for) and
 // edge weights (how many original edges a coarse edge stands for).
 struct Graph {
   int32_t n = 0;
-  std::vector<int32_t> xadj;    // n + 1
-  std::vector<int32_t> adj;     // xadj[n] neighbours
-  std::vector<int32_t> adjw;    // weight of each adj entry
-  std::vector<int32_t> vw;      // n vertex weights
+  IntArray xadj;    // n + 1
+  IntArray adj;     // xadj[n] neighbours
+  IntArray adjw;    // weight of each adj entry; empty: every weight is 1
+  IntArray vw;      // n vertex weights
   int64_t total_weight = 0;     // sum of vw
 };
 
@@ -39,6 +67,28 @@ using Rng = SplitMix64;
 // The heaviest a side may be: (1 + imbalance) / 2 of the graph's weight.
 int64_t max_side_weight(const Graph& g, double imbalance);
 
+// The FM refinement's state (nested_dissection_refine.cpp), kept between
+// calls: pos[] is -1 and locked[] 0 for every vertex outside a call.
+struct RefineWorkspace {
+  std::vector<int32_t> ext;         // 2 per vertex: neighbour weight on side 0, side 1
+  std::vector<uint8_t> locked;      // moved in this pass
+  std::vector<int32_t> pos[2];      // place in the gain heap of the move to side 0 / 1
+  std::vector<int32_t> key[2];      // gain of that move
+  std::vector<int32_t> heap[2];     // the heaps themselves
+  std::vector<int32_t> separator;   // the separator's vertices, increasing
+  std::vector<int32_t> moved;       // this pass's moves in order
+  std::vector<int32_t> pulled;      // vertices each move pulled into the separator
+  std::vector<int32_t> pulled_end;  // end of each move's run in pulled
+};
+
+// The coarsenings of a graph g (nested_dissection_bisect.cpp): levels[0 ..
+// depth) in use, those past depth kept for their buffers.
+struct Hierarchy {
+  std::vector<Graph> levels;
+  std::vector<IntArray> maps;  // maps[k]: level k-1 (the graph for k = 0) -> level k
+  size_t depth = 0;
+};
+
 // Buffers reused by every call so the recursion does not allocate per
 // vertex; sized for the largest graph (grow() keeps the invariants below).
 struct Workspace {
@@ -46,6 +96,8 @@ struct Workspace {
   std::vector<int32_t> slot;    // coarse vertex -> its entry in the row being built; -1 elsewhere
   std::vector<int32_t> queue;   // breadth-first searches
   std::vector<int32_t> mark;    // scratch labels (no invariant)
+  RefineWorkspace refine;
+  std::vector<int32_t> restrict_source[2];  // restrict_hierarchy's vertex lists (no invariant)
   void grow(int32_t n);
 };
 
@@ -61,7 +113,7 @@ int32_t connected_components(const Graph& g, Workspace* ws, std::vector<int32_t>
 // order, each matched pair (or lone vertex) contracted into one coarse vertex.
 // No coarse vertex weighs more than max_vertex_weight. fine_to_coarse[v] is
 // v's coarse vertex. O(n + edges).
-void coarsen(const Graph& fine, int64_t max_vertex_weight, Rng* rng, Workspace* ws, std::vector<int32_t>* fine_to_coarse,
+void coarsen(const Graph& fine, int64_t max_vertex_weight, Rng* rng, Workspace* ws, IntArray* fine_to_coarse,
              Graph* coarse);
 
 // A vertex separator of a small graph: regions grown breadth-first from
@@ -74,13 +126,25 @@ void initial_separator(const Graph& g, const NestedDissectionOptions& params, Rn
 // separator vertices to a side (pulling their neighbours on the other side
 // into the separator) while it shrinks, keeping both sides under
 // max_side_weight, undoing each pass's moves past its best point.
-void refine_separator(const Graph& g, const NestedDissectionOptions& params, std::vector<uint8_t>* where);
+void refine_separator(const Graph& g, const NestedDissectionOptions& params, Workspace* ws,
+                      std::vector<uint8_t>* where);
 
 // A small, balanced vertex separator of a connected graph, multilevel:
 // coarsen, initial_separator on the coarsest graph, then project back level
-// by level, refining at each.
-void find_separator(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws,
+// by level, refining at each. *h holds g's coarsenings: those it comes with
+// (restrict_hierarchy) are kept and coarsened further down to
+// coarsest_size; the caller may restrict them to the parts.
+void find_separator(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws, Hierarchy* h,
                     std::vector<uint8_t>* where);
+
+// The coarsenings of the part g[vertices] (vertices increasing) read off g's
+// coarsenings h, down to the first level with at most `target` vertices or
+// h's coarsest: each level's vertices are the coarse vertices holding part
+// vertices, weighing what they hold, with h's edges among them (a superset
+// of the part's coarse edges, so coarse separators stay separators).
+// O(n + edges) of h's levels.
+void restrict_hierarchy(const Graph& g, const Hierarchy& h, const std::vector<int32_t>& vertices, int32_t target,
+                        Workspace* ws, Hierarchy* part);
 
 }  // namespace nd
 }  // namespace gab

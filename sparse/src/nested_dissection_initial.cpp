@@ -101,7 +101,7 @@ void initial_separator(const Graph& g, const NestedDissectionOptions& params, Rn
     const int32_t seed = t == 0 ? far_vertex(g, 0, ws) : rng->below(g.n);
     grow_region(g, seed, ws, &trial);
     boundary_to_separator(g, &trial);
-    refine_separator(g, params, &trial);
+    refine_separator(g, params, ws, &trial);
     int64_t weight[3] = {0, 0, 0};
     for (int32_t v = 0; v < g.n; ++v) weight[trial[v]] += g.vw[v];
     const int64_t excess = std::max<int64_t>(0, std::max(weight[0], weight[1]) - max_side);

@@ -27,10 +27,13 @@ namespace nd {
 namespace {
 
 // Max-heap of vertices keyed by gain (ties: smaller vertex first), with each
-// vertex's position so its key can change in place.
+// vertex's position so its key can change in place. The position and key
+// arrays are the workspace's, sized for the largest graph; positions are -1
+// for every vertex outside the heap between calls.
 class GainHeap {
  public:
-  explicit GainHeap(int32_t n) : pos_(static_cast<size_t>(n), -1), key_(static_cast<size_t>(n), 0) {}
+  GainHeap(std::vector<int32_t>* pos, std::vector<int32_t>* key, std::vector<int32_t>* heap)
+      : pos_(*pos), key_(*key), heap_(*heap) {}
   bool empty() const { return heap_.empty(); }
   int32_t top() const { return heap_[0]; }
   int32_t key(int32_t v) const { return key_[v]; }
@@ -44,6 +47,7 @@ class GainHeap {
   }
   void update(int32_t v, int32_t key) {
     const int32_t old = key_[v];
+    if (key == old) return;
     key_[v] = key;
     if (key > old) up(pos_[v]); else down(pos_[v]);
   }
@@ -95,9 +99,9 @@ class GainHeap {
     place(i, v);
   }
 
-  std::vector<int32_t> pos_;
-  std::vector<int32_t> key_;
-  std::vector<int32_t> heap_;
+  std::vector<int32_t>& pos_;
+  std::vector<int32_t>& key_;
+  std::vector<int32_t>& heap_;
 };
 
 // The quality of a state, compared lexicographically: weight beyond the
@@ -116,14 +120,18 @@ struct Cost {
 
 class SeparatorRefiner {
  public:
-  SeparatorRefiner(const Graph& g, const NestedDissectionOptions& params, std::vector<uint8_t>* where)
+  SeparatorRefiner(const Graph& g, const NestedDissectionOptions& params, Workspace* ws, std::vector<uint8_t>* where)
       : g_(g), params_(params), where_(*where), max_side_(max_side_weight(g, params.imbalance)),
         // Small graphs need few speculative moves to climb out of a local minimum.
         patience_(static_cast<size_t>(std::min(params.refine_patience, std::max(20, g.n / 100)))),
-        ext_(static_cast<size_t>(2) * g.n, 0), locked_(static_cast<size_t>(g.n), 0),
-        heap_{GainHeap(g.n), GainHeap(g.n)} {
+        r_(ws->refine),
+        heap_{GainHeap(&r_.pos[0], &r_.key[0], &r_.heap[0]), GainHeap(&r_.pos[1], &r_.key[1], &r_.heap[1])} {
     weight_[0] = weight_[1] = weight_[2] = 0;
-    for (int32_t v = 0; v < g.n; ++v) weight_[where_[v]] += g.vw[v];
+    r_.separator.clear();
+    for (int32_t v = 0; v < g.n; ++v) {
+      weight_[where_[v]] += g.vw[v];
+      if (where_[v] == kSeparator) r_.separator.push_back(v);
+    }
   }
 
   void run() {
@@ -137,20 +145,24 @@ class SeparatorRefiner {
     const int64_t heavier = std::max(weight_[0], weight_[1]);
     return {std::max<int64_t>(0, heavier - max_side_), weight_[2], std::llabs(weight_[0] - weight_[1])};
   }
-  int32_t gain(int32_t v, int side) const { return g_.vw[v] - ext_[2 * v + (1 - side)]; }
+  int32_t gain(int32_t v, int side) const { return g_.vw[v] - r_.ext[2 * v + (1 - side)]; }
 
   // Sets v's neighbour weights per side and enters it in both heaps.
   void enter(int32_t v) {
     int32_t ext[3] = {0, 0, 0};
     for (int32_t p = g_.xadj[v]; p < g_.xadj[v + 1]; ++p) ext[where_[g_.adj[p]]] += g_.vw[g_.adj[p]];
-    ext_[2 * v] = ext[0];
-    ext_[2 * v + 1] = ext[1];
-    if (locked_[v]) return;
+    enter(v, ext);
+  }
+  // The same with v's neighbour weights per side already counted.
+  void enter(int32_t v, const int32_t ext[3]) {
+    r_.ext[2 * v] = ext[0];
+    r_.ext[2 * v + 1] = ext[1];
+    if (r_.locked[v]) return;
     heap_[0].push(v, gain(v, 0));
     heap_[1].push(v, gain(v, 1));
   }
   void change_ext(int32_t v, int side, int32_t delta) {
-    ext_[2 * v + side] += delta;
+    r_.ext[2 * v + side] += delta;
     // ext[side] enters the gain of the move to the other side.
     if (heap_[1 - side].contains(v)) heap_[1 - side].update(v, gain(v, 1 - side));
   }
@@ -175,8 +187,8 @@ class SeparatorRefiner {
     const int other = 1 - to;
     heap_[0].remove(v);
     heap_[1].remove(v);
-    locked_[v] = 1;
-    moved_.push_back(v);
+    r_.locked[v] = 1;
+    r_.moved.push_back(v);
     where_[v] = static_cast<uint8_t>(to);
     weight_[2] -= g_.vw[v];
     weight_[to] += g_.vw[v];
@@ -189,25 +201,30 @@ class SeparatorRefiner {
         where_[u] = kSeparator;
         weight_[other] -= g_.vw[u];
         weight_[2] += g_.vw[u];
-        pulled_.push_back(u);
+        r_.pulled.push_back(u);
+        // One sweep of u's list counts u's neighbours per side and updates
+        // its separator neighbours (g has no self loops: x != u).
+        int32_t ext[3] = {0, 0, 0};
         for (int32_t q = g_.xadj[u]; q < g_.xadj[u + 1]; ++q) {
           const int32_t x = g_.adj[q];
-          if (where_[x] == kSeparator && x != u) change_ext(x, other, -g_.vw[u]);
+          const uint8_t side = where_[x];
+          ext[side] += g_.vw[x];
+          if (side == kSeparator) change_ext(x, other, -g_.vw[u]);
         }
-        enter(u);
+        enter(u, ext);
       }
     }
-    pulled_end_.push_back(static_cast<int32_t>(pulled_.size()));
+    r_.pulled_end.push_back(static_cast<int32_t>(r_.pulled.size()));
   }
 
   // Undoes the moves after the first `keep`.
   void undo_to(size_t keep) {
-    for (size_t k = moved_.size(); k-- > keep;) {
-      const int32_t v = moved_[k];
+    for (size_t k = r_.moved.size(); k-- > keep;) {
+      const int32_t v = r_.moved[k];
       const int to = where_[v];
-      const int32_t begin = k == 0 ? 0 : pulled_end_[k - 1];
-      for (int32_t i = begin; i < pulled_end_[k]; ++i) {
-        const int32_t u = pulled_[i];
+      const int32_t begin = k == 0 ? 0 : r_.pulled_end[k - 1];
+      for (int32_t i = begin; i < r_.pulled_end[k]; ++i) {
+        const int32_t u = r_.pulled[i];
         where_[u] = static_cast<uint8_t>(1 - to);
         weight_[2] -= g_.vw[u];
         weight_[1 - to] += g_.vw[u];
@@ -218,11 +235,26 @@ class SeparatorRefiner {
     }
   }
 
-  // One FM pass; true when it improved the separator.
-  bool one_pass() {
-    for (int32_t v = 0; v < g_.n; ++v) {
-      if (where_[v] == kSeparator) enter(v);
+  // The separator after a pass: the old one's vertices still in it and the
+  // vertices the kept moves pulled in, each once, in increasing order.
+  void update_separator() {
+    std::vector<int32_t>& list = r_.separator;
+    size_t kept = 0;
+    for (int32_t v : list) {
+      if (where_[v] == kSeparator) list[kept++] = v;
     }
+    list.resize(kept);
+    for (int32_t u : r_.pulled) {
+      if (where_[u] == kSeparator) list.push_back(u);
+    }
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+
+  // One FM pass; true when it improved the separator. Costs O(separator +
+  // the degrees of the vertices it touches), not O(n).
+  bool one_pass() {
+    for (int32_t v : r_.separator) enter(v);
     const Cost start = cost();
     Cost best = start;
     size_t best_moves = 0;
@@ -233,16 +265,17 @@ class SeparatorRefiner {
       const Cost now = cost();
       if (now < best) {
         best = now;
-        best_moves = moved_.size();
-      } else if (moved_.size() - best_moves > patience_) {
+        best_moves = r_.moved.size();
+      } else if (r_.moved.size() - best_moves > patience_) {
         break;
       }
     }
     undo_to(best_moves);
-    for (int32_t v : moved_) locked_[v] = 0;
-    moved_.clear();
-    pulled_.clear();
-    pulled_end_.clear();
+    update_separator();
+    for (int32_t v : r_.moved) r_.locked[v] = 0;
+    r_.moved.clear();
+    r_.pulled.clear();
+    r_.pulled_end.clear();
     heap_[0].clear();
     heap_[1].clear();
     return best < start;
@@ -254,18 +287,15 @@ class SeparatorRefiner {
   const int64_t max_side_;
   const size_t patience_;  // moves without a new best before a pass gives up
   int64_t weight_[3];
-  std::vector<int32_t> ext_;      // 2 per vertex: neighbour weight on side 0, side 1
-  std::vector<uint8_t> locked_;   // moved in this pass
-  GainHeap heap_[2];              // separator vertices by gain of the move to side 0 / 1
-  std::vector<int32_t> moved_;    // this pass's moves in order
-  std::vector<int32_t> pulled_;   // vertices each move pulled into the separator
-  std::vector<int32_t> pulled_end_;
+  RefineWorkspace& r_;
+  GainHeap heap_[2];  // separator vertices by gain of the move to side 0 / 1
 };
 
 }  // namespace
 
-void refine_separator(const Graph& g, const NestedDissectionOptions& params, std::vector<uint8_t>* where) {
-  SeparatorRefiner(g, params, where).run();
+void refine_separator(const Graph& g, const NestedDissectionOptions& params, Workspace* ws,
+                      std::vector<uint8_t>* where) {
+  SeparatorRefiner(g, params, ws, where).run();
 }
 
 }  // namespace nd

@@ -234,6 +234,34 @@ TEST(NestedDissection, DenseRowsAreOrderedLast) {
   EXPECT_LT(solve_residual(a, perm), 1e-10);
 }
 
+// Three grids hanging from one hub vertex: any balanced separator holds the
+// hub and leaves a side made of two whole grids, disconnected. The sides of a
+// separator are not split into components (only the whole graph is), so
+// this side is dissected as one graph: its separators must still separate.
+TEST(NestedDissection, DisconnectedSideIsStillDissected) {
+  const int32_t side = 14, cells = side * side, hub = 3 * cells;
+  std::vector<std::pair<int32_t, int32_t>> edges;
+  for (int32_t grid = 0; grid < 3; ++grid) {
+    const int32_t base = grid * cells;
+    for (int32_t y = 0; y < side; ++y) {
+      for (int32_t x = 0; x < side; ++x) {
+        const int32_t v = base + y * side + x;
+        if (x + 1 < side) edges.emplace_back(v, v + 1);
+        if (y + 1 < side) edges.emplace_back(v, v + side);
+      }
+    }
+    edges.emplace_back(base, hub);  // one corner of each grid touches the hub
+  }
+  const CscMatrix a = spd_from_edges(hub + 1, edges);
+  for (int32_t leaf : {10, 40, 200}) {
+    NestedDissectionOptions options;
+    options.leaf_size = leaf;
+    options.coarsest_size = 20;
+    const std::vector<int32_t> perm = order_checked(a, options);
+    EXPECT_LT(solve_residual(a, perm), 1e-10) << "leaf " << leaf;
+  }
+}
+
 TEST(NestedDissection, LongPathIsCutInTheMiddle) {
   const int32_t n = 5000;
   std::vector<std::pair<int32_t, int32_t>> edges;

@@ -36,6 +36,12 @@ struct NestedDissectionOptions {
   // trial_size vertices, where the smallest goes on and the others are dropped.
   int32_t candidates = 4;
   int32_t trial_size = 2000;
+  // Graphs of at least large_size vertices (the top separators, which weigh
+  // most in the factor) carry large_candidates instead. Measured on igea,
+  // horse and nefertiti, mean flops over 8 seeds with 8 against 4:
+  // -0.4%, -1.5%, -2.8%, for a few percent more ordering time.
+  int32_t large_candidates = 8;
+  int32_t large_size = 30000;
   // Seed of the (self-contained, platform-independent) generator that orders
   // the matching's visits and picks seeds: the result depends on nothing else.
   uint64_t seed = 0x9E3779B97F4A7C15ull;
