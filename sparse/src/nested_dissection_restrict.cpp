@@ -32,11 +32,11 @@ void restrict_hierarchy(const Graph& g, const Hierarchy& h, const std::vector<in
   for (size_t k = 0; k < h.depth && static_cast<int32_t>(source.size()) > std::max(2, target); ++k) {
     const Graph& coarse = h.levels[k];
     const IntArray& map = h.maps[k];
-    const IntArray& finer_vw = k == 0 ? g.vw : part->levels[k - 1].vw;
-    if (part->levels.size() == k) {
+    if (part->levels.size() == k) {  // before any reference into part->levels: this may move them
       part->levels.emplace_back();
       part->maps.emplace_back();
     }
+    const IntArray& finer_vw = k == 0 ? g.vw : part->levels[k - 1].vw;
     Graph& level = part->levels[k];
     IntArray& part_map = part->maps[k];
     const int32_t finer_n = static_cast<int32_t>(source.size());
