@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "bench_check.h"
+#include "shared_meshes.h"
 #include "connectivity/connectivity_coder.h"
 #include "connectivity/valence_section.h"
 #include "gab/mesh/mesh_io.h"
@@ -64,12 +65,7 @@ Run run_version(const gab::Mesh& mesh, int version, int repeats, const std::stri
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> paths(argv + 1, argv + argc);
-  if (paths.empty()) {
-    for (const char* name : {"igea", "nefertiti", "feline", "horse", "max-planck", "bunny", "bunny-small", "camel-head"}) {
-      paths.push_back(std::string(GAB_SHARED_MESHES) + "/" + name + ".off");
-    }
-  }
+  const std::vector<std::string> paths = gab_bench::mesh_paths(argc, argv);
   const int latest = gab::kValenceVersionLatest;
   std::printf("| mesh | n | list coder bytes | valence v1 bytes | valence v%d bytes | v%d bits/vertex | v%d encode s | "
               "v%d decode s |\n",

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "bench_check.h"
+#include "shared_meshes.h"
 #include "connectivity/order_coder.h"
 #include "connectivity/valence_section.h"
 #include "gab/mesh/mesh_io.h"
@@ -55,12 +56,7 @@ Cost order_cost(int32_t n, const std::vector<int32_t>& triangles) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> paths(argv + 1, argv + argc);
-  if (paths.empty()) {
-    for (const char* name : {"igea", "nefertiti", "feline", "horse", "max-planck", "bunny", "bunny-small", "camel-head"}) {
-      paths.push_back(std::string(GAB_SHARED_MESHES) + "/" + name + ".off");
-    }
-  }
+  const std::vector<std::string> paths = gab_bench::mesh_paths(argc, argv);
   std::printf("| mesh | n | log2(n!)/8 | order bytes | share of bound | encode s | decode s | randomly renumbered: bytes | share |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (const std::string& path : paths) {

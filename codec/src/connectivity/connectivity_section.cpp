@@ -47,8 +47,7 @@ Status code_connectivity(int32_t n, const std::vector<int32_t>& triangles, bool 
   coded->order = encode_vertex_order(n, traversal, original);
   coded->triangles.resize(traversal.size());
   for (size_t i = 0; i < traversal.size(); ++i) coded->triangles[i] = original[traversal[i]];
-  coded->new_index.resize(static_cast<size_t>(n));
-  for (int32_t v = 0; v < n; ++v) coded->new_index[v] = v;
+  coded->new_index.clear();
   return Status::Ok();
 }
 

@@ -30,8 +30,8 @@ struct CodedConnectivity {
   std::vector<uint8_t> valence;  // version byte and valence section
   std::vector<uint8_t> order;    // the vertex order (empty when reordered)
   std::vector<int32_t> triangles;
-  // new_index[v]: the decoded mesh's number for input vertex v (the
-  // identity unless reordered).
+  // Reordered: new_index[v] is the decoded mesh's number for input vertex
+  // v. Empty when the order is kept (the numbering is the input's).
   std::vector<int32_t> new_index;
 };
 
