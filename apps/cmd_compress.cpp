@@ -23,7 +23,7 @@ constexpr double kDefaultError = 1e-3;
 int run_compress(int argc, char** argv) {
   Args args;
   if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--error", "--linf", "--bits", "--weight", "--batch", "--chunk-growth",
-                   "--initial", "--threads", "--layout"},
+                   "--initial", "--threads", "--layout", "--detail"},
                   {"--json", "--geometry-only", "--refine", "--reorder"})) {
     return usage_error("compress", args.error());
   }
@@ -62,6 +62,18 @@ int run_compress(int argc, char** argv) {
   } else if (layout != "smaller") {
     return usage_error("compress", "--layout must be smaller, levels or selection, got '" + layout + "'");
   }
+  // The detail layer (encoder.h DetailMode).
+  const std::string detail = args.get("--detail", "auto");
+  if (detail == "on") {
+    options.detail = DetailMode::kOn;
+  } else if (detail == "off") {
+    options.detail = DetailMode::kOff;
+  } else if (detail != "auto") {
+    return usage_error("compress", "--detail must be auto, on or off, got '" + detail + "'");
+  }
+  if (options.detail == DetailMode::kOn && rules > 0 && args.has("--anchors")) {
+    return usage_error("compress", "--detail on needs an error target (--error or --linf), not --anchors");
+  }
   const bool json = args.has("--json");
   const std::string in = args.get("-i"), out = args.get("-o");
 
@@ -81,11 +93,16 @@ int run_compress(int argc, char** argv) {
   if (!status.ok()) return fail(in + ": " + status.message());
   status = write_file_atomically(out, std::string_view(reinterpret_cast<const char*>(file.data()), file.size()));
   if (!status.ok()) return fail(status.message());
-  if (!stats.target_met) {
+  if (!stats.target_met && stats.detail) {
+    std::fprintf(stderr,
+                 "gab compress: warning: the error target is out of reach: the detail layer's finest step leaves "
+                 "rms %.3g, max %.3g of the diagonal\n",
+                 stats.rms_rel, stats.linf_rel);
+  } else if (!stats.target_met) {
     std::fprintf(stderr,
                  "gab compress: warning: the error target is out of reach: every vertex is an anchor and the "
                  "error is rms %.3g, max %.3g of the diagonal at q = %d, w = %g; use more --bits (or a larger "
-                 "--weight)\n",
+                 "--weight), or leave the detail layer on\n",
                  stats.rms_rel, stats.linf_rel, stats.bits, options.weight);
   }
   const double bpv = 8.0 * static_cast<double>(stats.geometry_bytes) / stats.num_vertices;
@@ -111,12 +128,19 @@ int run_compress(int argc, char** argv) {
     o.add_bool("levels", stats.levels);
     o.add_bool("reordered", stats.reordered);
     o.add("order_bytes", static_cast<int64_t>(stats.order_bytes));
+    o.add_bool("detail", stats.detail);
+    o.add("detail_bytes", static_cast<int64_t>(stats.detail_bytes));
+    o.add("detail_step_rel", stats.detail_step_rel);
+    o.add("anchor_rms_rel", stats.detail ? stats.anchor_rms_rel : stats.rms_rel);
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }
   std::printf("%s -> %s: %d vertices, %d triangles, %d anchors in %d chunks%s, q = %d\n", in.c_str(), out.c_str(),
               stats.num_vertices, stats.num_triangles, stats.anchors, stats.chunks,
-              stats.refined ? " (the last a least-squares refinement)" : "", stats.bits);
+              stats.refined  ? " (the last a least-squares refinement)"
+              : stats.detail ? " (the last the detail layer)"
+                             : "",
+              stats.bits);
   std::printf("%zu bytes (geometry %zu = %.3f bits/vertex, connectivity %zu, vertex order %zu); error rms %.3g, max "
               "%.3g of the bounding-box diagonal; %.2f s\n",
               stats.bytes, stats.geometry_bytes, bpv, stats.connectivity_bytes, stats.order_bytes, stats.rms_rel,

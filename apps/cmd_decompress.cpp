@@ -85,6 +85,8 @@ int run_decompress(int argc, char** argv) {
     o.add_bool("refined", stats.refined);
     o.add_bool("reordered", stats.reordered);
     o.add("connectivity_s", stats.connectivity_s);
+    o.add_bool("detail", stats.detail);
+    o.add("detail_s", stats.detail_s);
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }

@@ -47,6 +47,9 @@ int run_info(int argc, char** argv) {
     o.add("bpv_geometry", bpv);
     o.add_bool("refined", info.refined);
     o.add("refinement_bytes", static_cast<int64_t>(info.refinement_bytes));
+    o.add_bool("detail", info.detail);
+    o.add("detail_bytes", static_cast<int64_t>(info.detail_bytes));
+    o.add("detail_step", info.detail_step);
     o.add_bool("levels", info.levels);
     o.add_bool("reordered", info.reordered);
     std::printf("%s\n", o.str().c_str());
@@ -81,6 +84,14 @@ int run_info(int argc, char** argv) {
                   info.anchors, info.refinement_bytes);
     } else {
       std::printf("  (the least-squares refinement chunk is missing)\n");
+    }
+  }
+  if (info.detail) {
+    if (info.detail_bytes > 0) {
+      std::printf("  chunk %d: detail layer, every vertex's residual at step %.4g, %zu bytes\n", info.chunks - 1,
+                  info.detail_step, info.detail_bytes);
+    } else {
+      std::printf("  (the detail chunk is missing)\n");
     }
   }
   return kExitOk;

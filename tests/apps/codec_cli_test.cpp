@@ -258,13 +258,24 @@ TEST(CodecCliTest, UsageAndInputErrors) {
 TEST(CodecCliTest, UnreachableTargetWarnsAndStillWrites) {
   const std::string in = write_scratch_file("far.off", torus_off(12, 6));
   const std::string gab = write_scratch_file("far.gab", "");
-  CommandResult r = run_gab("compress -i " + in + " -o " + gab + " --error 1e-9 --bits 6 --json");
+  CommandResult r = run_gab("compress -i " + in + " -o " + gab + " --error 1e-9 --bits 6 --detail off --json");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(json_number(r.out, "anchors"), 72);  // every vertex
   EXPECT_NE(r.err.find("gab compress: warning: the error target is out of reach: every vertex is an anchor"),
             std::string::npos)
       << r.err;
   EXPECT_NE(r.out.find("\"target_met\": false"), std::string::npos);
+  // With the detail layer the limit is its finest step (2^-24 of the box).
+  r = run_gab("compress -i " + in + " -o " + gab + " --error 1e-9 --json");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("gab compress: warning: the error target is out of reach: the detail layer's finest step"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.out.find("\"detail\": true"), std::string::npos);
+  EXPECT_NE(r.out.find("\"target_met\": false"), std::string::npos);
+  r = run_gab("compress -i " + in + " -o " + gab + " --error 1e-3 --detail sometimes");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--detail must be auto, on or off, got 'sometimes'"), std::string::npos) << r.err;
 }
 
 TEST(CodecCliTest, DemoRunsOnAGivenMeshAndWritesItsFiles) {

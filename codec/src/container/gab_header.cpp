@@ -76,8 +76,8 @@ Status read_gab_header(ByteReader* in, size_t file_size, GabHeader* h) {
   }
   if (!(step >= 0) || !std::isfinite(step)) return header_error("grid step is not finite and non-negative");
   if (anchors < 1 || anchors > n) return header_error("anchor count out of range");
-  const uint32_t anchor_chunks = chunks - ((flags & kGabFlagRefined) != 0 ? 1 : 0);
-  if (chunks < 1 || anchor_chunks < 1 || anchor_chunks > anchors) return header_error("chunk count out of range");
+  const uint32_t trailing = ((flags & kGabFlagRefined) != 0 ? 1 : 0) + ((flags & kGabFlagDetail) != 0 ? 1 : 0);
+  if (chunks < 1 + trailing || chunks - trailing > anchors) return header_error("chunk count out of range");
   // Every vertex is on a triangle or isolated, and an isolated vertex is an
   // anchor of chunk 0 costing bits in the file; real files stay far inside
   // this bound, forged counts do not.

@@ -23,6 +23,7 @@ constexpr GabFlagRow kGabFlagTable[] = {
     {kGabFlagLevels, "levels"},               // the anchor chunks are in the level layout
     {kGabFlagReordered, "reordered"},         // traversal numbering: no vertex order block
     {kGabFlagVersionedValence, "versioned-valence"},  // a version byte before the valence section
+    {kGabFlagDetail, "detail"},                       // a detail chunk ends the file
 };
 
 // The bits of kGabFlagTable together. O(rows).

@@ -3,7 +3,8 @@
 //   header (container/gab_header.h) -> connectivity section (connectivity/)
 //   -> the anchor chunks of the file's layout (anchors/anchor_chunk.h, anchor_levels.h),
 //      each joining the reconstruction as it arrives
-//   -> the refinement chunk (anchors/refinement_chunk.h) -> the shape.
+//   -> the refinement chunk (anchors/refinement_chunk.h) -> the anchors' shape
+//   -> the detail chunk (detail/detail_chunk.h), predicted from that shape.
 #include "gab/codec/decoder.h"
 
 #include <algorithm>
@@ -17,6 +18,7 @@
 #include "connectivity/connectivity_section.h"
 #include "container/framing.h"
 #include "container/gab_header.h"
+#include "detail/detail_chunk.h"
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/relaxed_reconstruction.h"
 
@@ -188,7 +190,7 @@ Status decode_level_chunks(ByteReader* in, AnchorChunkCoder* coder, ChunkDecodin
 // The refinement chunk (the whole anchor set decoded): moves every anchor's
 // coefficient; a file cut inside it leaves the unrefined shape (truncated).
 Status apply_refinement(ByteReader* in, ChunkDecoding* st) {
-  const int32_t chunk = st->header.anchor_chunks();
+  const int32_t chunk = st->header.refinement_chunk();
   const std::string name = "refinement (chunk " + std::to_string(chunk) + ")";
   const uint8_t* payload = nullptr;
   size_t payload_size = 0;
@@ -204,6 +206,31 @@ Status apply_refinement(ByteReader* in, ChunkDecoding* st) {
   GAB_RETURN_IF_ERROR(st->rec.set_coefficients(0, coefficients));
   st->stats->refined = true;
   st->stats->chunks = chunk + 1;
+  return Status::Ok();
+}
+
+// The detail chunk over the anchors' shape `smooth`: *positions the
+// detailed shape, or left alone when the file ends inside the chunk
+// (truncated).
+Status apply_detail(ByteReader* in, const GabHeader& header, const Mesh& mesh, const EdgeGraph& graph,
+                    const std::vector<double>& smooth, std::vector<double>* positions, DecodeStats* stats) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string name = "detail (chunk " + std::to_string(header.detail_chunk()) + ")";
+  const uint8_t* payload = nullptr;
+  size_t payload_size = 0;
+  const FrameRead frame = read_framed(in, &payload, &payload_size);
+  if (frame == FrameRead::kCorrupt) return corrupt(name + " is corrupt (checksum mismatch)");
+  if (frame == FrameRead::kTruncated) {
+    stats->truncated = true;
+    return Status::Ok();
+  }
+  const DetailTopology topo = build_detail_topology(header.num_vertices, mesh.triangles, graph);
+  const Status s = decode_detail_chunk(payload, payload_size, topo, detail_frame_of(header), smooth, positions);
+  if (s.code() == StatusCode::kUnsupported) return s;
+  if (!s.ok()) return corrupt(name + ": " + s.message());
+  stats->detail = true;
+  stats->chunks = header.detail_chunk() + 1;
+  stats->detail_s = seconds_since(start);
   return Status::Ok();
 }
 
@@ -249,14 +276,21 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
   } else {
     GAB_RETURN_IF_ERROR(decode_selection_chunks(&in, &coder, &state));
   }
-  // The refinement belongs to the whole anchor set: skipped for a level of detail.
-  if (header.refined() && !stats->truncated && state.decoded == header.anchors) {
+  // The refinement and the detail belong to the whole anchor set: skipped for a level of detail.
+  const bool whole = state.decoded == header.anchors;
+  if (header.refined() && !stats->truncated && whole) {
     GAB_RETURN_IF_ERROR(apply_refinement(&in, &state));
   }
   const auto t_solve = std::chrono::steady_clock::now();
   GAB_RETURN_IF_ERROR(state.rec.reconstruct(&out.positions));
   stats->solve_s += seconds_since(t_solve);
-  if (!stats->truncated && state.decoded == header.anchors && in.remaining() != 0) {
+  const bool detail = header.detail() && options.detail && !stats->truncated && whole;
+  if (detail) {
+    const std::vector<double> smooth = out.positions;
+    GAB_RETURN_IF_ERROR(apply_detail(&in, header, out, graph, smooth, &out.positions, stats));
+  }
+  const bool read_all = whole && (!header.detail() || detail);
+  if (!stats->truncated && read_all && in.remaining() != 0) {
     return corrupt("trailing bytes after the last chunk");
   }
   *mesh = std::move(out);

@@ -5,6 +5,7 @@
 //   select anchors (anchor_selection.h: greedy loop and refinement search, no bytes)
 //   -> code the anchor chunks in each layout (anchors/anchor_chunk.h, anchor_levels.h), keep one
 //   -> the refinement chunk (anchors/refinement_chunk.h)
+//   -> the detail chunk over the anchors' shape (detail_search.h, detail/detail_chunk.h)
 //   -> header (container/gab_header.h), connectivity section (connectivity/), chunks, framed.
 #include "gab/codec/encoder.h"
 
@@ -23,6 +24,7 @@
 #include "gab/mesh/relaxed_reconstruction.h"
 #include "gab/mesh/renumber.h"
 #include "pipeline/anchor_selection.h"
+#include "pipeline/detail_search.h"
 #include "pipeline/encoder_tuning.h"
 
 namespace gab {
@@ -174,10 +176,19 @@ std::vector<uint8_t> assemble_file(const GabHeader& header, const Mesh& mesh, co
   return out.take();
 }
 
+// The targets a detail chunk must meet (both 0: no detail chunk).
+struct DetailTargets {
+  double rms_rel = 0, linf_rel = 0;
+  bool wanted() const { return rms_rel > 0 || linf_rel > 0; }
+};
+
 // Everything after the grid: anchors, chunks, file. Sets every stat but
 // encode_s and new_index. `coded`: the connectivity (unless geometry only).
+// With `detail` wanted, the anchors stop at options' rules and a detail
+// chunk over their shape meets `detail`'s targets.
 Status encode_on_grid(const Mesh& mesh, const EncodeOptions& options, const Box& box, const Quantizer& quantizer,
-                      int bits, const CodedConnectivity& coded, std::vector<uint8_t>* file, EncodeStats* stats) {
+                      int bits, const CodedConnectivity& coded, const DetailTargets& detail,
+                      std::vector<uint8_t>* file, EncodeStats* stats) {
   *stats = EncodeStats();
   stats->num_vertices = mesh.num_vertices();
   stats->num_triangles = mesh.num_triangles();
@@ -222,16 +233,35 @@ Status encode_on_grid(const Mesh& mesh, const EncodeOptions& options, const Box&
   stats->target_met = rms_ok && linf_ok;
 
   GabHeader header;
+  header.bits = bits;
+  for (int c = 0; c < 3; ++c) header.box_min[c] = quantizer.min[c];
+  header.step = quantizer.step;
+  if (detail.wanted()) {
+    // The decoder's shape of all the anchors (unrefined: the caller asks for no refinement).
+    std::vector<double> smooth;
+    GAB_RETURN_IF_ERROR(rec.reconstruct(&smooth));
+    const DetailTopology topo = build_detail_topology(mesh.num_vertices(), mesh.triangles, graph);
+    DetailChoice choice;
+    GAB_RETURN_IF_ERROR(choose_detail(topo, detail_frame_of(header), smooth, mesh, 1.0 / box.diagonal,
+                                      detail.rms_rel, detail.linf_rel, &choice));
+    layout.chunks.push_back(std::move(choice.chunk));
+    stats->detail = true;
+    stats->detail_bytes = layout.chunks.back().size() + kGabFrameBytes;
+    stats->detail_step_rel = choice.params.step / box.diagonal;
+    stats->anchor_rms_rel = stats->rms_rel;
+    stats->rms_rel = choice.rms_rel;
+    stats->linf_rel = choice.linf_rel;
+    stats->target_met = choice.met;
+  }
+
   header.flags = static_cast<uint8_t>((options.geometry_only ? kGabFlagGeometryOnly : 0) |
                                       (selection.refined ? kGabFlagRefined : 0) | (levels ? kGabFlagLevels : 0) |
                                       (options.reorder ? kGabFlagReordered : 0) |
-                                      (options.geometry_only ? 0 : kGabFlagVersionedValence));
-  header.bits = bits;
+                                      (options.geometry_only ? 0 : kGabFlagVersionedValence) |
+                                      (stats->detail ? kGabFlagDetail : 0));
   header.num_vertices = mesh.num_vertices();
   header.num_triangles = mesh.num_triangles();
   header.weight = options.weight;
-  for (int c = 0; c < 3; ++c) header.box_min[c] = quantizer.min[c];
-  header.step = quantizer.step;
   header.anchors = rec.num_anchors();
   header.chunks = static_cast<int32_t>(layout.chunks.size());
   *file = assemble_file(header, mesh, coded, layout.chunks, stats);
@@ -254,15 +284,14 @@ Quantizer dense_grid(const Box& box, double target_rms_rel, int* bits) {
   return q;
 }
 
-// encode_mesh after the checks, on the mesh as the decoder will number it.
-Status encode_numbered(const Mesh& mesh, const EncodeOptions& options, const CodedConnectivity& coded,
-                       std::vector<uint8_t>* file, EncodeStats* stats) {
-  const Box box = box_of(mesh);
+// The anchors-only file (no detail chunk), with the dense regime's retry.
+Status encode_anchors_only(const Mesh& mesh, const EncodeOptions& options, const Box& box,
+                           const CodedConnectivity& coded, std::vector<uint8_t>* file, EncodeStats* stats) {
   const int bits = options.bits != 0 ? options.bits
                                      : default_bits(box.diagonal > 0 ? box.extent / box.diagonal : 1.0,
                                                     options.target_rms_rel, options.target_linf_rel);
   const Quantizer quantizer = Quantizer::for_box(box.lo, box.hi, bits);
-  GAB_RETURN_IF_ERROR(encode_on_grid(mesh, options, box, quantizer, bits, coded, file, stats));
+  GAB_RETURN_IF_ERROR(encode_on_grid(mesh, options, box, quantizer, bits, coded, DetailTargets(), file, stats));
   // Dense regime: most vertices became anchors, so nearly every vertex pays
   // for the grid; a coarser one, with a few more anchors, may cost less.
   const bool dense = stats->anchors > kDenseAnchorFraction * mesh.num_vertices();
@@ -273,11 +302,70 @@ Status encode_numbered(const Mesh& mesh, const EncodeOptions& options, const Cod
       std::vector<uint8_t> other;
       EncodeStats other_stats;
       GAB_RETURN_IF_ERROR(
-          encode_on_grid(mesh, options, box, coarse, coarse_bits, coded, &other, &other_stats));
+          encode_on_grid(mesh, options, box, coarse, coarse_bits, coded, DetailTargets(), &other, &other_stats));
       if (other_stats.target_met && other.size() < file->size()) {
         *file = std::move(other);
         *stats = std::move(other_stats);
       }
+    }
+  }
+  return Status::Ok();
+}
+
+// A file whose anchors stop at the RMS target `anchor_rms_rel` (on its own
+// default grid unless options fix q), a detail chunk meeting options'
+// targets after them.
+Status encode_with_detail(const Mesh& mesh, const EncodeOptions& options, const Box& box,
+                          const CodedConnectivity& coded, double anchor_rms_rel, std::vector<uint8_t>* file,
+                          EncodeStats* stats) {
+  EncodeOptions anchor_options = options;
+  anchor_options.target_rms_rel = anchor_rms_rel;
+  anchor_options.target_linf_rel = 0;
+  anchor_options.refine = false;  // the detail chunk moves every vertex anyway
+  if (anchor_options.initial_anchors <= 0) {
+    anchor_options.initial_anchors = std::max<int32_t>(1, static_cast<int32_t>(mesh.num_vertices() * kDetailSpreadShare));
+  }
+  const int bits = options.bits != 0 ? options.bits
+                                     : default_bits(box.extent / box.diagonal, anchor_rms_rel, 0);
+  const Quantizer quantizer = Quantizer::for_box(box.lo, box.hi, bits);
+  DetailTargets targets;
+  targets.rms_rel = options.target_rms_rel;
+  targets.linf_rel = options.target_linf_rel;
+  return encode_on_grid(mesh, anchor_options, box, quantizer, bits, coded, targets, file, stats);
+}
+
+// Whether candidate b is better than a: meeting the targets first, then smaller.
+bool better(const EncodeStats& a, size_t a_bytes, const EncodeStats& b, size_t b_bytes) {
+  if (a.target_met != b.target_met) return b.target_met;
+  return b_bytes < a_bytes;
+}
+
+// encode_mesh after the checks, on the mesh as the decoder will number it:
+// the candidate files detail_plan names, the best kept.
+Status encode_numbered(const Mesh& mesh, const EncodeOptions& options, const CodedConnectivity& coded,
+                       std::vector<uint8_t>* file, EncodeStats* stats) {
+  const Box box = box_of(mesh);
+  const bool detail_possible = options.detail != DetailMode::kOff && box.diagonal > 0 && box.extent > 0 &&
+                               (options.target_rms_rel > 0 || options.target_linf_rel > 0);
+  const DetailPlan plan = detail_plan(options.target_rms_rel, options.target_linf_rel);
+  bool have = false;
+  if (!detail_possible || (options.detail == DetailMode::kAuto && plan.try_anchors_only)) {
+    GAB_RETURN_IF_ERROR(encode_anchors_only(mesh, options, box, coded, file, stats));
+    have = true;
+  }
+  if (!detail_possible) return Status::Ok();
+  // Detail candidates: where the plan says they may win, or to rescue a
+  // target the anchors alone missed, or because they were asked for.
+  const bool try_detail = !have || plan.try_detail || !stats->target_met;
+  if (!try_detail) return Status::Ok();
+  for (double anchor_rms_rel : plan.anchor_targets) {
+    std::vector<uint8_t> other;
+    EncodeStats other_stats;
+    GAB_RETURN_IF_ERROR(encode_with_detail(mesh, options, box, coded, anchor_rms_rel, &other, &other_stats));
+    if (!have || better(*stats, file->size(), other_stats, other.size())) {
+      *file = std::move(other);
+      *stats = std::move(other_stats);
+      have = true;
     }
   }
   return Status::Ok();

@@ -31,4 +31,15 @@ int default_bits(double extent_over_diagonal, double target_rms_rel, double targ
   return kGabMaxBits;
 }
 
+DetailPlan detail_plan(double target_rms_rel, double target_linf_rel) {
+  DetailPlan plan;
+  const double target = target_rms_rel > 0 ? target_rms_rel : target_linf_rel / kLinfOverRms;
+  if (!(target > 0)) return plan;
+  plan.try_anchors_only = target >= kAnchorsOnlyFrom;
+  plan.try_detail = target < kDetailFrom;
+  plan.anchor_targets.push_back(std::max(kDetailAnchorTarget, kAnchorTargetOverTarget * target));
+  return plan;
+}
+
 }  // namespace gab
+

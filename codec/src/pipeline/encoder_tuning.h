@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 namespace gab {
 
@@ -45,5 +46,34 @@ constexpr double kExpectedRefinementGain = 1.25;
 // RMS target, and keeps the smaller file.
 constexpr double kDenseAnchorFraction = 0.5;
 constexpr double kDenseGridShare = 0.95;
+
+// The detail layer (EncodeOptions::detail, auto): which candidate files the
+// encoder codes for an error target, the smallest meeting it kept. The
+// target in RMS terms is the RMS target, else the L-inf target over
+// kLinfOverRms. Anchors alone win down to about 3e-4 and lose from 1e-4
+// down (the measured crossing: bench/TUNING.md); a detail layer codes
+// smallest over the anchors of a coarse target (3e-3 to 1e-2 on the shared
+// meshes, whatever the final target), not more of them.
+struct DetailPlan {
+  bool try_anchors_only = true;        // the anchors-only file
+  bool try_detail = false;             // files with a detail layer, over the anchors of...
+  std::vector<double> anchor_targets;  // ...each of these RMS targets
+};
+DetailPlan detail_plan(double target_rms_rel, double target_linf_rel);
+
+constexpr double kLinfOverRms = 4;
+// Below this target (in RMS terms) the anchors-only file is not tried; from
+// kDetailFrom down the detail candidates are.
+constexpr double kAnchorsOnlyFrom = 2e-4;
+constexpr double kDetailFrom = 5e-4;
+// The anchors' target of the detail candidate: kDetailAnchorTarget, or
+// kAnchorTargetOverTarget times the target when that is coarser.
+constexpr double kDetailAnchorTarget = 3e-3;
+constexpr double kAnchorTargetOverTarget = 3;
+// The detail candidate's spread set: this share of the vertices (the
+// anchors-only default grows faster on large meshes to save greedy steps,
+// which a detail layer does not need: igea at 1e-4, 2606 -> 1042 anchors,
+// 3.2% smaller).
+constexpr double kDetailSpreadShare = 1.0 / 1000;
 
 }  // namespace gab

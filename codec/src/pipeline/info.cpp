@@ -8,6 +8,7 @@
 #include "connectivity/connectivity_section.h"
 #include "container/framing.h"
 #include "container/gab_header.h"
+#include "detail/detail_chunk.h"
 #include "gab/codec/decoder.h"
 
 namespace gab {
@@ -33,6 +34,7 @@ Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
   info->levels = header.levels();
   info->reordered = header.reordered();
   info->versioned_valence = header.versioned_valence();
+  info->detail = header.detail();
   for (int c = 0; c < 3; ++c) info->box_min[c] = header.box_min[c];
   info->step = header.step;
   info->anchors = header.anchors;
@@ -56,7 +58,17 @@ Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
     if (frame == FrameRead::kCorrupt) {
       return corrupt("chunk " + std::to_string(chunk) + " is corrupt (checksum mismatch)");
     }
-    const bool refinement = chunk == header.anchor_chunks();
+    if (header.detail() && chunk == header.detail_chunk()) {
+      DetailParams params;
+      size_t offset = 0;
+      const Status s = read_detail_head(payload, payload_size, detail_frame_of(header), &params, &offset);
+      if (!s.ok()) return s.code() == StatusCode::kUnsupported ? s : corrupt("detail (chunk " + std::to_string(chunk) + "): " + s.message());
+      info->detail_bytes = in.offset() - at;
+      info->detail_step = params.step;
+      info->chunks_present = chunk + 1;
+      continue;
+    }
+    const bool refinement = header.refined() && chunk == header.refinement_chunk();
     uint64_t count = 0;
     if (header.levels() && chunk == 0) {
       LevelPlan plan;

@@ -209,7 +209,7 @@ TEST(FileSafety, HeaderErrorsNameTheProblem) {
   // A newer writer's flag, with the header's checksum made whole again: a
   // well-formed file this build cannot read, not a corrupt one.
   bad = file;
-  bad[9] |= 0x20;
+  bad[9] |= 0x40;
   const uint32_t crc = crc32(bad.data(), kGabHeaderBytes - 4);
   for (int b = 0; b < 4; ++b) bad[kGabHeaderBytes - 4 + b] = static_cast<uint8_t>(crc >> (8 * b));
   const Status unknown_flag = decode_mesh(bad.data(), bad.size(), DecodeOptions(), &out, &ds);
@@ -217,7 +217,7 @@ TEST(FileSafety, HeaderErrorsNameTheProblem) {
   char flags[8];
   std::snprintf(flags, sizeof flags, "0x%02x", bad[9]);
   EXPECT_EQ(unknown_flag.message(),
-            "unsupported .gab flags " + std::string(flags) + " 0x00 (this build knows 0x1f 0x00)");
+            "unsupported .gab flags " + std::string(flags) + " 0x00 (this build knows 0x3f 0x00)");
   bad = file;
   bad[8] = 9;
   EXPECT_EQ(decode_mesh(bad.data(), bad.size(), DecodeOptions(), &out, &ds).code(), StatusCode::kUnsupported);

@@ -24,6 +24,9 @@ namespace gab {
 
 struct DecodeOptions {
   int32_t max_anchors = -1;            // decode only the first K anchors (level of detail); -1: all
+  // Apply the detail chunk when the file has one and every anchor is decoded
+  // (false: the anchors' smooth shape, the level of detail just below).
+  bool detail = true;
   const Mesh* connectivity = nullptr;  // the mesh whose triangles a geometry-only file refers to
   // Refuse connectivity whose least-squares matrix (the 2-ring pattern)
   // would have more entries than this, or whose factor would: what keeps a
@@ -42,12 +45,14 @@ struct DecodeStats {
   int32_t chunks = 0, chunks_in_file = 0;
   bool truncated = false;  // the file ended inside a chunk: the shape is of the complete ones
   bool refined = false;    // the refinement chunk was applied (whole anchor set, complete file)
+  bool detail = false;     // the detail chunk was applied (gab_format.h, flag bit 5)
   int bits = 0;
   double weight = 0;
   bool geometry_only = false;
   bool reordered = false;  // numbered in the connectivity coder's traversal order (kGabFlagReordered)
   double decode_s = 0, factor_s = 0, solve_s = 0, update_s = 0;
   double connectivity_s = 0;  // decoding the connectivity section
+  double detail_s = 0;        // decoding the detail chunk (part of decode_s)
   int32_t refactorizations = 0;  // chunks added by refactoring rather than updates
 };
 
@@ -62,13 +67,16 @@ struct GabFileInfo {
   bool geometry_only = false;
   double box_min[3] = {0, 0, 0};
   double step = 0;
-  int32_t anchors = 0, chunks = 0;  // as the header declares (chunks: the refinement included)
+  int32_t anchors = 0, chunks = 0;  // as the header declares (chunks: the refinement and detail included)
   int32_t chunks_present = 0;       // complete chunks with a valid checksum
   bool refined = false;             // the last chunk is a refinement (not counted below)
   bool levels = false;              // the level layout (gab_format.h, flag bit 2)
   bool reordered = false;           // traversal numbering, no vertex order (flag bit 3)
   bool versioned_valence = false;   // a versioned valence section (flag bit 4)
   size_t refinement_bytes = 0;      // its framed size when present
+  bool detail = false;              // the last chunk is the detail layer (flag bit 5; not counted below)
+  size_t detail_bytes = 0;          // its framed size when present
+  double detail_step = 0;           // its quantization step (in the mesh's units) when present
   bool truncated = false;
   size_t bytes = 0, connectivity_bytes = 0, geometry_bytes = 0;
   size_t order_bytes = 0;              // the vertex order block with its framing (0 without)

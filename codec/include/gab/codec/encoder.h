@@ -31,6 +31,15 @@ enum class FileLayout {
   kSelectionOrder,  // the first layout: each chunk its anchors as a subset of the vertices still free
 };
 
+// The detail layer (gab_format.h, flag bit 5): after the anchors, every
+// vertex coded as a small residual from a prediction, which is what keeps
+// files small at low error targets (below about 3e-4) and meets any target.
+enum class DetailMode {
+  kAuto,  // with an error target: the smallest of the files with and without it that meets the target
+  kOn,    // with an error target: always (the anchors stop at a coarse target)
+  kOff,   // never: the anchors alone (the target may be missed on small meshes)
+};
+
 struct EncodeOptions {
   // Stopping rules, at least one (the loop also stops when every vertex is an anchor).
   int32_t max_anchors = 0;     // anchors in the file; 0: no count limit
@@ -56,6 +65,9 @@ struct EncodeOptions {
   // A last chunk moving every anchor's coefficient towards least squares (sec. IV), kept only where it
   // lowers the RMS without breaking an L-inf target; with an RMS target the loop stops once the refined shape meets it.
   bool refine = false;
+  // The detail layer (needs an error target; an anchor count alone never uses it). `bits` fixes the
+  // anchors' grid only: the detail layer has its own step.
+  DetailMode detail = DetailMode::kAuto;
   int refine_iterations = 4;  // conjugate-gradient iterations of the refinement (positive; each costs two solves)
   int32_t threads = 1;        // threads for the factorizations; the file is the same for any count
   std::function<void(int32_t, double)> progress;  // after every reconstruction: (anchors so far, relative RMS)
@@ -76,6 +88,10 @@ struct EncodeStats {
   bool levels = false;               // the file is in the level layout (FileLayout)
   double unrefined_rms_rel = 0;      // the shape of the anchor chunks alone
   size_t refinement_bytes = 0;       // the refinement chunk with its framing
+  bool detail = false;               // the file ends with a detail chunk
+  size_t detail_bytes = 0;           // the detail chunk with its framing
+  double detail_step_rel = 0;        // its quantization step over the box diagonal
+  double anchor_rms_rel = 0;         // with detail: the anchors' shape alone (what a decoder skipping it shows)
   bool target_met = true;         // false if an error target was out of reach at these bits
   std::vector<GreedyStep> curve;  // after every greedy step
   std::vector<int32_t> chunk_anchors;  // anchors per chunk

@@ -88,6 +88,11 @@ constexpr uint8_t kGabFlagReordered = 8;
 // renumbers the decoded mesh as the input was. In both, the triangles are a
 // set: their order and first corners are the coder's.
 constexpr uint8_t kGabFlagVersionedValence = 16;
+// After the anchor chunks (and the refinement) one detail chunk codes every
+// vertex's position as a residual from a prediction built on the anchors'
+// reconstruction and the positions decoded before it
+// (codec/src/detail/detail_chunk.h).
+constexpr uint8_t kGabFlagDetail = 32;
 constexpr int kGabMinBits = 2;
 constexpr int kGabMaxBits = 24;
 constexpr size_t kGabHeaderBytes = 72;
@@ -110,10 +115,14 @@ struct GabHeader {
   bool levels() const { return (flags & kGabFlagLevels) != 0; }
   bool reordered() const { return (flags & kGabFlagReordered) != 0; }
   bool versioned_valence() const { return (flags & kGabFlagVersionedValence) != 0; }
+  bool detail() const { return (flags & kGabFlagDetail) != 0; }
   // The connectivity section ends with the input's vertex order.
   bool keeps_coded_order() const { return versioned_valence() && !reordered() && !geometry_only(); }
-  // Chunks holding anchors (all but the refinement).
-  int32_t anchor_chunks() const { return chunks - (refined() ? 1 : 0); }
+  // Chunks holding anchors (all but the refinement and the detail).
+  int32_t anchor_chunks() const { return chunks - (refined() ? 1 : 0) - (detail() ? 1 : 0); }
+  // The index of the refinement chunk (when refined) and of the detail chunk (when detail).
+  int32_t refinement_chunk() const { return anchor_chunks(); }
+  int32_t detail_chunk() const { return chunks - 1; }
 };
 
 }  // namespace gab

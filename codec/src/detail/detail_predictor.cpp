@@ -1,0 +1,100 @@
+#include "detail/detail_predictor.h"
+
+#include <cmath>
+
+namespace gab {
+
+std::vector<double> smooth_normals(const DetailTopology& topo, const std::vector<double>& smooth) {
+  std::vector<double> normals(3 * static_cast<size_t>(topo.num_vertices), 0.0);
+  const std::vector<int32_t>& tri = *topo.triangles;
+  for (size_t t3 = 0; t3 + 2 < tri.size(); t3 += 3) {
+    const size_t i0 = 3 * static_cast<size_t>(tri[t3]), i1 = 3 * static_cast<size_t>(tri[t3 + 1]),
+                 i2 = 3 * static_cast<size_t>(tri[t3 + 2]);
+    const double e1[3] = {smooth[i1] - smooth[i0], smooth[i1 + 1] - smooth[i0 + 1], smooth[i1 + 2] - smooth[i0 + 2]};
+    const double e2[3] = {smooth[i2] - smooth[i0], smooth[i2 + 1] - smooth[i0 + 1], smooth[i2 + 2] - smooth[i0 + 2]};
+    const double nrm[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                           e1[0] * e2[1] - e1[1] * e2[0]};
+    for (size_t corner : {i0, i1, i2}) {
+      // A degenerate triangle names a vertex twice: it adds its (zero-ish) normal twice, on both sides alike.
+      for (int j = 0; j < 3; ++j) normals[corner + j] += nrm[j];
+    }
+  }
+  return normals;
+}
+
+void predict_detail(const DetailTopology& topo, const std::vector<double>& smooth,
+                    const std::vector<double>& normals, const std::vector<double>& decoded, int alpha_normal16,
+                    int alpha_tangent16, size_t i, DetailPrediction* out) {
+  const int32_t v = topo.order[i];
+  const size_t v3 = 3 * static_cast<size_t>(v);
+  double par[3] = {0, 0, 0}, gate[3] = {0, 0, 0};
+  const int32_t first = topo.parallelogram_offsets[i], last = topo.parallelogram_offsets[i + 1];
+  for (int32_t p = first; p < last; ++p) {
+    const size_t a3 = 3 * static_cast<size_t>(topo.parallelograms[3 * static_cast<size_t>(p)]);
+    const size_t b3 = 3 * static_cast<size_t>(topo.parallelograms[3 * static_cast<size_t>(p) + 1]);
+    const size_t c3 = 3 * static_cast<size_t>(topo.parallelograms[3 * static_cast<size_t>(p) + 2]);
+    for (int j = 0; j < 3; ++j) par[j] += decoded[a3 + j] + decoded[b3 + j] - decoded[c3 + j];
+    if (p == first) {
+      for (int j = 0; j < 3; ++j) gate[j] = decoded[b3 + j] - decoded[a3 + j];
+    }
+  }
+  const int32_t parallelograms = last - first;
+  // pB: the smooth shape moved by the decoded neighbours' mean offset from it.
+  double offset[3] = {0, 0, 0};
+  const int32_t known = topo.known_offsets[i + 1] - topo.known_offsets[i];
+  for (int32_t p = topo.known_offsets[i]; p < topo.known_offsets[i + 1]; ++p) {
+    const size_t u3 = 3 * static_cast<size_t>(topo.known[p]);
+    for (int j = 0; j < 3; ++j) offset[j] += decoded[u3 + j] - smooth[u3 + j];
+  }
+  double pb[3], pa[3];
+  for (int j = 0; j < 3; ++j) {
+    pb[j] = smooth[v3 + j] + (known > 0 ? offset[j] / known : 0.0);
+    pa[j] = parallelograms > 0 ? par[j] / parallelograms : pb[j];
+  }
+  double* n = out->frame[0];
+  double* t1 = out->frame[1];
+  double* t2 = out->frame[2];
+  const double nl = std::sqrt(normals[v3] * normals[v3] + normals[v3 + 1] * normals[v3 + 1] +
+                              normals[v3 + 2] * normals[v3 + 2]);
+  if (nl > 0) {
+    for (int j = 0; j < 3; ++j) n[j] = normals[v3 + j] / nl;
+  } else {
+    n[0] = 0;
+    n[1] = 0;
+    n[2] = 1;
+  }
+  const double d[3] = {pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
+  const double dn = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
+  const double an = alpha_normal16 / static_cast<double>(kDetailAlphaOne);
+  const double at = alpha_tangent16 / static_cast<double>(kDetailAlphaOne);
+  for (int j = 0; j < 3; ++j) out->p[j] = pa[j] + an * dn * n[j] + at * (d[j] - dn * n[j]);
+
+  // t1: the gate edge in the tangent plane, else an axis-free choice from n.
+  const double gn = gate[0] * n[0] + gate[1] * n[1] + gate[2] * n[2];
+  for (int j = 0; j < 3; ++j) t1[j] = gate[j] - gn * n[j];
+  double len = std::sqrt(t1[0] * t1[0] + t1[1] * t1[1] + t1[2] * t1[2]);
+  if (!(len > 0)) {
+    if (std::fabs(n[0]) < 0.6) {
+      t1[0] = 0;
+      t1[1] = n[2];
+      t1[2] = -n[1];
+    } else {
+      t1[0] = -n[2];
+      t1[1] = 0;
+      t1[2] = n[0];
+    }
+    len = std::sqrt(t1[0] * t1[0] + t1[1] * t1[1] + t1[2] * t1[2]);
+  }
+  for (int j = 0; j < 3; ++j) t1[j] /= len;
+  t2[0] = n[1] * t1[2] - n[2] * t1[1];
+  t2[1] = n[2] * t1[0] - n[0] * t1[2];
+  t2[2] = n[0] * t1[1] - n[1] * t1[0];
+}
+
+void place_detail(const DetailPrediction& pred, double step, const int32_t k[3], double out[3]) {
+  for (int j = 0; j < 3; ++j) {
+    out[j] = pred.p[j] + step * (k[0] * pred.frame[0][j] + k[1] * pred.frame[1][j] + k[2] * pred.frame[2][j]);
+  }
+}
+
+}  // namespace gab

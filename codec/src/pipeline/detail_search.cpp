@@ -1,0 +1,167 @@
+#include "pipeline/detail_search.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "gab/mesh/metrics.h"
+
+namespace gab {
+
+namespace {
+
+// The blends tried, in sixteenths (normal, tangential), the default first.
+constexpr int kNormalBlends[] = {4, 0, 8, 12, 16};
+constexpr int kTangentBlends[] = {0, 4, 8, 12};
+// Step search: growth while the targets hold, shrinkage while they do not,
+// then bisection (geometric) between the last good and first bad step.
+constexpr double kStepGrowth = 1.25;
+constexpr double kStepShrink = 0.8;
+constexpr int kBisections = 4;
+// How far from the box the smooth shape may lie, in box extents: the
+// detail lattice (kMinDetailStep / kSmoothDivisions) then stays under 2^52.
+constexpr double kMaxSmoothReach = 1 << 20;
+
+struct Trial {
+  std::vector<uint8_t> chunk;
+  DetailParams params;
+  double rms_rel = 0, linf_rel = 0;
+  bool met = false;
+};
+
+class Search {
+ public:
+  Search(const DetailTopology& topo, const DetailFrame& frame, const std::vector<double>& smooth, const Mesh& mesh,
+         double scale, double rms, double linf)
+      : topo_(topo), frame_(frame), smooth_(smooth), mesh_(mesh), scale_(scale), rms_(rms), linf_(linf) {}
+
+  Trial run(const DetailParams& params) {
+    Trial t;
+    t.params = params;
+    t.chunk = encode_detail_chunk(topo_, frame_, smooth_, mesh_.positions, params, &decoded_);
+    VertexDistance d;
+    squared_vertex_errors(mesh_, decoded_, &error2_, &d);
+    t.rms_rel = d.rms * scale_;
+    t.linf_rel = d.linf * scale_;
+    t.met = (rms_ <= 0 || t.rms_rel <= rms_) && (linf_ <= 0 || t.linf_rel <= linf_);
+    ++trials_;
+    return t;
+  }
+
+  // The largest step (within [lo, hi]) meeting the targets at this blend,
+  // searched from `start`; the finest tried when none does.
+  Trial largest_step(DetailParams params, double start, double lo, double hi) {
+    params.step = std::min(hi, std::max(lo, start));
+    Trial good, first = run(params);
+    double bad = 0;
+    if (first.met) {
+      good = first;
+      while (params.step * kStepGrowth <= hi) {
+        params.step *= kStepGrowth;
+        Trial t = run(params);
+        if (!t.met) {
+          bad = params.step;
+          break;
+        }
+        good = std::move(t);
+      }
+    } else {
+      Trial finest = std::move(first);
+      bad = params.step;
+      while (params.step * kStepShrink >= lo) {
+        params.step *= kStepShrink;
+        Trial t = run(params);
+        if (t.met) {
+          good = std::move(t);
+          break;
+        }
+        bad = params.step;
+        finest = std::move(t);
+      }
+      if (!good.met) return finest;
+    }
+    for (int i = 0; i < kBisections && bad > 0; ++i) {
+      params.step = std::sqrt(good.params.step * bad);
+      Trial t = run(params);
+      if (t.met) {
+        good = std::move(t);
+      } else {
+        bad = params.step;
+      }
+    }
+    return good;
+  }
+
+  int trials() const { return trials_; }
+
+ private:
+  const DetailTopology& topo_;
+  const DetailFrame& frame_;
+  const std::vector<double>& smooth_;
+  const Mesh& mesh_;
+  const double scale_, rms_, linf_;
+  std::vector<double> decoded_, error2_;
+  int trials_ = 0;
+};
+
+}  // namespace
+
+Status choose_detail(const DetailTopology& topo, const DetailFrame& frame, const std::vector<double>& smooth,
+                     const Mesh& mesh, double scale, double target_rms_rel, double target_linf_rel,
+                     DetailChoice* out) {
+  if (!(frame.extent > 0) || !(scale > 0) || !(target_rms_rel > 0 || target_linf_rel > 0)) {
+    return Status::Error(StatusCode::kInvalidArgument, "a detail layer needs a box of some size and an error target");
+  }
+  // The smooth shape must lie well within the lattice's reach (a finite
+  // reconstruction of anchors inside the box always does).
+  for (size_t i = 0; i < smooth.size(); ++i) {
+    if (!(std::fabs(smooth[i] - frame.origin[i % 3]) < kMaxSmoothReach * frame.extent)) {
+      return Status::Error(StatusCode::kNotPositiveDefinite, "the anchors' shape is not finite or far outside the box");
+    }
+  }
+  Search search(topo, frame, smooth, mesh, scale, target_rms_rel, target_linf_rel);
+  const double diagonal = 1.0 / scale;
+  // A uniform quantizer of step s errs s / 2 in RMS over three axes, at most s sqrt(3) / 2.
+  double start = HUGE_VAL;
+  if (target_rms_rel > 0) start = 2 * target_rms_rel * diagonal;
+  if (target_linf_rel > 0) start = std::min(start, 2 * target_linf_rel * diagonal / std::sqrt(3.0));
+  const double lo = kMinDetailStep * frame.extent, hi = kMaxDetailStep * frame.extent;
+  DetailParams params;
+  params.alpha_normal16 = kNormalBlends[0];
+  params.alpha_tangent16 = kTangentBlends[0];
+  Trial best = search.largest_step(params, start, lo, hi);
+  if (best.met) {
+    // The blend that codes smallest at that step: the normal weight first,
+    // then the tangential one (the two interact little).
+    const Trial first = best;
+    for (int an : kNormalBlends) {
+      if (an == first.params.alpha_normal16) continue;
+      DetailParams p = first.params;
+      p.alpha_normal16 = an;
+      Trial t = search.run(p);
+      if (t.met && t.chunk.size() < best.chunk.size()) best = std::move(t);
+    }
+    const DetailParams normal_best = best.params;
+    for (int at : kTangentBlends) {
+      if (at == normal_best.alpha_tangent16) continue;
+      DetailParams p = normal_best;
+      p.alpha_tangent16 = at;
+      Trial t = search.run(p);
+      if (t.met && t.chunk.size() < best.chunk.size()) best = std::move(t);
+    }
+    // The step again for that blend (its zeros err a little differently).
+    if (best.params.alpha_normal16 != first.params.alpha_normal16 ||
+        best.params.alpha_tangent16 != first.params.alpha_tangent16) {
+      Trial again = search.largest_step(best.params, best.params.step, best.params.step, hi);
+      if (again.met && again.chunk.size() <= best.chunk.size()) best = std::move(again);
+    }
+  }
+  out->chunk = std::move(best.chunk);
+  out->params = best.params;
+  out->rms_rel = best.rms_rel;
+  out->linf_rel = best.linf_rel;
+  out->met = best.met;
+  out->trials = search.trials();
+  return Status::Ok();
+}
+
+}  // namespace gab

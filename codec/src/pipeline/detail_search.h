@@ -1,0 +1,32 @@
+// The encoder's choice of the detail chunk (detail/detail_chunk.h) over a
+// given smooth shape: the largest step whose decoded shape meets the error
+// targets, and the blend (detail_predictor.h) that codes smallest at it.
+// Every trial is a real encoding with the decoder's arithmetic, so the
+// errors reported are exactly the decoded file's. Internal to the codec.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "detail/detail_chunk.h"
+#include "gab/mesh/mesh.h"
+#include "gab/status.h"
+
+namespace gab {
+
+struct DetailChoice {
+  std::vector<uint8_t> chunk;  // the payload
+  DetailParams params;
+  double rms_rel = 0, linf_rel = 0;  // of the decoded shape against the mesh
+  bool met = false;                  // the targets hold (else: the finest step tried)
+  int trials = 0;
+};
+
+// `smooth`: the anchors' reconstruction as the decoder computes it; `scale`:
+// 1 / the box diagonal; at least one target positive. Cost: about 30
+// trials, each O(n) predictions and codings (igea: ~40 ms each).
+Status choose_detail(const DetailTopology& topo, const DetailFrame& frame, const std::vector<double>& smooth,
+                     const Mesh& mesh, double scale, double target_rms_rel, double target_linf_rel,
+                     DetailChoice* out);
+
+}  // namespace gab
