@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Geometry rate of Google Draco vs gab at a relative vertex RMS of 1e-3.
+"""Geometry rate of Google Draco vs gab at relative vertex RMS targets (default 1e-3).
 
 Run (from the repository root, after building build/apps/gab):
 
@@ -7,6 +7,7 @@ Run (from the repository root, after building build/apps/gab):
     python3 bench/draco_compare.py      # all of ../shared/meshes/*.off
     python3 bench/draco_compare.py --meshes ../shared/meshes/horse.off --target 1e-3
     python3 bench/draco_compare.py --reorder      # gab files with --reorder (issue 17)
+    python3 bench/draco_compare.py --reorder --target 3e-4,1e-4,3e-5   # the detail layer (issue 18)
 
 What it measures, for every mesh (ASCII OFF):
 
@@ -23,9 +24,10 @@ What it measures, for every mesh (ASCII OFF):
   RMS <= target, the Q just below it, and the bits/vertex linearly
   interpolated in log(RMS) between the two to exactly the target.
 * gab: `gab compress --error TARGET --json` (bits/vertex of the geometry
-  block, rms_rel, anchors, q, encode time), `gab decompress --json` (decode
-  time) and `gab diff ORIGINAL DECODED --json --samples 0` (rms_rel of the
-  decoded file, checked against the compress JSON).
+  block, rms_rel, anchors, q, detail layer bytes, encode time), `gab
+  decompress --json` (decode time, detail time) and `gab diff ORIGINAL
+  DECODED --json --samples 0` (rms_rel of the decoded file, checked against
+  the compress JSON).
 
 Also whole files: gab's .gab (connectivity + order + geometry) beside
 Draco's whole .drc at the same error (its -qp 1 file plus the interpolated
@@ -288,6 +290,7 @@ def gab_at(gab, mesh, target, work, reorder):
     for p in (out, dec):
         os.remove(p)
     c["decode_s"] = d["decode_s"]
+    c["detail_s"] = d.get("detail_s", 0.0)
     c["diff_rms_rel"] = c["rms_rel"] if f is None else f["rms_rel"]
     return c
 
@@ -297,7 +300,7 @@ def main():
     ap.add_argument("--meshes", nargs="*", default=None,
                     help="OFF files (default: ../shared/meshes/*.off next to the repository)")
     ap.add_argument("--gab", default=os.path.join(ROOT, "build", "apps", "gab"))
-    ap.add_argument("--target", type=float, default=1e-3)
+    ap.add_argument("--target", default="1e-3", help="relative vertex RMS, or a comma list of them")
     ap.add_argument("--json", default=None, help="also write all numbers to this JSON file")
     ap.add_argument("--reorder", action="store_true", help="gab compress --reorder (vertex order not kept)")
     args = ap.parse_args()
@@ -315,38 +318,61 @@ def main():
         print("no meshes found: skipping")
         return 0
 
-    rows = []
+    targets = [float(x) for x in str(args.target).split(",")]
+    by_target = {t: [] for t in targets}
     with tempfile.TemporaryDirectory(prefix="draco_compare.") as work:
         for mesh in meshes:
             name = os.path.splitext(os.path.basename(mesh))[0]
-            t0 = time.time()
             text, pos, faces = read_off(mesh)
             obj = os.path.join(work, name + ".obj")
             write_obj(obj, text, faces)
             dm = DracoMesh(name, obj, pos, work)
-            hi, lo, interp = draco_at(dm, args.target)
-            g = gab_at(args.gab, mesh, args.target, work, args.reorder)
-            rows.append({"mesh": name, "n": dm.n, "diag": dm.diag, "draco_base_bytes": dm.base,
-                         "draco": hi, "draco_below": lo, "draco_bpv_interp": interp,
-                         "draco_all": [dm.cache[k] for k in sorted(dm.cache)], "gab": g})
-            print(f"[{name}: {time.time() - t0:.1f} s]", file=sys.stderr, flush=True)
+            for t in targets:
+                t0 = time.time()
+                hi, lo, interp = draco_at(dm, t)
+                g = gab_at(args.gab, mesh, t, work, args.reorder)
+                by_target[t].append({"mesh": name, "n": dm.n, "diag": dm.diag, "draco_base_bytes": dm.base,
+                                     "draco": hi, "draco_below": lo, "draco_bpv_interp": interp,
+                                     "draco_all": [dm.cache[k] for k in sorted(dm.cache)], "gab": g})
+                print(f"[{name} at {t:g}: {time.time() - t0:.1f} s]", file=sys.stderr, flush=True)
 
     sys.stderr.flush()
-    t = args.target
+    for t in targets:
+        report(by_target[t], t, args.reorder)
+    if len(targets) > 1:
+        print("\n### Whole files, gab / Draco, every target\n")
+        print("| mesh | " + " | ".join(f"{t:g}" for t in targets) + " |")
+        print("|---|" + "---:|" * len(targets))
+        for i, r in enumerate(by_target[targets[0]]):
+            cells = []
+            for t in targets:
+                q = by_target[t][i]
+                whole = q["draco_base_bytes"] + q["draco_bpv_interp"] * q["n"] / 8.0
+                cells.append(f"{q['gab']['bytes']} / {whole:.0f} = {q['gab']['bytes'] / whole:.3f}")
+            print(f"| {r['mesh']} | " + " | ".join(cells) + " |")
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump({f"{t:g}": by_target[t] for t in targets}, f, indent=1)
+    return 0
+
+
+def report(rows, t, reorder):
+    """The tables of one target."""
     print(f"\n### Geometry bits/vertex at relative vertex RMS {t:g} (Draco -cl 10)\n")
     print("| mesh | n | draco qp | draco bits/v @qp | draco rms @qp | draco qp-1 bits/v (rms) "
-          "| draco bits/v @1e-3 (interp) | gab bits/v | gab rms_rel | gab anchors | gab q "
-          "| gab/draco (interp) | gab/draco (@qp) | gab encode s | gab decode s |")
-    print("|---|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+          f"| draco bits/v @{t:g} (interp) | gab bits/v | gab rms_rel | gab anchors | gab q "
+          "| gab/draco (interp) | gab/draco (@qp) | gab encode s | gab decode s | gab detail bytes | gab detail s |")
+    print("|---|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     for r in rows:
         d, b, g = r["draco"], r["draco_below"], r["gab"]
         print(f"| {r['mesh']} | {r['n']} | {d['qp']} | {d['bpv']:.3f} | {d['rms_rel']:.3e} "
               f"| {b['bpv']:.3f} ({b['rms_rel']:.3e}) | {r['draco_bpv_interp']:.3f} "
               f"| {g['bpv_geometry']:.3f} | {g['rms_rel']:.3e} | {g['anchors']} | {g['bits']} "
               f"| {g['bpv_geometry'] / r['draco_bpv_interp']:.3f} | {g['bpv_geometry'] / d['bpv']:.3f} "
-              f"| {g['encode_s']:.2f} | {g['decode_s']:.2f} |")
+              f"| {g['encode_s']:.2f} | {g['decode_s']:.2f} | {g.get('detail_bytes', 0)} "
+              f"| {g.get('detail_s', 0.0):.3f} |")
 
-    print(f"\n### Whole files at relative vertex RMS {t:g}" + (" (gab --reorder)" if args.reorder else "") + "\n")
+    print(f"\n### Whole files at relative vertex RMS {t:g}" + (" (gab --reorder)" if reorder else "") + "\n")
     print("| mesh | n | gab bytes | gab connectivity | gab order | gab geometry | draco bytes (interp) "
           "| draco bytes @qp | gab/draco |")
     print("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
@@ -378,10 +404,6 @@ def main():
     print("gab rms_rel of the decoded file (gab diff) vs compress JSON: " +
           ("all agree to 1e-9" if not bad else "DIFFER for " + ", ".join(bad)) + " (max |delta| "
           f"{max(abs(r['gab']['rms_rel'] - r['gab']['diff_rms_rel']) for r in rows):.1e})")
-    if args.json:
-        with open(args.json, "w") as f:
-            json.dump(rows, f, indent=1)
-    return 0
 
 
 if __name__ == "__main__":

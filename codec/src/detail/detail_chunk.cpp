@@ -47,6 +47,19 @@ int context(const DetailTopology& topo, const std::vector<int32_t>& magnitude, s
   return axis * kBuckets + bucket;
 }
 
+// The bits a residual costs, roughly (zero flag, sign, gamma-coded magnitude).
+double estimated_bits(int32_t k) { return k == 0 ? 1.0 : 2.0 + 2.0 * std::log2(1.0 + std::fabs(static_cast<double>(k))); }
+
+// The residual the encoder sends for the scaled frame coordinate f.
+int32_t choose_residual(double f, double rate_weight) {
+  const int32_t k = static_cast<int32_t>(std::max(-1e9, std::min(1e9, std::nearbyint(f))));
+  if (rate_weight <= 0 || k == 0) return k;
+  const int32_t smaller = k > 0 ? k - 1 : k + 1;
+  const double keep = (f - k) * (f - k) + rate_weight * estimated_bits(k);
+  const double shrink = (f - smaller) * (f - smaller) + rate_weight * estimated_bits(smaller);
+  return shrink < keep ? smaller : k;
+}
+
 int32_t clamp_magnitude(int32_t k) { return k == INT32_MIN ? INT32_MAX : (k < 0 ? -k : k); }
 
 // The scaled coordinate of x~ on the lattice, or NaN past its range.
@@ -127,7 +140,7 @@ std::vector<uint8_t> encode_detail_chunk(const DetailTopology& topo, const Detai
     for (int axis = 0; axis < 3; ++axis) {
       const double* e = pred.frame[axis];
       const double f = (d[0] * e[0] + d[1] * e[1] + d[2] * e[2]) / step;
-      k[axis] = static_cast<int32_t>(std::max(-1e9, std::min(1e9, std::nearbyint(f))));
+      k[axis] = choose_residual(f, params.rate_weight);
       models.residual.encode(&enc, k[axis], context(topo, magnitude, i, axis));
     }
     for (int axis = 0; axis < 3; ++axis) magnitude[v3 + axis] = clamp_magnitude(k[axis]);

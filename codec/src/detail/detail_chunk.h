@@ -55,6 +55,11 @@ struct DetailParams {
   double step = 0;
   int alpha_normal16 = 4;
   int alpha_tangent16 = 0;
+  // The encoder's alone (not in the file): a residual is rounded one step
+  // towards zero when that lowers (error / step)^2 + rate_weight * bits, bits
+  // from a gamma-code estimate. A rate-distortion trade the step search then
+  // pays for with a finer step; 0: plain rounding.
+  double rate_weight = 0;
 };
 
 // Where the lattice sits: the header's box minimum and grid extent.

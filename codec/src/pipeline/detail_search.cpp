@@ -16,7 +16,11 @@ constexpr int kTangentBlends[] = {0, 4, 8, 12};
 // then bisection (geometric) between the last good and first bad step.
 constexpr double kStepGrowth = 1.25;
 constexpr double kStepShrink = 0.8;
-constexpr int kBisections = 4;
+constexpr int kBisections = 6;
+// Rate weights tried (DetailParams::rate_weight), and the step each starts its
+// search from, relative to plain rounding's.
+constexpr double kRateWeights[] = {0.05, 0.1};
+constexpr double kRateStepGuess = 0.9;
 // How far from the box the smooth shape may lie, in box extents: the
 // detail lattice (kMinDetailStep / kSmoothDivisions) then stays under 2^52.
 constexpr double kMaxSmoothReach = 1 << 20;
@@ -153,6 +157,14 @@ Status choose_detail(const DetailTopology& topo, const DetailFrame& frame, const
         best.params.alpha_tangent16 != first.params.alpha_tangent16) {
       Trial again = search.largest_step(best.params, best.params.step, best.params.step, hi);
       if (again.met && again.chunk.size() <= best.chunk.size()) best = std::move(again);
+    }
+    // Rate-distortion rounding, each weight with the step it can afford.
+    const DetailParams plain = best.params;
+    for (double weight : kRateWeights) {
+      DetailParams p = plain;
+      p.rate_weight = weight;
+      Trial t = search.largest_step(p, plain.step * kRateStepGuess, lo, hi);
+      if (t.met && t.chunk.size() < best.chunk.size()) best = std::move(t);
     }
   }
   out->chunk = std::move(best.chunk);

@@ -20,12 +20,18 @@ namespace gab {
 namespace {
 
 std::vector<uint8_t> small_file(bool geometry_only, bool refine = false,
-                                FileLayout layout = FileLayout::kLevels, bool reorder = false) {
+                                FileLayout layout = FileLayout::kLevels, bool reorder = false,
+                                bool detail = false) {
   EncodeOptions options;
   options.reorder = reorder;
   options.layout = layout;
   options.refine = refine;
   options.max_anchors = 24;
+  if (detail) {  // anchors to 3e-3, then the detail chunk
+    options.max_anchors = 0;
+    options.target_rms_rel = 1e-4;
+    options.detail = DetailMode::kOn;
+  }
   options.initial_anchors = 4;
   options.chunk_growth = 1.6;
   options.geometry_only = geometry_only;
@@ -52,11 +58,13 @@ void expect_clean(const std::vector<uint8_t>& bytes, const DecodeOptions& option
 
 TEST(FileSafety, EveryByteFlipIsAnErrorOrAValidMesh) {
   const Mesh connectivity = testing_util::bumpy_torus(10, 6);
-  // plain, geometry only, refined; levels, then selection order; then reordered (valence connectivity)
-  for (int variant : {0, 1, 2, 3, 4, 5, 6}) {
+  // plain, geometry only, refined; levels, then selection order; then reordered (valence connectivity);
+  // then with a detail chunk
+  for (int variant : {0, 1, 2, 3, 4, 5, 6, 7}) {
     const bool geometry_only = variant % 3 == 1 && variant < 6;
-    const FileLayout layout = variant < 3 || variant == 6 ? FileLayout::kLevels : FileLayout::kSelectionOrder;
-    const std::vector<uint8_t> file = small_file(geometry_only, variant % 3 == 2, layout, variant == 6);
+    const FileLayout layout = variant < 3 || variant >= 6 ? FileLayout::kLevels : FileLayout::kSelectionOrder;
+    const std::vector<uint8_t> file =
+        small_file(geometry_only, variant % 3 == 2 && variant < 6, layout, variant == 6, variant == 7);
     DecodeOptions options;
     options.connectivity = geometry_only ? &connectivity : nullptr;
     int errors = 0;
@@ -124,16 +132,19 @@ TEST(FileSafety, DamageInsideAConnectivityBlockIsAnErrorOrAValidMesh) {
 }
 
 TEST(FileSafety, EveryTruncationIsAnErrorOrTheCompleteChunks) {
-  for (int variant : {0, 1, 2, 3}) {  // plain, refined; levels, then selection order
+  // plain, refined; levels, then selection order; then with a detail chunk
+  for (int variant : {0, 1, 2, 3, 4}) {
     const bool refine = variant % 2 == 1;
-    const std::vector<uint8_t> file =
-        small_file(false, refine, variant < 2 ? FileLayout::kLevels : FileLayout::kSelectionOrder);
+    const std::vector<uint8_t> file = small_file(
+        false, refine, variant < 2 || variant == 4 ? FileLayout::kLevels : FileLayout::kSelectionOrder, false,
+        variant == 4);
     GabFileInfo full;
     ASSERT_TRUE(read_gab_info(file.data(), file.size(), &full).ok());
     ASSERT_GE(full.chunks, 3);
     ASSERT_EQ(full.refined, refine);
+    ASSERT_EQ(full.detail, variant == 4);
     const size_t chunk0_end = file.size() - [&] {
-      size_t rest = full.refinement_bytes;
+      size_t rest = full.refinement_bytes + full.detail_bytes;
       for (size_t c = 1; c < full.chunk_bytes.size(); ++c) rest += full.chunk_bytes[c];
       return rest;
     }();
@@ -160,8 +171,9 @@ TEST(FileSafety, ForgedPayloadsWithValidChecksumsAreErrorsOrValidMeshes) {
   // byte of every chunk changed and its frame's CRC recomputed, so the
   // decoders (a level plan, subsets, farthest-point levels, positions) see
   // well-framed garbage.
-  for (FileLayout layout : {FileLayout::kLevels, FileLayout::kSelectionOrder}) {
-    const std::vector<uint8_t> file = small_file(false, true, layout);
+  for (int variant : {0, 1, 2}) {  // levels, selection order (both refined); a detail chunk
+    const FileLayout layout = variant == 1 ? FileLayout::kSelectionOrder : FileLayout::kLevels;
+    const std::vector<uint8_t> file = small_file(false, variant < 2, layout, false, variant == 2);
     GabFileInfo info;
     ASSERT_TRUE(read_gab_info(file.data(), file.size(), &info).ok());
     size_t at = kGabHeaderBytes + info.connectivity_bytes;  // the first chunk's frame
