@@ -5,7 +5,8 @@
 // bumps kGabVersion and regenerates the seeds (tests/fuzz/make_gab_seeds.sh);
 // a new flag adds seeds beside the old ones (bit 1: torus-refined; bit 2,
 // the level layout: torus-levels*; bit 3: torus-reordered; bit 4:
-// torus-*ordered-vK for each valence coder version K).
+// torus-*ordered-vK for each valence coder version K; bit 5, the detail
+// chunk: torus-detail*, each version of the chunk).
 #include <dirent.h>
 #include <gtest/gtest.h>
 
@@ -128,6 +129,35 @@ TEST(GoldenFiles, TheLatestValenceSeedsAreWhatTheEncoderWrites) {
   EXPECT_EQ(testing_util::encode_or_die(gab_fuzz::seed_torus(), options, &es), seed("torus-ordered-v2"));
   options.reorder = true;
   EXPECT_EQ(testing_util::encode_or_die(gab_fuzz::seed_torus(), options, &es), seed("torus-reordered-v2"));
+}
+
+TEST(GoldenFiles, DetailSeedsDecodeAndAreWhatTheEncoderWrites) {
+  // The detail chunk, version 1: pinned byte for byte, so that a change of
+  // its predictions or coding that a version-1 decoder would misread fails
+  // here (such a change needs a new kDetailVersion and new seeds beside these).
+  const Mesh torus = gab_fuzz::seed_torus();
+  for (const bool geometry_only : {false, true}) {
+    const std::string name = geometry_only ? "torus-detail-geometry-only" : "torus-detail";
+    const std::vector<uint8_t> golden = seed(name);
+    ASSERT_GE(golden.size(), kGabHeaderBytes) << name;
+    EXPECT_NE(golden[9] & kGabFlagDetail, 0) << name;
+    DecodeOptions decode;
+    decode.connectivity = geometry_only ? &torus : nullptr;
+    Mesh out;
+    DecodeStats ds;
+    const Status status = decode_mesh(golden.data(), golden.size(), decode, &out, &ds);
+    ASSERT_TRUE(status.ok()) << name << ": " << status.message();
+    EXPECT_TRUE(ds.detail) << name;
+    EXPECT_EQ(oriented_triangle_set(out.triangles), oriented_triangle_set(torus.triangles)) << name;
+    EXPECT_LE(testing_util::relative_rms(torus, out), 1e-4) << name;
+    EXPECT_NEAR(testing_util::relative_rms(torus, out), geometry_only ? 9.75e-5 : 9.95e-5, 5e-7) << name;
+    EncodeOptions options;
+    options.target_rms_rel = 1e-4;
+    options.detail = DetailMode::kOn;
+    options.geometry_only = geometry_only;
+    EncodeStats es;
+    EXPECT_EQ(testing_util::encode_or_die(torus, options, &es), golden) << name;
+  }
 }
 
 TEST(GoldenFiles, EncoderWritesThePinnedHeader) {
