@@ -63,6 +63,28 @@ void predict_detail(const DetailTopology& topo, const std::vector<double>& smoot
     n[1] = 0;
     n[2] = 1;
   }
+  // The decoded triangles across the parallelograms' edges know the surface
+  // at the vertex's own scale, which the smooth shape has lost: their
+  // area-weighted normal, each turned to the smooth normal's side.
+  double fan[3] = {0, 0, 0};
+  for (int32_t p = first; p < last; ++p) {
+    const size_t a3 = 3 * static_cast<size_t>(topo.parallelograms[3 * static_cast<size_t>(p)]);
+    const size_t b3 = 3 * static_cast<size_t>(topo.parallelograms[3 * static_cast<size_t>(p) + 1]);
+    const size_t c3 = 3 * static_cast<size_t>(topo.parallelograms[3 * static_cast<size_t>(p) + 2]);
+    const double e1[3] = {decoded[b3] - decoded[a3], decoded[b3 + 1] - decoded[a3 + 1],
+                          decoded[b3 + 2] - decoded[a3 + 2]};
+    const double e2[3] = {decoded[c3] - decoded[a3], decoded[c3 + 1] - decoded[a3 + 1],
+                          decoded[c3 + 2] - decoded[a3 + 2]};
+    double cross[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+    if (cross[0] * n[0] + cross[1] * n[1] + cross[2] * n[2] < 0) {
+      for (int j = 0; j < 3; ++j) cross[j] = -cross[j];
+    }
+    for (int j = 0; j < 3; ++j) fan[j] += cross[j];
+  }
+  const double fl = std::sqrt(fan[0] * fan[0] + fan[1] * fan[1] + fan[2] * fan[2]);
+  if (fl > 0) {
+    for (int j = 0; j < 3; ++j) n[j] = fan[j] / fl;
+  }
   const double d[3] = {pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
   const double dn = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
   const double an = alpha_normal16 / static_cast<double>(kDetailAlphaOne);

@@ -13,7 +13,11 @@
 //    mean of (decoded_u - s_u) over v's decoded neighbours u; without one,
 //    s_v.
 // p = pA + alpha_n (d.n) n + alpha_t (d - (d.n) n), d = pB - pA, n the
-// smooth shape's normal at v (area-weighted over v's triangles). The
+// normal of the parallelograms' decoded triangles (a, b, c), area-weighted
+// and turned to the side of the smooth shape's normal at v (which stands in
+// where v has no parallelogram): 1.4-1.8% smaller than the smooth normal on
+// horse and igea at 1e-4 and 3e-5, the smooth shape having lost the
+// surface's small-scale bends. The
 // parallelogram follows the surface's sampling along the walk, the smooth
 // shape knows where the surface lies: on the shared meshes at 1e-4 the best
 // blends took (alpha_n, alpha_t) = (1/4, 0) for igea and horse, (1/2, 3/4)

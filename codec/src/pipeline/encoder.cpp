@@ -312,22 +312,31 @@ Status encode_anchors_only(const Mesh& mesh, const EncodeOptions& options, const
   return Status::Ok();
 }
 
-// A file whose anchors stop at the RMS target `anchor_rms_rel` (on its own
-// default grid unless options fix q), a detail chunk meeting options'
-// targets after them.
+// A file whose anchors are `anchors` (on their own default grid unless
+// options fix q), a detail chunk meeting options' targets after them.
 Status encode_with_detail(const Mesh& mesh, const EncodeOptions& options, const Box& box,
-                          const CodedConnectivity& coded, double anchor_rms_rel, std::vector<uint8_t>* file,
+                          const CodedConnectivity& coded, const DetailAnchors& anchors, std::vector<uint8_t>* file,
                           EncodeStats* stats) {
+  const int bits = options.bits != 0     ? options.bits
+                   : anchors.spread_only ? kSpreadOnlyBits
+                                         : default_bits(box.extent / box.diagonal, anchors.rms_rel, 0);
+  const Quantizer quantizer = Quantizer::for_box(box.lo, box.hi, bits);
   EncodeOptions anchor_options = options;
-  anchor_options.target_rms_rel = anchor_rms_rel;
+  // A grid of step s errs s / 2 in RMS: a fixed coarse q cannot take the
+  // anchors below about that, and trying would anchor every vertex.
+  anchor_options.target_rms_rel =
+      std::max(anchors.rms_rel, kAnchorTargetOverGrid * quantizer.step / 2 / box.diagonal);
   anchor_options.target_linf_rel = 0;
   anchor_options.refine = false;  // the detail chunk moves every vertex anyway
   if (anchor_options.initial_anchors <= 0) {
-    anchor_options.initial_anchors = std::max<int32_t>(1, static_cast<int32_t>(mesh.num_vertices() * kDetailSpreadShare));
+    anchor_options.initial_anchors =
+        std::max<int32_t>(1, static_cast<int32_t>(mesh.num_vertices() * kDetailSpreadShare));
   }
-  const int bits = options.bits != 0 ? options.bits
-                                     : default_bits(box.extent / box.diagonal, anchor_rms_rel, 0);
-  const Quantizer quantizer = Quantizer::for_box(box.lo, box.hi, bits);
+  const int32_t cap =
+      anchors.spread_only ? anchor_options.initial_anchors
+                          : std::max(anchor_options.initial_anchors,
+                                     static_cast<int32_t>(mesh.num_vertices() * kDetailMaxAnchorShare));
+  anchor_options.max_anchors = options.max_anchors > 0 ? std::min(options.max_anchors, cap) : cap;
   DetailTargets targets;
   targets.rms_rel = options.target_rms_rel;
   targets.linf_rel = options.target_linf_rel;
@@ -358,10 +367,10 @@ Status encode_numbered(const Mesh& mesh, const EncodeOptions& options, const Cod
   // target the anchors alone missed, or because they were asked for.
   const bool try_detail = !have || plan.try_detail || !stats->target_met;
   if (!try_detail) return Status::Ok();
-  for (double anchor_rms_rel : plan.anchor_targets) {
+  for (const DetailAnchors& anchors : plan.anchors) {
     std::vector<uint8_t> other;
     EncodeStats other_stats;
-    GAB_RETURN_IF_ERROR(encode_with_detail(mesh, options, box, coded, anchor_rms_rel, &other, &other_stats));
+    GAB_RETURN_IF_ERROR(encode_with_detail(mesh, options, box, coded, anchors, &other, &other_stats));
     if (!have || better(*stats, file->size(), other_stats, other.size())) {
       *file = std::move(other);
       *stats = std::move(other_stats);

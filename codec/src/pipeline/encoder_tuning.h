@@ -51,13 +51,18 @@ constexpr double kDenseGridShare = 0.95;
 // encoder codes for an error target, the smallest meeting it kept. The
 // target in RMS terms is the RMS target, else the L-inf target over
 // kLinfOverRms. Anchors alone win down to about 3e-4 and lose from 1e-4
-// down (the measured crossing: bench/TUNING.md); a detail layer codes
-// smallest over the anchors of a coarse target (3e-3 to 1e-2 on the shared
-// meshes, whatever the final target), not more of them.
+// down (the measured crossing: bench/TUNING.md). A detail layer codes
+// smallest over the anchors of a coarse target (3e-3 on the shared meshes,
+// whatever the final target), not more of them; from 3e-5 down over the
+// spread set alone on a coarse grid about as often.
+struct DetailAnchors {
+  double rms_rel = 0;        // the anchors' own RMS target (greedy steps after the spread set)...
+  bool spread_only = false;  // ...or the spread set alone, on a kSpreadOnlyBits grid
+};
 struct DetailPlan {
   bool try_anchors_only = true;        // the anchors-only file
-  bool try_detail = false;             // files with a detail layer, over the anchors of...
-  std::vector<double> anchor_targets;  // ...each of these RMS targets
+  bool try_detail = false;             // files with a detail layer, over each of...
+  std::vector<DetailAnchors> anchors;  // ...these anchor sets
 };
 DetailPlan detail_plan(double target_rms_rel, double target_linf_rel);
 
@@ -75,5 +80,16 @@ constexpr double kAnchorTargetOverTarget = 3;
 // which a detail layer does not need: igea at 1e-4, 2606 -> 1042 anchors,
 // 3.2% smaller).
 constexpr double kDetailSpreadShare = 1.0 / 1000;
+// The detail candidate's anchors stop at kAnchorTargetOverGrid times the
+// RMS error of their grid alone (a fixed coarse --bits; the default grid
+// errs 0.8 of the target, so its target stands), and at
+// kDetailMaxAnchorShare of the vertices: a smooth shape needs no more, and
+// the greedy steps beyond would cost the encoder minutes on large meshes.
+constexpr double kAnchorTargetOverGrid = 1.25;
+constexpr double kDetailMaxAnchorShare = 0.25;
+// Below this target the spread set alone is a candidate too, on a grid of
+// kSpreadOnlyBits.
+constexpr double kSpreadOnlyBelow = 5e-5;
+constexpr int kSpreadOnlyBits = 6;
 
 }  // namespace gab

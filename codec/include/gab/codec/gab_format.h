@@ -8,14 +8,15 @@
 //
 //   magic      8 bytes  89 'G' 'A' 'B' 0D 0A 1A 0A (binary-safe, like PNG's)
 //   version    u8 (1), flags u8 (bit 0: geometry only; bit 1: refined;
-//              bit 2: levels; bit 3: reordered; bit 4: versioned valence),
+//              bit 2: levels; bit 3: reordered; bit 4: versioned valence;
+//              bit 5: detail),
 //              bits q u8, 0 u8
 //   n, faces   u32, u32   vertex and triangle counts
 //   weight     f64        anchor weight w of the relaxed basis
 //   box min    3 x f64    quantization grid origin
 //   step       f64        grid spacing (codec/src/anchors/quantizer.h)
 //   anchors    u32        anchors in the file, over all chunks
-//   chunks     u32        chunks in the file (the refinement included)
+//   chunks     u32        chunks in the file (the refinement and detail included)
 //   crc        u32        CRC-32 of the 68 bytes above
 //   connectivity: in geometry-only mode the u64 connectivity_hash of the
 //              mesh the decoder must be given; with bit 4 a framed block,
@@ -45,15 +46,23 @@
 //              connectivity (farthest-point order of the r anchors, sizes
 //              from s, r and g), so the header's chunk count must be
 //              1 + the levels (+ 1 refined).
-//   refinement (flag bit 1 only): one last framed payload correcting every
-//              anchor's quantized position towards the least-squares
-//              optimal coefficient (codec/src/anchors/refinement_chunk.h);
-//              it applies to the whole anchor set only.
+//   refinement (flag bit 1 only): one framed payload after the anchor
+//              chunks correcting every anchor's quantized position towards
+//              the least-squares optimal coefficient
+//              (codec/src/anchors/refinement_chunk.h); it applies to the
+//              whole anchor set only.
+//   detail (flag bit 5 only): the last framed payload, a version byte, the
+//              residuals' step and blend, then every vertex's position as a
+//              quantized residual from a prediction built on the
+//              reconstruction of all the anchors (codec/src/detail/
+//              detail_chunk.h); it applies to the whole anchor set only.
 // Any prefix of whole chunks is a valid coarser approximation. A file
-// without bits 1 to 4 is what the first version of this format wrote; a
+// without bits 1 to 5 is what the first version of this format wrote; a
 // reader that does not know a bit refuses such files ("unknown flags"). The
 // encoder writes bit 4 (with bit 3 for --reorder) unless geometry only; the
 // triangle list and the unversioned valence section are read, not written.
+// It writes bit 5 when a detail layer codes smaller (or alone meets the
+// target): below about 3e-4 relative RMS (encoder.h DetailMode).
 //
 // Why the levels are a flag and not version 2: the header, the framing, the
 // connectivity section and the refinement are unchanged, and the flag
