@@ -107,6 +107,7 @@ std::vector<uint8_t> encode_detail_chunk(const DetailTopology& topo, const Detai
                                          const DetailParams& params, std::vector<double>* decoded) {
   const int32_t n = topo.num_vertices;
   const double step = params.step, fine = step / kSmoothDivisions;
+  const double guard = std::max(kDetailGuard, kDetailGuardFloor * frame.extent / fine);
   ByteWriter head;
   head.u8(kDetailVersion);
   head.f64(step);
@@ -120,7 +121,7 @@ std::vector<uint8_t> encode_detail_chunk(const DetailTopology& topo, const Detai
       const size_t i = 3 * static_cast<size_t>(v) + c;
       double s = lattice_scaled(smooth[i], frame.origin[c], fine);
       if (std::isnan(s)) s = 0;  // never for a reconstruction inside the box's reach
-      const bool near = std::fabs(s - std::floor(s) - 0.5) < kDetailGuard;
+      const bool near = std::fabs(s - std::floor(s) - 0.5) < guard;
       enc.encode(&models.near_tie, near ? 1 : 0);
       const double f = std::floor(s);
       const bool up = s - f >= 0.5;

@@ -44,12 +44,17 @@ constexpr double kMinDetailStep = 1.0 / (int64_t{1} << 24);
 constexpr double kMaxDetailStep = 4.0;
 // The smooth shape's lattice: fine enough that its rounding (s / 8 / sqrt(12)
 // per axis) adds nothing measurable to the predictions' errors (step s on
-// the lattice itself cost igea 3% at 1e-4), coarse enough that the guard,
-// in steps of that lattice, stays far above the solvers' rounding
-// differences (s / 16384: 2e-9 of the diagonal at 1e-4, 6e-13 of the box at
-// the smallest step). A near-tie flag costs about 0.011 bits per coordinate.
+// the lattice itself cost igea 3% at 1e-4).
 constexpr double kSmoothDivisions = 8;
-constexpr double kDetailGuard = 1.0 / 2048;
+// The near-tie guard of its rounding, in steps of that lattice: the larger
+// of kDetailGuard and kDetailGuardFloor times the header's grid extent.
+// Both stay far above the solvers' rounding differences (about 1e-14 of the
+// coordinates): s / 65536 is 3e-9 of the diagonal at 1e-4, and the floor,
+// 2^-30 of the extent, takes over only for steps below about 2^-14 of it. A
+// near-tie flag costs about 0.0035 bits per coordinate (a guard of 1/2048:
+// 0.011, 100 bytes more on bunny at 3e-5).
+constexpr double kDetailGuard = 1.0 / 8192;
+constexpr double kDetailGuardFloor = 1.0 / (int64_t{1} << 30);
 
 struct DetailParams {
   double step = 0;

@@ -10,7 +10,7 @@ namespace gab {
 namespace {
 
 // The blends tried, in sixteenths (normal, tangential), the default first.
-constexpr int kNormalBlends[] = {4, 0, 8, 12, 16};
+constexpr int kNormalBlends[] = {4, 0, 2, 6, 8, 12, 16};
 constexpr int kTangentBlends[] = {0, 4, 8, 12};
 // Step search: growth while the targets hold, shrinkage while they do not,
 // then bisection (geometric) between the last good and first bad step.

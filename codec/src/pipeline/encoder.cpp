@@ -317,9 +317,9 @@ Status encode_anchors_only(const Mesh& mesh, const EncodeOptions& options, const
 Status encode_with_detail(const Mesh& mesh, const EncodeOptions& options, const Box& box,
                           const CodedConnectivity& coded, const DetailAnchors& anchors, std::vector<uint8_t>* file,
                           EncodeStats* stats) {
-  const int bits = options.bits != 0     ? options.bits
-                   : anchors.spread_only ? kSpreadOnlyBits
-                                         : default_bits(box.extent / box.diagonal, anchors.rms_rel, 0);
+  const int bits = options.bits != 0 ? options.bits
+                   : anchors.bits != 0 ? anchors.bits
+                                       : default_bits(box.extent / box.diagonal, anchors.rms_rel, 0);
   const Quantizer quantizer = Quantizer::for_box(box.lo, box.hi, bits);
   EncodeOptions anchor_options = options;
   // A grid of step s errs s / 2 in RMS: a fixed coarse q cannot take the

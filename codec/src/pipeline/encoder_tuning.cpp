@@ -37,14 +37,12 @@ DetailPlan detail_plan(double target_rms_rel, double target_linf_rel) {
   if (!(target > 0)) return plan;
   plan.try_anchors_only = target >= kAnchorsOnlyFrom;
   plan.try_detail = target < kDetailFrom;
-  DetailAnchors greedy;
-  greedy.rms_rel = std::max(kDetailAnchorTarget, kAnchorTargetOverTarget * target);
-  plan.anchors.push_back(greedy);
-  if (target < kSpreadOnlyBelow) {
-    DetailAnchors spread;
-    spread.spread_only = true;
-    plan.anchors.push_back(spread);
-  }
+  DetailAnchors anchors;
+  anchors.rms_rel = std::max(kDetailAnchorTarget, kAnchorTargetOverTarget * target);
+  plan.anchors.push_back(anchors);
+  anchors.bits = kCoarseAnchorBits;
+  anchors.spread_only = target < kSpreadOnlyBelow;
+  plan.anchors.push_back(anchors);
   return plan;
 }
 

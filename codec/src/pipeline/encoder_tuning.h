@@ -52,12 +52,15 @@ constexpr double kDenseGridShare = 0.95;
 // target in RMS terms is the RMS target, else the L-inf target over
 // kLinfOverRms. Anchors alone win down to about 3e-4 and lose from 1e-4
 // down (the measured crossing: bench/TUNING.md). A detail layer codes
-// smallest over the anchors of a coarse target (3e-3 on the shared meshes,
-// whatever the final target), not more of them; from 3e-5 down over the
-// spread set alone on a coarse grid about as often.
+// smallest over the anchors of a coarse target (about 3e-3, whatever the
+// final target), not more of them: on the grid that target calls for, or
+// on a coarser one (kCoarseAnchorBits) with fewer anchors, whichever codes
+// smaller (the coarse grid on 7 of the 8 shared meshes at 1e-4, by 0.1-6%;
+// camel-head, with sharp creases, wants the finer by 7%).
 struct DetailAnchors {
-  double rms_rel = 0;        // the anchors' own RMS target (greedy steps after the spread set)...
-  bool spread_only = false;  // ...or the spread set alone, on a kSpreadOnlyBits grid
+  double rms_rel = 0;        // the anchors' own RMS target (greedy steps after the spread set)
+  int bits = 0;              // their grid; 0: default_bits for rms_rel
+  bool spread_only = false;  // the spread set alone (no greedy steps)
 };
 struct DetailPlan {
   bool try_anchors_only = true;        // the anchors-only file
@@ -87,9 +90,11 @@ constexpr double kDetailSpreadShare = 1.0 / 1000;
 // the greedy steps beyond would cost the encoder minutes on large meshes.
 constexpr double kAnchorTargetOverGrid = 1.25;
 constexpr double kDetailMaxAnchorShare = 0.25;
-// Below this target the spread set alone is a candidate too, on a grid of
-// kSpreadOnlyBits.
+// The coarse grid of the second detail candidate (its anchors stop at the
+// grid's reach, kAnchorTargetOverGrid); below kSpreadOnlyBelow it holds the
+// spread set alone (at 3e-5: horse 89,091 bytes against 90,019 with the
+// greedy steps, bunny 67,948 against 68,560, igea -0.3%).
+constexpr int kCoarseAnchorBits = 6;
 constexpr double kSpreadOnlyBelow = 5e-5;
-constexpr int kSpreadOnlyBits = 6;
 
 }  // namespace gab

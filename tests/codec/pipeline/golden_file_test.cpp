@@ -150,7 +150,7 @@ TEST(GoldenFiles, DetailSeedsDecodeAndAreWhatTheEncoderWrites) {
     EXPECT_TRUE(ds.detail) << name;
     EXPECT_EQ(oriented_triangle_set(out.triangles), oriented_triangle_set(torus.triangles)) << name;
     EXPECT_LE(testing_util::relative_rms(torus, out), 1e-4) << name;
-    EXPECT_NEAR(testing_util::relative_rms(torus, out), geometry_only ? 9.82e-5 : 9.50e-5, 5e-7) << name;
+    EXPECT_NEAR(testing_util::relative_rms(torus, out), geometry_only ? 9.59e-5 : 9.78e-5, 5e-7) << name;
     EncodeOptions options;
     options.target_rms_rel = 1e-4;
     options.detail = DetailMode::kOn;
