@@ -368,6 +368,8 @@ Status encode_numbered(const Mesh& mesh, const EncodeOptions& options, const Cod
   const bool try_detail = !have || plan.try_detail || !stats->target_met;
   if (!try_detail) return Status::Ok();
   for (const DetailAnchors& anchors : plan.anchors) {
+    // A fixed q puts every candidate's anchors on the same grid: the first is enough.
+    if (options.bits != 0 && &anchors != &plan.anchors.front()) break;
     std::vector<uint8_t> other;
     EncodeStats other_stats;
     GAB_RETURN_IF_ERROR(encode_with_detail(mesh, options, box, coded, anchors, &other, &other_stats));
