@@ -104,37 +104,49 @@ Status read_detail_head(const uint8_t* payload, size_t size, const DetailFrame& 
 
 std::vector<uint8_t> encode_detail_chunk(const DetailTopology& topo, const DetailFrame& frame,
                                          const std::vector<double>& smooth, const std::vector<double>& target,
-                                         const DetailParams& params, std::vector<double>* decoded) {
+                                         const DetailParams& params, std::vector<double>* decoded,
+                                         DetailScratch* scratch) {
+  DetailScratch own;
+  DetailScratch& work = scratch ? *scratch : own;
   const int32_t n = topo.num_vertices;
+  const size_t n3 = 3 * static_cast<size_t>(n);
   const double step = params.step, fine = step / kSmoothDivisions;
-  const double guard = std::max(kDetailGuard, kDetailGuardFloor * frame.extent / fine);
   ByteWriter head;
   head.u8(kDetailVersion);
   head.f64(step);
   head.u8(static_cast<uint8_t>(params.alpha_normal16));
   head.u8(static_cast<uint8_t>(params.alpha_tangent16));
-  RangeEncoder enc;
-  DetailModels models;
-  std::vector<double> lattice(3 * static_cast<size_t>(n));
-  for (int32_t v = 0; v < n; ++v) {
-    for (int c = 0; c < 3; ++c) {
-      const size_t i = 3 * static_cast<size_t>(v) + c;
+  // The smooth shape on the lattice, its normals and its near ties: the
+  // step's alone, kept for the next chunk of the same step.
+  if (work.step != step || work.lattice.size() != n3) {
+    const double guard = std::max(kDetailGuard, kDetailGuardFloor * frame.extent / fine);
+    work.step = step;
+    work.lattice.resize(n3);
+    work.ties.resize(n3);
+    for (size_t i = 0; i < n3; ++i) {
+      const int c = static_cast<int>(i % 3);
       double s = lattice_scaled(smooth[i], frame.origin[c], fine);
-      if (std::isnan(s)) s = 0;  // never for a reconstruction inside the box's reach
+      if (std::isnan(s)) s = 0;  // never for a reconstruction inside the box's reach (choose_detail checks)
       const bool near = std::fabs(s - std::floor(s) - 0.5) < guard;
-      enc.encode(&models.near_tie, near ? 1 : 0);
       const double f = std::floor(s);
       const bool up = s - f >= 0.5;
-      if (near) enc.encode(&models.round_up, up ? 1 : 0);
-      lattice[i] = frame.origin[c] + fine * (f + (up ? 1 : 0));
+      work.ties[i] = static_cast<uint8_t>(near ? (up ? 2 : 1) : 0);
+      work.lattice[i] = frame.origin[c] + fine * (f + (up ? 1 : 0));
     }
+    smooth_normals(topo, work.lattice, &work.normals);
   }
-  decoded->assign(3 * static_cast<size_t>(n), 0.0);
-  const std::vector<double> normals = smooth_normals(topo, lattice);
-  std::vector<int32_t> magnitude(3 * static_cast<size_t>(n), 0);
+  RangeEncoder enc;
+  DetailModels models;
+  for (size_t i = 0; i < n3; ++i) {
+    enc.encode(&models.near_tie, work.ties[i] != 0 ? 1 : 0);
+    if (work.ties[i] != 0) enc.encode(&models.round_up, work.ties[i] == 2 ? 1 : 0);
+  }
+  decoded->assign(n3, 0.0);
+  work.magnitude.assign(n3, 0);
   DetailPrediction pred;
   for (size_t i = 0; i < topo.order.size(); ++i) {
-    predict_detail(topo, lattice, normals, *decoded, params.alpha_normal16, params.alpha_tangent16, i, &pred);
+    predict_detail(topo, work.lattice, work.normals, *decoded, params.alpha_normal16, params.alpha_tangent16, i,
+                   &pred);
     const size_t v3 = 3 * static_cast<size_t>(topo.order[i]);
     const double d[3] = {target[v3] - pred.p[0], target[v3 + 1] - pred.p[1], target[v3 + 2] - pred.p[2]};
     int32_t k[3];
@@ -142,9 +154,9 @@ std::vector<uint8_t> encode_detail_chunk(const DetailTopology& topo, const Detai
       const double* e = pred.frame[axis];
       const double f = (d[0] * e[0] + d[1] * e[1] + d[2] * e[2]) / step;
       k[axis] = choose_residual(f, params.rate_weight);
-      models.residual.encode(&enc, k[axis], context(topo, magnitude, i, axis));
+      models.residual.encode(&enc, k[axis], context(topo, work.magnitude, i, axis));
     }
-    for (int axis = 0; axis < 3; ++axis) magnitude[v3 + axis] = clamp_magnitude(k[axis]);
+    for (int axis = 0; axis < 3; ++axis) work.magnitude[v3 + axis] = clamp_magnitude(k[axis]);
     place_detail(pred, step, k, decoded->data() + v3);
   }
   std::vector<uint8_t> out = head.take();
@@ -176,7 +188,8 @@ Status decode_detail_chunk(const uint8_t* payload, size_t size, const DetailTopo
   }
   if (dec.overrun()) return corrupt("detail chunk is cut short");
   decoded->assign(3 * static_cast<size_t>(n), 0.0);
-  const std::vector<double> normals = smooth_normals(topo, lattice);
+  std::vector<double> normals;
+  smooth_normals(topo, lattice, &normals);
   std::vector<int32_t> magnitude(3 * static_cast<size_t>(n), 0);
   DetailPrediction pred;
   for (size_t i = 0; i < topo.order.size(); ++i) {

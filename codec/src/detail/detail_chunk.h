@@ -76,13 +76,25 @@ struct DetailFrame {
 // The header's: its box minimum, and its grid step times 2^q - 1. O(1).
 DetailFrame detail_frame_of(const GabHeader& header);
 
+// Work space an encoder may keep between chunks over the same topology,
+// frame and smooth shape (a search codes many): the smooth shape's lattice,
+// normals and near ties for the last step, and per-chunk buffers.
+struct DetailScratch {
+  double step = 0;
+  std::vector<double> lattice, normals;
+  std::vector<uint8_t> ties;  // per coordinate: 0 none, 1 a near tie rounded down, 2 rounded up
+  std::vector<int32_t> magnitude;
+};
+
 // The chunk's payload for the input positions `target` (3 per vertex) over
 // the anchors' reconstruction `smooth` (3 per vertex); *decoded receives the
 // positions a decoder will output. The params must be valid (step in range
-// for `frame`, alphas in 0..16). O(sum of degrees squared).
+// for `frame`, alphas in 0..16). `scratch` (optional) must only ever see the
+// same topo, frame and smooth. O(vertices + the walk's lists).
 std::vector<uint8_t> encode_detail_chunk(const DetailTopology& topo, const DetailFrame& frame,
                                          const std::vector<double>& smooth, const std::vector<double>& target,
-                                         const DetailParams& params, std::vector<double>* decoded);
+                                         const DetailParams& params, std::vector<double>* decoded,
+                                         DetailScratch* scratch = nullptr);
 
 // The decoded positions (3 per vertex) from a payload and the decoder's own
 // reconstruction `smooth`. kUnsupported for a newer version, kParseError for

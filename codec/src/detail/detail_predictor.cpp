@@ -4,8 +4,9 @@
 
 namespace gab {
 
-std::vector<double> smooth_normals(const DetailTopology& topo, const std::vector<double>& smooth) {
-  std::vector<double> normals(3 * static_cast<size_t>(topo.num_vertices), 0.0);
+void smooth_normals(const DetailTopology& topo, const std::vector<double>& smooth, std::vector<double>* out) {
+  out->assign(3 * static_cast<size_t>(topo.num_vertices), 0.0);
+  std::vector<double>& normals = *out;
   const std::vector<int32_t>& tri = *topo.triangles;
   for (size_t t3 = 0; t3 + 2 < tri.size(); t3 += 3) {
     const size_t i0 = 3 * static_cast<size_t>(tri[t3]), i1 = 3 * static_cast<size_t>(tri[t3 + 1]),
@@ -19,7 +20,6 @@ std::vector<double> smooth_normals(const DetailTopology& topo, const std::vector
       for (int j = 0; j < 3; ++j) normals[corner + j] += nrm[j];
     }
   }
-  return normals;
 }
 
 void predict_detail(const DetailTopology& topo, const std::vector<double>& smooth,

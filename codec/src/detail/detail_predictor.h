@@ -51,8 +51,8 @@ struct DetailPrediction {
 };
 
 // Area-weighted vertex normals of `smooth` (3 per vertex), unnormalized,
-// summed triangle by triangle in triangle order. O(triangles).
-std::vector<double> smooth_normals(const DetailTopology& topo, const std::vector<double>& smooth);
+// summed triangle by triangle in triangle order, into *normals. O(triangles).
+void smooth_normals(const DetailTopology& topo, const std::vector<double>& smooth, std::vector<double>* normals);
 
 // Predicts step i of the walk (vertex topo.order[i]). `smooth`, `normals`,
 // `decoded`: 3 per vertex (decoded: at least the vertices of steps < i).

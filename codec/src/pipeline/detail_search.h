@@ -23,8 +23,8 @@ struct DetailChoice {
 };
 
 // `smooth`: the anchors' reconstruction as the decoder computes it; `scale`:
-// 1 / the box diagonal; at least one target positive. Cost: about 30
-// trials, each O(n) predictions and codings (igea: ~40 ms each).
+// 1 / the box diagonal; at least one target positive. Cost: about 20
+// trials, each O(n) predictions and codings (igea: ~25 ms each).
 Status choose_detail(const DetailTopology& topo, const DetailFrame& frame, const std::vector<double>& smooth,
                      const Mesh& mesh, double scale, double target_rms_rel, double target_linf_rel,
                      DetailChoice* out);
