@@ -85,9 +85,20 @@ void find_separator(const Graph& g, const NestedDissectionOptions& params, Rng* 
   const int32_t candidates = judge > 0 && judge < coarsest ? std::max(1, wanted) : 1;
 
   std::vector<uint8_t> best, candidate, scratch;
+  // The candidates' coarsest separators so far: on the shared meshes nearly
+  // half the candidates repeat an earlier one there (the coarsest graphs are
+  // small and the best of initial_tries often coincides). Refinement is
+  // deterministic, so a repeat would reach the judging level as the same
+  // separator with the same cost and never win (ties keep the earlier one):
+  // it is not carried up. Same permutation, less work.
+  std::vector<std::vector<uint8_t>> seen;
   std::pair<int64_t, int64_t> best_cost{-1, 0};
   for (int32_t c = 0; c < candidates; ++c) {
     initial_separator(level(g, h, coarsest), params, rng, ws, &candidate);
+    if (candidates > 1) {
+      if (std::find(seen.begin(), seen.end(), candidate) != seen.end()) continue;
+      seen.push_back(candidate);
+    }
     uncoarsen(g, h, coarsest, judge, params, ws, &candidate, &scratch);
     const std::pair<int64_t, int64_t> candidate_cost = cost(level(g, h, judge), params, candidate);
     if (best_cost.first < 0 || candidate_cost < best_cost) {
