@@ -42,6 +42,9 @@ struct NestedDissectionOptions {
   // -0.4%, -1.5%, -2.8%, for a few percent more ordering time.
   int32_t large_candidates = 8;
   int32_t large_size = 30000;
+  // Where several candidates are carried, they are the best distinct
+  // separators of candidate_tries tries per candidate on the coarsest graph.
+  int32_t candidate_tries = 3;
   // Seed of the (self-contained, platform-independent) generator that orders
   // the matching's visits and picks seeds: the result depends on nothing else.
   uint64_t seed = 0x9E3779B97F4A7C15ull;
