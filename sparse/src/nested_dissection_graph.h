@@ -74,6 +74,7 @@ struct RefineWorkspace {
   std::vector<uint8_t> locked;      // moved in this pass
   std::vector<int32_t> pos[2];      // place in the gain heap of the move to side 0 / 1
   std::vector<int32_t> key[2];      // gain of that move
+  std::vector<int32_t> stored[2];   // the key the heap is ordered by (>= key: decreases are lazy)
   std::vector<int32_t> heap[2];     // the heaps themselves
   std::vector<int32_t> separator;   // the separator's vertices, increasing
   std::vector<int32_t> moved;       // this pass's moves in order
