@@ -27,14 +27,16 @@ struct NestedDissectionOptions {
   double imbalance = 0.2;
   // Coarsening stops at this many vertices (or when matching stalls).
   int32_t coarsest_size = 120;
-  // Separators grown on the coarsest graph from different seeds; the best is kept.
-  int32_t initial_tries = 6;
+  // Separators grown on the coarsest graph from different seeds; the best is
+  // kept. 4 against 6 (with candidates 3 against 4), mean flops over 12
+  // seeds: igea +0.7%, horse -1.1%, nefertiti +1.1%, ordering ~10% faster.
+  int32_t initial_tries = 4;
   // FM passes per level, and moves without improvement before a pass gives up.
   int32_t refine_passes = 6;
   int32_t refine_patience = 80;
   // Coarsest separators carried up to the finest level with at most
   // trial_size vertices, where the smallest goes on and the others are dropped.
-  int32_t candidates = 4;
+  int32_t candidates = 3;
   int32_t trial_size = 2000;
   // Graphs of at least large_size vertices (the top separators, which weigh
   // most in the factor) carry large_candidates instead. Measured on igea,
