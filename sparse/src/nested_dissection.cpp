@@ -110,6 +110,12 @@ class Dissection {
       const int32_t parent = tree->nodes[s].parent;
       if (parent >= 0) tree->children[cursor[parent]++] = static_cast<int32_t>(s);
     }
+    tree->column_node.assign(perm_.size(), -1);
+    for (size_t s = 0; s < count; ++s) {
+      const SeparatorTree::Node& node = tree->nodes[s];
+      std::fill(tree->column_node.begin() + node.first, tree->column_node.begin() + node.first + node.size,
+                static_cast<int32_t>(s));
+    }
   }
 
  private:
