@@ -76,7 +76,7 @@ struct RefineWorkspace {
   std::vector<int32_t> key[2];      // gain of that move
   std::vector<int32_t> stored[2];   // the key the heap is ordered by (>= key: decreases are lazy)
   std::vector<int32_t> heap[2];     // the heaps themselves
-  std::vector<int32_t> separator;   // the separator's vertices, increasing
+  std::vector<int32_t> separator;   // the separator's vertices, each once
   std::vector<int32_t> moved;       // this pass's moves in order
   std::vector<int32_t> pulled;      // vertices each move pulled into the separator
   std::vector<int32_t> pulled_end;  // end of each move's run in pulled

@@ -259,19 +259,27 @@ class SeparatorRefiner {
   }
 
   // The separator after a pass: the old one's vertices still in it and the
-  // vertices the kept moves pulled in, each once, in increasing order.
+  // vertices the kept moves pulled in, each once (locked[] marks those
+  // listed; every vertex is unlocked on entry and on exit). Their order does
+  // not matter: a heap's top is the largest (gain, -vertex) whatever order
+  // the vertices entered in.
   void update_separator() {
     std::vector<int32_t>& list = r_.separator;
     size_t kept = 0;
     for (int32_t v : list) {
-      if (where_[v] == kSeparator) list[kept++] = v;
+      if (where_[v] == kSeparator && !r_.locked[v]) {
+        r_.locked[v] = 1;
+        list[kept++] = v;
+      }
     }
     list.resize(kept);
     for (int32_t u : r_.pulled) {
-      if (where_[u] == kSeparator) list.push_back(u);
+      if (where_[u] == kSeparator && !r_.locked[u]) {
+        r_.locked[u] = 1;
+        list.push_back(u);
+      }
     }
-    std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
+    for (int32_t v : list) r_.locked[v] = 0;
   }
 
   // One FM pass; true when it improved the separator. Costs O(separator +
@@ -294,8 +302,8 @@ class SeparatorRefiner {
       }
     }
     undo_to(best_moves);
-    update_separator();
     for (int32_t v : r_.moved) r_.locked[v] = 0;
+    update_separator();
     r_.moved.clear();
     r_.pulled.clear();
     r_.pulled_end.clear();
