@@ -5,7 +5,11 @@
 // update cost against nnz(L), plus the drift from a fresh factorization.
 // --threads (default 1, the figure to set beside single-threaded peers) is
 // what the Cholesky gets: the factorization and the solves (the updates run
-// on the calling thread).
+// on the calling thread). --ordering takes a comma list: each input is
+// studied under each ordering, and the growth of the touched entries with n
+// is fitted per ordering. With nd, each update is also set beside the
+// separator bound computed from the dissection's own separators
+// (separator_update_bounds, nested_dissection.h).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +23,7 @@
 #include "gab/mesh/file_io.h"
 #include "gab/sparse/cholesky.h"
 #include "gab/sparse/factor_schedule.h"
+#include "gab/sparse/nested_dissection.h"
 #include "svg_plot.h"
 
 namespace gab {
@@ -32,10 +37,12 @@ struct UpdateRecord {
   int32_t count;         // anchors in the batch
   UpdateStats stats;
   double seconds;
+  int64_t separator_bound;  // sum of the batch's anchors' separator bounds (-1: no separator tree)
 };
 
 struct StudyResult {
   std::string input;
+  std::string ordering;
   int32_t n = 0;
   int64_t nnz_L = 0;
   // The same updates measured on the true (simplicial) structure: the
@@ -43,6 +50,10 @@ struct StudyResult {
   // simplicial updater touches and what the separator bound speaks of.
   double true_path_avg = 0.0, true_touched_avg = 0.0;
   double factor_s = 0.0, solve1_s = 0.0, drift = 0.0;
+  // Average over the anchors of separator_update_bounds (nd only): a bound on
+  // true_touched_avg.
+  bool has_bound = false;
+  double separator_bound_avg = 0.0;
   bool diagonal_positive = true;
   std::vector<UpdateRecord> records;
 };
@@ -73,10 +84,19 @@ Status study_one(const std::string& path, const std::string& ordering, int64_t u
   CscMatrix a = sys.lower;
   const int32_t n = a.ncols;
   AnalyzeOptions options;
-  options.ordering = ordering == "natural" ? Ordering::kNatural
-                     : ordering == "nd"    ? Ordering::kNestedDissection
-                                           : Ordering::kAmd;
+  options.ordering = ordering == "natural" ? Ordering::kNatural : Ordering::kAmd;
   options.threads = static_cast<int32_t>(threads);
+  // Nested dissection is run here (as analyze would run it, default options)
+  // to keep its separator tree for the bound.
+  std::vector<int64_t> bound;
+  if (ordering == "nd") {
+    std::vector<int32_t> perm;
+    SeparatorTree tree;
+    GAB_RETURN_IF_ERROR(nested_dissection_order(a, &perm, NestedDissectionOptions(), &tree));
+    GAB_RETURN_IF_ERROR(separator_update_bounds(tree, perm, &bound));
+    options.ordering = Ordering::kGiven;
+    options.given_perm = std::move(perm);
+  }
   Cholesky chol;
   GAB_RETURN_IF_ERROR(chol.analyze(a, options));
   double t0 = now_seconds();
@@ -92,6 +112,7 @@ Status study_one(const std::string& path, const std::string& ordering, int64_t u
     out->solve1_s = now_seconds() - t0;
   }
   out->input = path;
+  out->ordering = ordering;
   out->n = n;
   out->nnz_L = chol.symbolic().nnz_L;
 
@@ -108,6 +129,11 @@ Status study_one(const std::string& path, const std::string& ordering, int64_t u
       out->true_path_avg /= static_cast<double>(seq.size());
       out->true_touched_avg /= static_cast<double>(seq.size());
     }
+    out->has_bound = !bound.empty();
+    if (out->has_bound && !seq.empty()) {
+      for (int32_t v : seq) out->separator_bound_avg += static_cast<double>(bound[v]);
+      out->separator_bound_avg /= static_cast<double>(seq.size());
+    }
   }
   GAB_RETURN_IF_ERROR(chol.prepare_updates());  // not inside the first update's time
   for (size_t u = 0; u < seq.size(); u += static_cast<size_t>(batch)) {
@@ -116,6 +142,8 @@ Status study_one(const std::string& path, const std::string& ordering, int64_t u
     rec.first_update = static_cast<int64_t>(u) + 1;
     rec.vertex = seq[u];
     rec.count = count;
+    rec.separator_bound = bound.empty() ? -1 : 0;
+    for (int32_t k = 0; k < count && !bound.empty(); ++k) rec.separator_bound += bound[seq[u + k]];
     t0 = now_seconds();
     Status s = count == 1 ? chol.add_anchor(seq[u], 1.0, &rec.stats)
                           : chol.add_anchors(seq.data() + u, count, 1.0, &rec.stats);
@@ -161,7 +189,7 @@ Status study_one(const std::string& path, const std::string& ordering, int64_t u
   return Status::Ok();
 }
 
-JsonObject summary(const StudyResult& r, const std::string& ordering, int64_t batch, int64_t threads) {
+JsonObject summary(const StudyResult& r, int64_t batch, int64_t threads) {
   int64_t anchors = 0, path_max = 0, touched_max = 0;
   double path_sum = 0, touched_sum = 0, super_sum = 0, flops_sum = 0, time_sum = 0, time_max = 0;
   std::vector<double> per_anchor;
@@ -196,7 +224,13 @@ JsonObject summary(const StudyResult& r, const std::string& ordering, int64_t ba
   j.add("input", r.input);
   j.add("batch", batch);
   j.add("threads", threads);
-  j.add("ordering", ordering);
+  j.add("ordering", r.ordering);
+  // Per anchor, as true_touched_avg (which it bounds); null without a separator tree.
+  if (r.has_bound) {
+    j.add("separator_bound_avg", r.separator_bound_avg);
+  } else {
+    j.add_null("separator_bound_avg");
+  }
   j.add("path_supernodes_avg", super_sum * nb);
   j.add("flops_avg", flops_sum * nb);
   j.add("solve1_s", r.solve1_s);
@@ -211,66 +245,151 @@ JsonObject summary(const StudyResult& r, const std::string& ordering, int64_t ba
 std::string path_name(const std::string& path) { return path.substr(path.find_last_of('/') + 1); }
 
 std::string csv(const std::vector<StudyResult>& results) {
-  std::string out = "input,update,vertex,anchors,path_columns,path_supernodes,touched,flops,seconds\n";
-  char buf[512];
+  // The original columns first, then the ordering and the batch's separator
+  // bound (empty without a separator tree).
+  std::string out =
+      "input,update,vertex,anchors,path_columns,path_supernodes,touched,flops,seconds,ordering,separator_bound\n";
+  char buf[640];
   for (const StudyResult& r : results) {
     for (const UpdateRecord& u : r.records) {
-      std::snprintf(buf, sizeof(buf), "%s,%lld,%d,%d,%d,%d,%lld,%.0f,%.9f\n", r.input.c_str(),
+      const std::string bound = u.separator_bound < 0 ? "" : std::to_string(u.separator_bound);
+      std::snprintf(buf, sizeof(buf), "%s,%lld,%d,%d,%d,%d,%lld,%.0f,%.9f,%s,%s\n", r.input.c_str(),
                     static_cast<long long>(u.first_update), u.vertex, u.count, u.stats.path_columns,
                     u.stats.path_supernodes, static_cast<long long>(u.stats.touched), u.stats.flops,
-                    u.seconds);
+                    u.seconds, r.ordering.c_str(), bound.c_str());
       out += buf;
     }
   }
   return out;
 }
 
-std::string svg(const std::vector<StudyResult>& results) {
+double average_touched(const StudyResult& r) {
+  double sum = 0;
+  for (const UpdateRecord& u : r.records) sum += static_cast<double>(u.stats.touched);
+  return r.records.empty() ? 0.0 : sum / static_cast<double>(r.records.size());
+}
+
+// Least-squares fit of log(touched per update) = exponent log(n) + c over one
+// ordering's inputs: the growth exponent (the separator bound's is 1 on
+// surfaces of bounded genus).
+struct Growth {
+  std::string ordering;
+  std::vector<std::pair<double, double>> points;  // (n, average touched), increasing n
+  bool fitted = false;                            // two or more distinct n
+  double exponent = 0.0, log_constant = 0.0;
+};
+
+std::vector<Growth> growth_by_ordering(const std::vector<StudyResult>& results,
+                                       const std::vector<std::string>& orderings) {
+  std::vector<Growth> out;
+  for (const std::string& ordering : orderings) {
+    Growth g;
+    g.ordering = ordering;
+    for (const StudyResult& r : results) {
+      const double touched = average_touched(r);
+      if (r.ordering == ordering && r.n > 0 && touched > 0) g.points.emplace_back(r.n, touched);
+    }
+    std::sort(g.points.begin(), g.points.end());
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (const auto& p : g.points) {
+      const double x = std::log(p.first), y = std::log(p.second);
+      sx += x, sy += y, sxx += x * x, sxy += x * y;
+    }
+    const double m = static_cast<double>(g.points.size());
+    const double denominator = m * sxx - sx * sx;
+    if (g.points.size() >= 2 && denominator > 1e-12 * m * sxx) {
+      g.fitted = true;
+      g.exponent = (m * sxy - sx * sy) / denominator;
+      g.log_constant = (sy - g.exponent * sx) / m;
+    }
+    out.push_back(std::move(g));
+  }
+  return out;
+}
+
+std::string svg(const std::vector<StudyResult>& results, const std::vector<Growth>& growth) {
   static const char* kColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
   Chart touched{"Entries of L touched per update", "update", "touched nonzeros", {}};
   Chart seconds{"Time per update", "update", "microseconds", {}};
   for (size_t i = 0; i < results.size(); ++i) {
     const StudyResult& r = results[i];
     const std::string color = kColors[i % 6];
-    const std::string name = r.input.substr(r.input.find_last_of('/') + 1);
+    const std::string name = r.input.substr(r.input.find_last_of('/') + 1) + " " + r.ordering;
     Series st{name + " (nnz(L) = " + std::to_string(r.nnz_L) + ")", color, {}, {}, false, false};
     Series ss{name, color, {}, {}, false, false};
+    Series sb{name + ": separator bound", color, {}, {}, false, true};
     for (const UpdateRecord& u : r.records) {
       st.x.push_back(static_cast<double>(u.first_update));
       st.y.push_back(static_cast<double>(u.stats.touched));
       ss.x.push_back(static_cast<double>(u.first_update));
       ss.y.push_back(u.seconds * 1e6);
+      if (u.separator_bound >= 0) {
+        sb.x.push_back(static_cast<double>(u.first_update));
+        sb.y.push_back(static_cast<double>(u.separator_bound));
+      }
     }
     touched.series.push_back(st);
+    if (!sb.x.empty()) touched.series.push_back(sb);
     seconds.series.push_back(ss);
   }
   std::vector<Chart> charts = {touched, seconds};
-  if (results.size() > 1) {
-    // Growth against n, beside the O(n) separator bound (bounded genus)
-    // drawn through the smallest input.
-    Chart growth{"Average touched entries against n", "n", "average touched nonzeros", {}};
-    Series measured{"measured", "#1f77b4", {}, {}, true, false};
-    Series bound{"O(n) through the smallest input", "#888", {}, {}, false, true};
-    std::vector<std::pair<double, double>> pts;
-    for (const StudyResult& r : results) {
-      double sum = 0;
-      for (const UpdateRecord& u : r.records) sum += static_cast<double>(u.stats.touched);
-      pts.emplace_back(r.n, r.records.empty() ? 0.0 : sum / r.records.size());
-    }
-    std::sort(pts.begin(), pts.end());
-    for (const auto& p : pts) {
+  // Growth against n on log-log axes, each ordering with its fitted exponent,
+  // beside the O(n) separator bound (bounded genus) drawn through the
+  // smallest input of the first fitted ordering.
+  Chart chart{"Average touched entries per update against n", "n", "average touched nonzeros", {}, true};
+  for (size_t i = 0; i < growth.size(); ++i) {
+    const Growth& g = growth[i];
+    if (!g.fitted) continue;
+    const std::string color = kColors[i % 6];
+    char exponent[64];
+    std::snprintf(exponent, sizeof(exponent), ": touched ~ n^%.2f", g.exponent);
+    Series measured{g.ordering + exponent, color, {}, {}, true, false};
+    Series line{"", color, {}, {}, false, false};
+    Series fit{"", color, {}, {}, false, true};
+    for (const auto& p : g.points) {
       measured.x.push_back(p.first);
       measured.y.push_back(p.second);
-      bound.x.push_back(p.first);
-      bound.y.push_back(pts[0].second * p.first / pts[0].first);
+      fit.x.push_back(p.first);
+      fit.y.push_back(std::exp(g.log_constant + g.exponent * std::log(p.first)));
     }
-    Series line = measured;
-    line.points = false;
-    line.name = "";
-    growth.series = {measured, line, bound};
-    charts.push_back(growth);
+    line.x = measured.x;
+    line.y = measured.y;
+    chart.series.push_back(measured);
+    chart.series.push_back(line);
+    chart.series.push_back(fit);
+    if (chart.series.size() == 3) {
+      Series bound{"O(n) through the smallest input", "#888", {}, {}, false, true};
+      for (const auto& p : g.points) {
+        bound.x.push_back(p.first);
+        bound.y.push_back(g.points[0].second * p.first / g.points[0].first);
+      }
+      chart.series.push_back(bound);
+    }
   }
+  if (!chart.series.empty()) charts.push_back(chart);
   return render_svg(charts);
+}
+
+// The --ordering list: names separated by commas, each amd, nd or natural,
+// each once. False with *error set otherwise.
+bool parse_orderings(const std::string& text, std::vector<std::string>* orderings, std::string* error) {
+  orderings->clear();
+  size_t begin = 0;
+  for (;;) {
+    const size_t end = text.find(',', begin);
+    const std::string name = text.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+    if (name != "amd" && name != "nd" && name != "natural") {
+      *error = "--ordering must be amd, nd or natural (or a comma list of them), got '" + name + "'";
+      return false;
+    }
+    if (std::find(orderings->begin(), orderings->end(), name) != orderings->end()) {
+      *error = "--ordering lists '" + name + "' twice";
+      return false;
+    }
+    orderings->push_back(name);
+    if (end == std::string::npos) return true;
+    begin = end + 1;
+  }
 }
 
 }  // namespace
@@ -289,42 +408,58 @@ int run_study(int argc, char** argv) {
       !args.get_int("--threads", 1, kMaxFactorThreads, &threads)) {
     return usage_error("study", args.error());
   }
-  const std::string ordering = args.get("--ordering", "amd");
-  if (ordering != "amd" && ordering != "nd" && ordering != "natural") {
-    return usage_error("study", "--ordering must be amd, nd or natural, got '" + ordering + "'");
+  std::vector<std::string> orderings;
+  std::string ordering_error;
+  if (!parse_orderings(args.get("--ordering", "amd"), &orderings, &ordering_error)) {
+    return usage_error("study", ordering_error);
   }
   const bool json = args.has("--json");
   std::vector<StudyResult> results;
   for (const std::string& path : args.positionals()) {
-    StudyResult r;
-    const Status s = study_one(path, ordering, updates, batch, anchors, subdivide, threads, &r);
-    if (!s.ok()) return fail(s.message());
-    const JsonObject j = summary(r, ordering, batch, threads);
-    if (json) {
-      std::printf("%s\n", j.str().c_str());
-    } else {
-      double touched = 0, seconds = 0, path = 0;
-      int64_t count = 0;
-      for (const UpdateRecord& u : r.records) {
-        touched += static_cast<double>(u.stats.touched);
-        seconds += u.seconds;
-        path += u.stats.path_columns;
-        count += u.count;
+    for (const std::string& ordering : orderings) {
+      StudyResult r;
+      const Status s = study_one(path, ordering, updates, batch, anchors, subdivide, threads, &r);
+      if (!s.ok()) return fail(s.message());
+      const JsonObject j = summary(r, batch, threads);
+      if (json) {
+        std::printf("%s\n", j.str().c_str());
+      } else {
+        double touched = 0, seconds = 0, path = 0;
+        int64_t count = 0;
+        for (const UpdateRecord& u : r.records) {
+          touched += static_cast<double>(u.stats.touched);
+          seconds += u.seconds;
+          path += u.stats.path_columns;
+          count += u.count;
+        }
+        const double calls = r.records.empty() ? 1.0 : static_cast<double>(r.records.size());
+        std::printf("%s (%s): n = %d, nnz(L) = %lld, factor %.4f s, 1-rhs solve %.4f s\n",
+                    path_name(r.input).c_str(), r.ordering.c_str(), r.n, static_cast<long long>(r.nnz_L),
+                    r.factor_s, r.solve1_s);
+        std::printf("  %lld anchors in batches of %lld: path %.0f columns, %.0f entries touched (%.3f%% of nnz(L)) per call;"
+                    " %.1f us per anchor; drift %.2g\n",
+                    static_cast<long long>(count), static_cast<long long>(batch), path / calls, touched / calls,
+                    100.0 * touched / calls / static_cast<double>(r.nnz_L), count ? seconds / count * 1e6 : 0.0,
+                    r.drift);
+        if (r.has_bound) {
+          std::printf("  true path: %.0f entries per anchor; separator bound %.0f\n", r.true_touched_avg,
+                      r.separator_bound_avg);
+        }
       }
-      const double calls = r.records.empty() ? 1.0 : static_cast<double>(r.records.size());
-      std::printf("%s: n = %d, nnz(L) = %lld, factor %.4f s, 1-rhs solve %.4f s\n", path_name(r.input).c_str(),
-                  r.n, static_cast<long long>(r.nnz_L), r.factor_s, r.solve1_s);
-      std::printf("  %lld anchors in batches of %lld: path %.0f columns, %.0f entries touched (%.3f%% of nnz(L)) per call;"
-                  " %.1f us per anchor; drift %.2g\n",
-                  static_cast<long long>(count), static_cast<long long>(batch), path / calls, touched / calls,
-                  100.0 * touched / calls / static_cast<double>(r.nnz_L), count ? seconds / count * 1e6 : 0.0,
-                  r.drift);
+      std::fflush(stdout);
+      results.push_back(std::move(r));
     }
-    std::fflush(stdout);
-    results.push_back(std::move(r));
+  }
+  // The growth exponents: with the results on stdout, beside them; with
+  // --json on stderr (stdout holds only the JSON objects).
+  const std::vector<Growth> growth = growth_by_ordering(results, orderings);
+  for (const Growth& g : growth) {
+    if (!g.fitted) continue;
+    std::fprintf(json ? stderr : stdout, "%s: touched entries per update grow as n^%.3f (fitted over %zu inputs)\n",
+                 g.ordering.c_str(), g.exponent, g.points.size());
   }
   for (const auto& [option, text] : {std::pair<const char*, std::string>("--csv", csv(results)),
-                                     std::pair<const char*, std::string>("--svg", svg(results))}) {
+                                     std::pair<const char*, std::string>("--svg", svg(results, growth))}) {
     if (!args.has(option)) continue;
     const Status written = write_file_atomically(args.get(option), text);
     if (!written.ok()) return fail(written.message());

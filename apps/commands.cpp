@@ -27,10 +27,13 @@ const std::vector<Command>& commands() {
        "order, analyze, factor and solve the least-squares matrix of a mesh (.obj .off .ply)\n"
        "or a Matrix Market file (.mtx); report sizes and median phase times"},
       {"study", run_study,
-       {"IN... [--ordering amd|nd|natural] [--updates U] [--batch B] [--anchors K]",
+       {"IN... [--ordering amd|nd|natural[,...]] [--updates U] [--batch B] [--anchors K]",
         "[--subdivide K] [--threads T] [--csv F] [--svg F] [--json]"},
        "add U anchors to the factor one (or B) at a time by Givens rotations along the\n"
-       "elimination tree; report path lengths, entries touched, times, drift"},
+       "elimination tree; report path lengths, entries touched, times, drift. A comma list\n"
+       "of orderings studies each input under each; the growth of the touched entries with n\n"
+       "is fitted per ordering (printed, and plotted log-log by --svg); nd also reports the\n"
+       "separator bound on each update (JSON separator_bound_avg, null for the others)"},
       {"diff", run_diff, {"A B [--samples N] [--json]"},
        "distances between two meshes (.obj .off .ply): per vertex when the vertex counts\n"
        "match, and the symmetric surface distance (mean, RMS, Hausdorff) from N samples"},

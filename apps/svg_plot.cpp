@@ -35,6 +35,24 @@ double tick_step(double span) {
   return (r < 1.5 ? 1.0 : r < 3.5 ? 2.0 : r < 7.5 ? 5.0 : 10.0) * mag;
 }
 
+// The chart with every coordinate replaced by its base-10 logarithm, points
+// with a coordinate <= 0 dropped.
+Chart log10_chart(const Chart& chart) {
+  Chart out = chart;
+  for (Series& s : out.series) {
+    Series kept = s;
+    kept.x.clear();
+    kept.y.clear();
+    for (size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
+      if (!(s.x[i] > 0) || !(s.y[i] > 0)) continue;
+      kept.x.push_back(std::log10(s.x[i]));
+      kept.y.push_back(std::log10(s.y[i]));
+    }
+    s = kept;
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string render_svg(const std::vector<Chart>& charts, int width, int height) {
@@ -49,9 +67,12 @@ std::string render_svg(const std::vector<Chart>& charts, int width, int height) 
   svg += buf;
   const double left = 80, right = 20, top = 30, bottom = 45;
   for (size_t ci = 0; ci < charts.size(); ++ci) {
-    const Chart& ch = charts[ci];
+    // A log-log chart is drawn as the linear chart of the logarithms.
+    const Chart ch = charts[ci].log_axes ? log10_chart(charts[ci]) : charts[ci];
+    const bool log_axes = charts[ci].log_axes;
+    auto label = [&](double v) { return fmt(log_axes ? std::pow(10.0, v) : v); };
     const double y0 = static_cast<double>(ci) * height;
-    double xmin = INFINITY, xmax = -INFINITY, ymin = 0.0, ymax = -INFINITY;
+    double xmin = INFINITY, xmax = -INFINITY, ymin = log_axes ? INFINITY : 0.0, ymax = -INFINITY;
     for (const Series& s : ch.series) {
       for (double v : s.x) xmin = std::min(xmin, v), xmax = std::max(xmax, v);
       for (double v : s.y) ymin = std::min(ymin, v), ymax = std::max(ymax, v);
@@ -73,14 +94,14 @@ std::string render_svg(const std::vector<Chart>& charts, int width, int height) 
       std::snprintf(buf, sizeof(buf),
                     "<line x1=\"%g\" y1=\"%g\" x2=\"%g\" y2=\"%g\" stroke=\"#ddd\"/><text x=\"%g\" "
                     "y=\"%g\" text-anchor=\"middle\">%s</text>\n",
-                    px(v), y0 + top, px(v), y0 + top + ph, px(v), y0 + top + ph + 15, fmt(v).c_str());
+                    px(v), y0 + top, px(v), y0 + top + ph, px(v), y0 + top + ph + 15, label(v).c_str());
       svg += buf;
     }
     for (double v = std::ceil(ymin / ys) * ys; v <= ymax + 1e-9 * ys; v += ys) {
       std::snprintf(buf, sizeof(buf),
                     "<line x1=\"%g\" y1=\"%g\" x2=\"%g\" y2=\"%g\" stroke=\"#ddd\"/><text x=\"%g\" "
                     "y=\"%g\" text-anchor=\"end\">%s</text>\n",
-                    left, py(v), left + pw, py(v), left - 5, py(v) + 4, fmt(v).c_str());
+                    left, py(v), left + pw, py(v), left - 5, py(v) + 4, label(v).c_str());
       svg += buf;
     }
     std::snprintf(buf, sizeof(buf), "<text x=\"%g\" y=\"%g\" text-anchor=\"middle\">%s</text>\n",

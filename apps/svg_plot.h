@@ -19,6 +19,9 @@ struct Series {
 struct Chart {
   std::string title, x_label, y_label;
   std::vector<Series> series;
+  // Both axes logarithmic (ticks labelled with the values; points with a
+  // coordinate <= 0 are left out). Linear axes start y at 0.
+  bool log_axes = false;
 };
 
 // Renders charts stacked vertically, each width x height pixels.

@@ -88,6 +88,7 @@ gab::NestedDissectionOptions nd_options() {
   o.trial_size = static_cast<int32_t>(read("ND_TRIAL_SIZE", o.trial_size));
   o.large_candidates = static_cast<int32_t>(read("ND_LARGE_CANDIDATES", o.large_candidates));
   o.large_size = static_cast<int32_t>(read("ND_LARGE_SIZE", o.large_size));
+  o.candidate_tries = static_cast<int32_t>(read("ND_CANDIDATE_TRIES", o.candidate_tries));
   if (const char* seed = std::getenv("ND_SEED")) o.seed = std::strtoull(seed, nullptr, 0);
   return o;
 }

@@ -47,6 +47,7 @@
 // before the elimination starts; the elimination itself allocates nothing.
 
 #include "gab/sparse/amd.h"
+#include "gab/sparse/amd_graph.h"
 
 #include <algorithm>
 #include <cmath>
@@ -98,6 +99,9 @@ class AmdOrdering {
   // Fills iw (iwlen >= *nzfull words) with the adjacency lists, removes dense rows and
   // sets up the degree lists.
   void build_graph(const CscMatrix& lower, int32_t* iw, int32_t iwlen, const AmdOptions& options);
+  // The same from full adjacency lists (amd_graph.h): no validation, no transpose.
+  void build_graph(int32_t nz, const int32_t* xadj, const int32_t* adj, int32_t* iw, int32_t iwlen,
+                   const AmdOptions& options);
   void eliminate();
   void order(int32_t* perm);
   void fill_info(AmdInfo* info) const;
@@ -114,6 +118,7 @@ class AmdOrdering {
   int32_t collect_garbage(int32_t scan_end);
   void reset_tags();
   void count_block(int64_t f, int64_t r);
+  void init_lists(const AmdOptions& options);
 
   const int32_t n_;
   const bool aggressive_;
@@ -233,7 +238,25 @@ void AmdOrdering::build_graph(const CscMatrix& lower, int32_t* iw, int32_t iwlen
     }
     cursor[j] = cj;
   }
+  init_lists(options);
+}
 
+void AmdOrdering::build_graph(int32_t nz, const int32_t* xadj, const int32_t* adj, int32_t* iw, int32_t iwlen,
+                              const AmdOptions& options) {
+  iw_ = iw;
+  iwlen_ = iwlen;
+  for (int32_t i = 0; i < n_; ++i) {
+    nd_[i].pe = xadj[i];
+    nd_[i].len = xadj[i + 1] - xadj[i];
+  }
+  std::copy(adj, adj + nz, iw);
+  pfree_ = nz;
+  init_lists(options);
+}
+
+// Removes dense rows and fills the degree lists once iw holds the graph.
+void AmdOrdering::init_lists(const AmdOptions& options) {
+  const int32_t n = n_;
   for (int32_t i = 0; i < n; ++i) {
     nd_[i].nv = 1;
     nd_[i].elen = 0;
@@ -720,7 +743,42 @@ void AmdOrdering::fill_info(AmdInfo* info) const {
   info->compressions = compressions_;
 }
 
+// The workspace for a graph of nzfull entries over both triangles: the lists
+// plus 20% elbow room, so that garbage collection is rare (anything from
+// nnz + n + 1 on works, with more collections).
+Status workspace_length(int32_t n, int64_t nzfull, int32_t* iwlen) {
+  constexpr int64_t kMaxIndex = std::numeric_limits<int32_t>::max();
+  const int64_t wanted = nzfull + nzfull / 5 + 2 * int64_t{n};
+  const int64_t minimum = nzfull + n + 1;
+  if (minimum > kMaxIndex) {
+    return Status::Error(StatusCode::kOverflow,
+                         "amd_order: the symmetric graph has too many entries for int32 "
+                         "indices (" + std::to_string(nzfull) + ")");
+  }
+  *iwlen = static_cast<int32_t>(std::min(wanted, kMaxIndex));
+  return Status::Ok();
+}
+
 }  // namespace
+
+Status amd_order_graph(int32_t n, const int32_t* xadj, const int32_t* adj, std::vector<int32_t>* perm,
+                       const AmdOptions& options) {
+  if (n < 0 || n >= (int32_t{1} << 30)) {
+    return Status::Error(StatusCode::kInvalidArgument, "amd_order_graph: n must be in [0, 2^30)");
+  }
+  perm->resize(static_cast<size_t>(n));
+  if (n == 0) return Status::Ok();
+  std::unique_ptr<AmdOrdering::Node[]> nodes(new AmdOrdering::Node[static_cast<size_t>(n)]);
+  std::unique_ptr<int32_t[]> heads(new int32_t[3 * static_cast<size_t>(n)]);
+  AmdOrdering amd(n, nodes.get(), heads.get(), options);
+  int32_t iwlen = 0;
+  GAB_RETURN_IF_ERROR(workspace_length(n, xadj[n], &iwlen));
+  std::unique_ptr<int32_t[]> iw(new int32_t[static_cast<size_t>(iwlen)]);
+  amd.build_graph(xadj[n], xadj, adj, iw.get(), iwlen, options);
+  amd.eliminate();
+  amd.order(perm->data());
+  return Status::Ok();
+}
 
 Status amd_order(const CscMatrix& lower, std::vector<int32_t>* perm, const AmdOptions& options,
                  AmdInfo* info) {
@@ -753,17 +811,8 @@ Status amd_order(const CscMatrix& lower, std::vector<int32_t>* perm, const AmdOp
   AmdOrdering amd(n, nodes.get(), heads.get(), options);
   int64_t nzfull = 0;
   GAB_RETURN_IF_ERROR(amd.count_entries(lower, &nzfull));
-  // Both triangles of the graph plus 20% elbow room, so that garbage collection is rare;
-  // anything from nnz + n + 1 on works, with more collections.
-  constexpr int64_t kMaxIndex = std::numeric_limits<int32_t>::max();
-  const int64_t wanted = nzfull + nzfull / 5 + 2 * int64_t{n};
-  const int64_t minimum = nzfull + n + 1;
-  if (minimum > kMaxIndex) {
-    return Status::Error(StatusCode::kOverflow,
-                         "amd_order: the symmetric graph has too many entries for int32 "
-                         "indices (" + std::to_string(nzfull) + ")");
-  }
-  const int32_t iwlen = static_cast<int32_t>(std::min(wanted, kMaxIndex));
+  int32_t iwlen = 0;
+  GAB_RETURN_IF_ERROR(workspace_length(n, nzfull, &iwlen));
   std::unique_ptr<int32_t[]> iw(new int32_t[static_cast<size_t>(iwlen)]);
   amd.build_graph(lower, iw.get(), iwlen, options);
   perm->resize(static_cast<size_t>(n));

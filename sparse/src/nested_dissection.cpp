@@ -16,7 +16,7 @@
 #include <cmath>
 #include <string>
 
-#include "gab/sparse/amd.h"
+#include "gab/sparse/amd_graph.h"
 #include "nested_dissection_graph.h"
 
 namespace gab {
@@ -110,6 +110,12 @@ class Dissection {
       const int32_t parent = tree->nodes[s].parent;
       if (parent >= 0) tree->children[cursor[parent]++] = static_cast<int32_t>(s);
     }
+    tree->column_node.assign(perm_.size(), -1);
+    for (size_t s = 0; s < count; ++s) {
+      const SeparatorTree::Node& node = tree->nodes[s];
+      std::fill(tree->column_node.begin() + node.first, tree->column_node.begin() + node.first + node.size,
+                static_cast<int32_t>(s));
+    }
   }
 
  private:
@@ -135,23 +141,23 @@ class Dissection {
     return Status::Ok();
   }
 
-  // A small piece ordered by AMD on its own lower triangle.
+  // A small piece ordered by AMD on its own lists (amd_graph.h), which are
+  // sorted when the original graph's are: the induced subgraphs keep the
+  // order. Otherwise on a sorted copy.
   Status order_leaf(const Graph& g, const std::vector<int32_t>& label, int32_t begin,
                     std::vector<int32_t>* roots) {
-    CscMatrix lower;
-    lower.nrows = lower.ncols = g.n;
-    lower.colptr.assign(static_cast<size_t>(g.n) + 1, 0);
-    lower.rowind.reserve(g.adj.size() / 2);
-    for (int32_t j = 0; j < g.n; ++j) {
-      const size_t column_start = lower.rowind.size();
-      for (int32_t p = g.xadj[j]; p < g.xadj[j + 1]; ++p) {
-        if (g.adj[p] > j) lower.rowind.push_back(g.adj[p]);
-      }
-      std::sort(lower.rowind.begin() + column_start, lower.rowind.end());
-      lower.colptr[j + 1] = static_cast<int32_t>(lower.rowind.size());
+    bool sorted = true;
+    for (int32_t v = 0; v < g.n && sorted; ++v) {
+      for (int32_t p = g.xadj[v] + 1; p < g.xadj[v + 1]; ++p) sorted &= g.adj[p - 1] < g.adj[p];
     }
     std::vector<int32_t> local;
-    GAB_RETURN_IF_ERROR(amd_order(lower, &local));
+    if (sorted) {
+      GAB_RETURN_IF_ERROR(amd_order_graph(g.n, g.xadj.data(), g.adj.data(), &local));
+    } else {
+      std::vector<int32_t> adj(g.adj.begin(), g.adj.end());
+      for (int32_t v = 0; v < g.n; ++v) std::sort(adj.begin() + g.xadj[v], adj.begin() + g.xadj[v + 1]);
+      GAB_RETURN_IF_ERROR(amd_order_graph(g.n, g.xadj.data(), adj.data(), &local));
+    }
     for (int32_t k = 0; k < g.n; ++k) perm_[begin + k] = label[local[k]];
     roots->push_back(add_node(begin, g.n, begin, /*leaf=*/true, {}));
     return Status::Ok();

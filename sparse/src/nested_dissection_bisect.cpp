@@ -84,10 +84,14 @@ void find_separator(const Graph& g, const NestedDissectionOptions& params, Rng* 
   const int32_t wanted = g.n >= params.large_size ? params.large_candidates : params.candidates;
   const int32_t candidates = judge > 0 && judge < coarsest ? std::max(1, wanted) : 1;
 
-  std::vector<uint8_t> best, candidate, scratch;
+  // The candidates: the best distinct separators of candidate_tries tries
+  // per candidate (one candidate: the best of initial_tries).
+  std::vector<std::vector<uint8_t>> initial;
+  const int32_t tries = candidates > 1 ? candidates * std::max(1, params.candidate_tries) : params.initial_tries;
+  initial_separators(level(g, h, coarsest), params, tries, candidates, rng, ws, &initial);
+  std::vector<uint8_t> best, scratch;
   std::pair<int64_t, int64_t> best_cost{-1, 0};
-  for (int32_t c = 0; c < candidates; ++c) {
-    initial_separator(level(g, h, coarsest), params, rng, ws, &candidate);
+  for (std::vector<uint8_t>& candidate : initial) {
     uncoarsen(g, h, coarsest, judge, params, ws, &candidate, &scratch);
     const std::pair<int64_t, int64_t> candidate_cost = cost(level(g, h, judge), params, candidate);
     if (best_cost.first < 0 || candidate_cost < best_cost) {

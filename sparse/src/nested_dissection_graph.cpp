@@ -26,6 +26,7 @@ void Workspace::grow(int32_t n) {
   for (int s = 0; s < 2; ++s) {
     refine.pos[s].assign(n, -1);
     refine.key[s].resize(n);
+    refine.stored[s].resize(n);
   }
 }
 

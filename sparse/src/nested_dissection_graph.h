@@ -74,8 +74,9 @@ struct RefineWorkspace {
   std::vector<uint8_t> locked;      // moved in this pass
   std::vector<int32_t> pos[2];      // place in the gain heap of the move to side 0 / 1
   std::vector<int32_t> key[2];      // gain of that move
+  std::vector<int32_t> stored[2];   // the key the heap is ordered by (>= key: decreases are lazy)
   std::vector<int32_t> heap[2];     // the heaps themselves
-  std::vector<int32_t> separator;   // the separator's vertices, increasing
+  std::vector<int32_t> separator;   // the separator's vertices, each once
   std::vector<int32_t> moved;       // this pass's moves in order
   std::vector<int32_t> pulled;      // vertices each move pulled into the separator
   std::vector<int32_t> pulled_end;  // end of each move's run in pulled
@@ -116,11 +117,13 @@ int32_t connected_components(const Graph& g, Workspace* ws, std::vector<int32_t>
 void coarsen(const Graph& fine, int64_t max_vertex_weight, Rng* rng, Workspace* ws, IntArray* fine_to_coarse,
              Graph* coarse);
 
-// A vertex separator of a small graph: regions grown breadth-first from
-// several seeds to half the weight, their boundary taken as separator,
-// refined; the best is kept. where[v] receives a Side.
-void initial_separator(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws,
-                       std::vector<uint8_t>* where);
+// Vertex separators of a small graph: regions grown breadth-first from
+// `tries` seeds to half the weight, their boundary taken as separator,
+// refined; the `count` best distinct ones are kept (fewer when the tries gave
+// fewer distinct), best first: least weight beyond the side bound, then least
+// separator weight, then earliest try. Each holds a Side per vertex.
+void initial_separators(const Graph& g, const NestedDissectionOptions& params, int32_t tries, int32_t count,
+                        Rng* rng, Workspace* ws, std::vector<std::vector<uint8_t>>* separators);
 
 // Improves the vertex separator `where` of g in place by FM passes: moves
 // separator vertices to a side (pulling their neighbours on the other side

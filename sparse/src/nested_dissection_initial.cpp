@@ -3,7 +3,7 @@
 // holds half the weight; the region's boundary facing the rest (or the rest's
 // boundary facing the region, whichever weighs less) separates them; FM
 // refinement then trims it. The coarsest graph has ~100 vertices, so several
-// seeds are tried and the smallest balanced separator kept.
+// seeds are tried and the smallest balanced separators kept.
 #include <algorithm>
 
 #include "nested_dissection_graph.h"
@@ -89,29 +89,41 @@ int32_t far_vertex(const Graph& g, int32_t start, Workspace* ws) {
 
 }  // namespace
 
-void initial_separator(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws,
-                       std::vector<uint8_t>* where) {
-  where->assign(static_cast<size_t>(g.n), kRight);
-  if (g.n < 2) return;
+void initial_separators(const Graph& g, const NestedDissectionOptions& params, int32_t tries, int32_t count,
+                        Rng* rng, Workspace* ws, std::vector<std::vector<uint8_t>>* separators) {
+  separators->clear();
+  if (g.n < 2) {
+    separators->emplace_back(static_cast<size_t>(g.n), kRight);
+    return;
+  }
   const int64_t max_side = max_side_weight(g, params.imbalance);
+  // Each distinct refined trial with its cost (weight beyond the side bound,
+  // separator weight) and try number, the tie-break: the earliest stays first.
+  struct Trial {
+    int64_t excess, separator;
+    int32_t index;
+  };
+  std::vector<Trial> trials;
+  std::vector<std::vector<uint8_t>> kept;
   std::vector<uint8_t> trial(static_cast<size_t>(g.n));
-  int64_t best_excess = -1, best_separator = 0;
-  const int32_t tries = std::max(1, params.initial_tries);
+  tries = std::max(1, tries);
   for (int32_t t = 0; t < tries; ++t) {
     const int32_t seed = t == 0 ? far_vertex(g, 0, ws) : rng->below(g.n);
     grow_region(g, seed, ws, &trial);
     boundary_to_separator(g, &trial);
     refine_separator(g, params, ws, &trial);
+    if (std::find(kept.begin(), kept.end(), trial) != kept.end()) continue;
     int64_t weight[3] = {0, 0, 0};
     for (int32_t v = 0; v < g.n; ++v) weight[trial[v]] += g.vw[v];
     const int64_t excess = std::max<int64_t>(0, std::max(weight[0], weight[1]) - max_side);
-    if (best_excess < 0 || excess < best_excess ||
-        (excess == best_excess && weight[2] < best_separator)) {
-      best_excess = excess;
-      best_separator = weight[2];
-      *where = trial;
-    }
+    trials.push_back({excess, weight[2], static_cast<int32_t>(kept.size())});
+    kept.push_back(trial);
   }
+  std::stable_sort(trials.begin(), trials.end(), [](const Trial& a, const Trial& b) {
+    return a.excess != b.excess ? a.excess < b.excess : a.separator < b.separator;
+  });
+  const size_t wanted = std::min(trials.size(), static_cast<size_t>(std::max(1, count)));
+  for (size_t k = 0; k < wanted; ++k) separators->push_back(std::move(kept[trials[k].index]));
 }
 
 }  // namespace nd

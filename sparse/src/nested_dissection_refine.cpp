@@ -30,26 +30,45 @@ namespace {
 // vertex's position so its key can change in place. The position and key
 // arrays are the workspace's, sized for the largest graph; positions are -1
 // for every vertex outside the heap between calls.
+//
+// A decrease is lazy: the heap is ordered by a stored key that may exceed the
+// true key (never falls below it), and a stale top is settled (stored key set
+// to the true one, sifted down) before it is read. The settled top is then
+// the true maximum in the same order: every other vertex's true key is at
+// most its stored key, which is at most the top's. Most key changes of a move
+// lower the gains of vertices that never reach the top again (their moves
+// would pull the moved vertex's side into the separator), and sifting those
+// down was a third of the heap work.
 class GainHeap {
  public:
-  GainHeap(std::vector<int32_t>* pos, std::vector<int32_t>* key, std::vector<int32_t>* heap)
-      : pos_(*pos), key_(*key), heap_(*heap) {}
+  GainHeap(std::vector<int32_t>* pos, std::vector<int32_t>* key, std::vector<int32_t>* stored,
+           std::vector<int32_t>* heap)
+      : pos_(*pos), key_(*key), stored_(*stored), heap_(*heap) {}
   bool empty() const { return heap_.empty(); }
+  // The vertex with the largest key; call settle() first.
   int32_t top() const { return heap_[0]; }
   int32_t key(int32_t v) const { return key_[v]; }
   bool contains(int32_t v) const { return pos_[v] >= 0; }
 
+  // Makes the top's stored key its true key: top() is then the maximum.
+  void settle() {
+    while (!heap_.empty() && stored_[heap_[0]] != key_[heap_[0]]) {
+      stored_[heap_[0]] = key_[heap_[0]];
+      down(0);
+    }
+  }
   void push(int32_t v, int32_t key) {
-    key_[v] = key;
+    key_[v] = stored_[v] = key;
     pos_[v] = static_cast<int32_t>(heap_.size());
     heap_.push_back(v);
     up(pos_[v]);
   }
   void update(int32_t v, int32_t key) {
-    const int32_t old = key_[v];
-    if (key == old) return;
     key_[v] = key;
-    if (key > old) up(pos_[v]); else down(pos_[v]);
+    if (key > stored_[v]) {
+      stored_[v] = key;
+      up(pos_[v]);
+    }
   }
   void remove(int32_t v) {
     const int32_t i = pos_[v];
@@ -69,7 +88,7 @@ class GainHeap {
 
  private:
   bool before(int32_t a, int32_t b) const {
-    return key_[a] > key_[b] || (key_[a] == key_[b] && a < b);
+    return stored_[a] > stored_[b] || (stored_[a] == stored_[b] && a < b);
   }
   void place(int32_t i, int32_t v) {
     heap_[i] = v;
@@ -101,6 +120,7 @@ class GainHeap {
 
   std::vector<int32_t>& pos_;
   std::vector<int32_t>& key_;
+  std::vector<int32_t>& stored_;
   std::vector<int32_t>& heap_;
 };
 
@@ -125,7 +145,8 @@ class SeparatorRefiner {
         // Small graphs need few speculative moves to climb out of a local minimum.
         patience_(static_cast<size_t>(std::min(params.refine_patience, std::max(20, g.n / 100)))),
         r_(ws->refine),
-        heap_{GainHeap(&r_.pos[0], &r_.key[0], &r_.heap[0]), GainHeap(&r_.pos[1], &r_.key[1], &r_.heap[1])} {
+        heap_{GainHeap(&r_.pos[0], &r_.key[0], &r_.stored[0], &r_.heap[0]),
+              GainHeap(&r_.pos[1], &r_.key[1], &r_.stored[1], &r_.heap[1])} {
     weight_[0] = weight_[1] = weight_[2] = 0;
     r_.separator.clear();
     for (int32_t v = 0; v < g.n; ++v) {
@@ -168,7 +189,9 @@ class SeparatorRefiner {
   }
 
   // The side to move heap top to, or -1 when neither move is admissible.
-  int choose_side() const {
+  int choose_side() {
+    heap_[0].settle();
+    heap_[1].settle();
     bool ok[2];
     for (int s = 0; s < 2; ++s) {
       ok[s] = !heap_[s].empty() && weight_[s] + g_.vw[heap_[s].top()] <= max_side_;
@@ -236,19 +259,27 @@ class SeparatorRefiner {
   }
 
   // The separator after a pass: the old one's vertices still in it and the
-  // vertices the kept moves pulled in, each once, in increasing order.
+  // vertices the kept moves pulled in, each once (locked[] marks those
+  // listed; every vertex is unlocked on entry and on exit). Their order does
+  // not matter: a heap's top is the largest (gain, -vertex) whatever order
+  // the vertices entered in.
   void update_separator() {
     std::vector<int32_t>& list = r_.separator;
     size_t kept = 0;
     for (int32_t v : list) {
-      if (where_[v] == kSeparator) list[kept++] = v;
+      if (where_[v] == kSeparator && !r_.locked[v]) {
+        r_.locked[v] = 1;
+        list[kept++] = v;
+      }
     }
     list.resize(kept);
     for (int32_t u : r_.pulled) {
-      if (where_[u] == kSeparator) list.push_back(u);
+      if (where_[u] == kSeparator && !r_.locked[u]) {
+        r_.locked[u] = 1;
+        list.push_back(u);
+      }
     }
-    std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
+    for (int32_t v : list) r_.locked[v] = 0;
   }
 
   // One FM pass; true when it improved the separator. Costs O(separator +
@@ -271,8 +302,8 @@ class SeparatorRefiner {
       }
     }
     undo_to(best_moves);
-    update_separator();
     for (int32_t v : r_.moved) r_.locked[v] = 0;
+    update_separator();
     r_.moved.clear();
     r_.pulled.clear();
     r_.pulled_end.clear();

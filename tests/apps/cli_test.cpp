@@ -4,7 +4,9 @@
 
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <string>
+#include <vector>
 
 #include "run_gab.h"
 
@@ -112,8 +114,12 @@ TEST(CliStudyTest, JsonCsvAndSvg) {
   std::ifstream c(csv);
   std::string header, line;
   std::getline(c, header);
-  EXPECT_EQ(header, "input,update,vertex,anchors,path_columns,path_supernodes,touched,flops,seconds");
-  int rows = 0;
+  // The original columns, then the ordering and the separator bound (empty: AMD has no separator tree).
+  EXPECT_EQ(header,
+            "input,update,vertex,anchors,path_columns,path_supernodes,touched,flops,seconds,ordering,separator_bound");
+  std::getline(c, line);
+  EXPECT_EQ(line.substr(line.size() - 5), ",amd,") << line;
+  int rows = 1;
   while (std::getline(c, line)) ++rows;
   EXPECT_EQ(rows, 4);
   std::ifstream s(svg);
@@ -173,6 +179,73 @@ TEST(CliStudyTest, TwoThreadsGiveTheSameUpdatesAndDrift) {
   EXPECT_LT(std::stod(json_value(factor.out, "residual")), 1e-12);
 }
 
+// A triangulated k x k grid as OFF text.
+std::string grid_off(int32_t k) {
+  std::string off = "OFF\n" + std::to_string(k * k) + " " + std::to_string(2 * (k - 1) * (k - 1)) + " 0\n";
+  for (int32_t y = 0; y < k; ++y) {
+    for (int32_t x = 0; x < k; ++x) off += std::to_string(x) + " " + std::to_string(y) + " 0\n";
+  }
+  for (int32_t y = 0; y + 1 < k; ++y) {
+    for (int32_t x = 0; x + 1 < k; ++x) {
+      const int32_t v = y * k + x;
+      off += "3 " + std::to_string(v) + " " + std::to_string(v + 1) + " " + std::to_string(v + k + 1) + "\n";
+      off += "3 " + std::to_string(v) + " " + std::to_string(v + k + 1) + " " + std::to_string(v + k) + "\n";
+    }
+  }
+  return off;
+}
+
+// The lines of a text.
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  size_t begin = 0;
+  while (begin < text.size()) {
+    const size_t end = text.find('\n', begin);
+    lines.push_back(text.substr(begin, end - begin));
+    if (end == std::string::npos) break;
+    begin = end + 1;
+  }
+  return lines;
+}
+
+TEST(CliStudyTest, OrderingListStudiesEachInputUnderEachOrdering) {
+  const std::string small = write_scratch_file("grid40.off", grid_off(40));
+  const std::string large = write_scratch_file("grid90.off", grid_off(90));
+  const std::string svg = gab_test::scratch_path("orderings.svg");
+  const CommandResult r =
+      run_gab("study " + small + " " + large + " --ordering amd,nd --updates 40 --json --svg " + svg);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<std::string> lines = lines_of(r.out);
+  ASSERT_EQ(lines.size(), 4u) << r.out;  // one object per input and ordering, inputs outermost
+  const char* expected[] = {"\"amd\"", "\"nd\"", "\"amd\"", "\"nd\""};
+  for (size_t i = 0; i < 4; ++i) {
+    EXPECT_EQ(json_value(lines[i], "ordering"), expected[i]) << lines[i];
+    EXPECT_EQ(json_value(lines[i], "n"), i < 2 ? "1600" : "8100") << lines[i];
+  }
+  for (size_t i : {0u, 2u}) EXPECT_EQ(json_value(lines[i], "separator_bound_avg"), "null") << lines[i];
+  for (size_t i : {1u, 3u}) {
+    // The bound holds per update, so on average: it bounds the true path's entries.
+    const double bound = std::stod(json_value(lines[i], "separator_bound_avg"));
+    const double touched = std::stod(json_value(lines[i], "true_touched_avg"));
+    EXPECT_GE(bound, touched) << lines[i];
+    EXPECT_GT(touched, 0.0) << lines[i];
+  }
+  // The fitted growth exponent of each ordering: on stderr beside --json, and in the plot.
+  for (const char* ordering : {"amd", "nd"}) {
+    const std::string printed = std::string(ordering) + ": touched entries per update grow as n^";
+    const size_t at = r.err.find(printed);
+    ASSERT_NE(at, std::string::npos) << r.err;
+    const double exponent = std::stod(r.err.substr(at + printed.size()));
+    EXPECT_GT(exponent, 0.3) << ordering;  // grows with n, and no faster than n^2 (a dense factor)
+    EXPECT_LT(exponent, 2.0) << ordering;
+  }
+  std::ifstream in(svg);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("amd: touched ~ n^"), std::string::npos);
+  EXPECT_NE(text.find("nd: touched ~ n^"), std::string::npos);
+  EXPECT_NE(text.find("separator bound"), std::string::npos);
+}
+
 TEST(CliStudyTest, UpdatesStopWhenEveryVertexIsAnchored) {
   const std::string path = write_scratch_file("octa_all.off", kOctahedron);
   const CommandResult r = run_gab("study " + path + " --anchors 2 --updates 100 --batch 3 --json");
@@ -184,6 +257,9 @@ TEST(CliStudyTest, BadUsage) {
   EXPECT_EQ(run_gab("study").exit_code, 2);
   EXPECT_EQ(run_gab("study a.off --batch 0").exit_code, 2);
   EXPECT_EQ(run_gab("study a.off --ordering metis").exit_code, 2);
+  EXPECT_EQ(run_gab("study a.off --ordering amd,metis").exit_code, 2);
+  EXPECT_EQ(run_gab("study a.off --ordering amd,").exit_code, 2);
+  EXPECT_EQ(run_gab("study a.off --ordering nd,nd").exit_code, 2);
   EXPECT_EQ(run_gab("study a.off --threads 0").exit_code, 2);
   const CommandResult r = run_gab("study /nonexistent.off");
   EXPECT_EQ(r.exit_code, 1);

@@ -3,6 +3,7 @@
 // determinism, and the predictions in AmdInfo against a brute-force symbolic
 // factorization. Self-contained: the oracles below are deliberately simple.
 #include "gab/sparse/amd.h"
+#include "gab/sparse/amd_graph.h"
 
 #include <gtest/gtest.h>
 
@@ -310,6 +311,28 @@ TEST(AmdTest, RandomGraphsGivePermutationsAndExactPredictions) {
     if (n <= 60) {
       EXPECT_EQ(nnz, factor_nnz_by_elimination(a, perm));
     }
+  }
+}
+
+// amd_order_graph (the nested-dissection leaves' entry) on the full sorted
+// lists gives exactly amd_order's permutation on the lower triangle.
+TEST(AmdTest, GraphEntryGivesTheSamePermutation) {
+  std::mt19937 rng(77);
+  for (int t = 0; t < 200; ++t) {
+    const int32_t n = 1 + static_cast<int32_t>(rng() % 150);
+    const int64_t m = static_cast<int64_t>(rng() % (8 * static_cast<uint32_t>(n) + 1));
+    const CscMatrix a = lower_from_edges(n, random_edges(n, m, &rng), rng() % 2 == 0);
+    const CscMatrix full = symmetric_graph(a);
+    AmdOptions options;
+    options.aggressive = rng() % 2 == 0;
+    options.dense = t % 3 == 0 ? 1.0 : 10.0;  // some rows dense with the floor of 16
+    std::vector<int32_t> expected, got;
+    ASSERT_TRUE(amd_order(a, &expected, options).ok());
+    for (int32_t v = 0; v < n; ++v) {
+      ASSERT_TRUE(std::is_sorted(full.rowind.begin() + full.colptr[v], full.rowind.begin() + full.colptr[v + 1]));
+    }
+    ASSERT_TRUE(amd_order_graph(n, full.colptr.data(), full.rowind.data(), &got, options).ok());
+    EXPECT_EQ(got, expected) << "graph " << t;
   }
 }
 

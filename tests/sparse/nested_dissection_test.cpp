@@ -1,7 +1,8 @@
 // Nested-dissection ordering: the result is a permutation; every separator of
 // the tree separates its children on the graph; the tree's column ranges tile
 // the permutation; the factor with the ordering solves systems; disconnected,
-// tiny, dense-row and path graphs; determinism.
+// tiny, dense-row and path graphs; determinism; the separator bound on an
+// update's cost (by hand on a path, and against the true path on a grid).
 #include "gab/sparse/nested_dissection.h"
 
 #include <gtest/gtest.h>
@@ -64,6 +65,13 @@ void expect_valid_dissection(const CscMatrix& lower, const std::vector<int32_t>&
   const std::vector<int32_t> position = invert_permutation(perm);
   const size_t count = tree.nodes.size();
   ASSERT_EQ(tree.child_ptr.size(), count + 1);
+  // column_node names the node owning each pivot.
+  ASSERT_EQ(static_cast<int32_t>(tree.column_node.size()), n);
+  for (size_t s = 0; s < count; ++s) {
+    for (int32_t k = tree.nodes[s].first; k < tree.nodes[s].first + tree.nodes[s].size; ++k) {
+      EXPECT_EQ(tree.column_node[k], static_cast<int32_t>(s)) << "pivot " << k;
+    }
+  }
   // The roots' subtrees, and each node's children's subtrees followed by its
   // own columns, tile their ranges exactly.
   int32_t next = 0;
@@ -296,6 +304,80 @@ TEST(NestedDissection, SameInputSamePermutation) {
   ASSERT_TRUE(nested_dissection_order(a, &first).ok());
   ASSERT_TRUE(nested_dissection_order(a, &second).ok());
   EXPECT_EQ(first, second);
+}
+
+// Seven vertices in a row, dissected down to single vertices: the middle one
+// (3) is the root separator, 1 and 5 the next ones, 0, 2, 4, 6 the leaves.
+TEST(SeparatorBound, SevenVertexPathByHand) {
+  std::vector<std::pair<int32_t, int32_t>> edges;
+  for (int32_t i = 0; i + 1 < 7; ++i) edges.emplace_back(i, i + 1);
+  const CscMatrix a = spd_from_edges(7, edges);
+  NestedDissectionOptions options;
+  options.leaf_size = 1;  // pieces of up to 2 vertices are leaves: the 3-vertex sides are cut again
+  std::vector<int32_t> perm;
+  SeparatorTree tree;
+  ASSERT_TRUE(nested_dissection_order(a, &perm, options, &tree).ok());
+  expect_valid_dissection(a, perm, tree);
+  ASSERT_EQ(tree.nodes.size(), 7u);
+  EXPECT_EQ(perm[6], 3);
+  ASSERT_EQ(static_cast<int32_t>(tree.column_node.size()), 7);
+  for (int32_t k = 0; k < 7; ++k) EXPECT_EQ(tree.nodes[tree.column_node[k]].size, 1) << k;
+
+  std::vector<int64_t> bound;
+  ASSERT_TRUE(separator_update_bounds(tree, perm, &bound).ok());
+  // Every node holds one column (m = 1): a node at depth d (root 0) has
+  // A = d and adds 1 + d; the path from depth d sums d + 1 such terms:
+  // (d + 1)(d + 2) / 2.
+  EXPECT_EQ(bound[3], 1);   // the root
+  EXPECT_EQ(bound[1], 3);   // 2 + 1
+  EXPECT_EQ(bound[5], 3);
+  for (int32_t leaf : {0, 2, 4, 6}) EXPECT_EQ(bound[leaf], 6) << leaf;  // 3 + 2 + 1
+}
+
+// The bound holds for every vertex of a 2-ring grid: the entries of L on
+// the elimination-tree path from the vertex's column never exceed it.
+TEST(SeparatorBound, BoundsTheTouchedEntriesOfEveryUpdate) {
+  const CscMatrix a = two_ring_grid(60, 50);
+  NestedDissectionOptions options;
+  options.leaf_size = 64;
+  std::vector<int32_t> perm;
+  SeparatorTree tree;
+  ASSERT_TRUE(nested_dissection_order(a, &perm, options, &tree).ok());
+  std::vector<int64_t> bound;
+  ASSERT_TRUE(separator_update_bounds(tree, perm, &bound).ok());
+
+  AnalyzeOptions given;
+  given.ordering = Ordering::kGiven;
+  given.given_perm = perm;
+  Cholesky chol;
+  ASSERT_TRUE(chol.analyze(a, given).ok());
+  const SymbolicFactor& f = chol.symbolic();
+  int64_t tight = 0;
+  for (int32_t v = 0; v < a.ncols; ++v) {
+    int64_t touched = 0;
+    for (int32_t c = f.inverse_perm[v]; c != -1; c = f.etree.parent[c]) touched += f.column_counts[c];
+    ASSERT_LE(touched, bound[v]) << "vertex " << v;
+    tight = std::max(tight, 100 * touched / bound[v]);
+  }
+  EXPECT_GT(tight, 10);  // a bound, but not a vacuous one
+}
+
+TEST(SeparatorBound, RejectsATreeThatDoesNotFitThePermutation) {
+  const CscMatrix a = two_ring_grid(20, 20);
+  std::vector<int32_t> perm;
+  SeparatorTree tree;
+  NestedDissectionOptions options;
+  options.leaf_size = 16;
+  ASSERT_TRUE(nested_dissection_order(a, &perm, options, &tree).ok());
+  std::vector<int64_t> bound;
+  std::vector<int32_t> short_perm(perm.begin(), perm.end() - 1);
+  EXPECT_EQ(separator_update_bounds(tree, short_perm, &bound).code(), StatusCode::kInvalidArgument);
+  std::vector<int32_t> repeated = perm;
+  repeated[0] = repeated[1];
+  EXPECT_EQ(separator_update_bounds(tree, repeated, &bound).code(), StatusCode::kInvalidArgument);
+  SeparatorTree bad = tree;
+  bad.nodes[0].parent = 0;  // its own parent
+  EXPECT_EQ(separator_update_bounds(bad, perm, &bound).code(), StatusCode::kInvalidArgument);
 }
 
 TEST(NestedDissection, RejectsEntriesAboveTheDiagonal) {
