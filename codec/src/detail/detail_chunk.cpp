@@ -1,6 +1,8 @@
 #include "detail/detail_chunk.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <string>
 
 #include "container/byte_io.h"
@@ -48,7 +50,9 @@ int context(const DetailTopology& topo, const std::vector<int32_t>& magnitude, s
 }
 
 // The bits a residual costs, roughly (zero flag, sign, gamma-coded magnitude).
-double estimated_bits(int32_t k) { return k == 0 ? 1.0 : 2.0 + 2.0 * std::log2(1.0 + std::fabs(static_cast<double>(k))); }
+double estimated_bits(int32_t k) {
+  return k == 0 ? 1.0 : 2.0 + 2.0 * std::log2(1.0 + std::fabs(static_cast<double>(k)));
+}
 
 // The residual the encoder sends for the scaled frame coordinate f.
 int32_t choose_residual(double f, double rate_weight) {

@@ -33,7 +33,9 @@ VertexDistance distance(const Mesh& a, const Mesh& b) {
 // The unit cube: 8 vertices, 12 triangles, outward.
 Mesh cube() {
   Mesh m;
-  for (int v = 0; v < 8; ++v) m.positions.insert(m.positions.end(), {double(v & 1), double(v >> 1 & 1), double(v >> 2)});
+  for (int v = 0; v < 8; ++v) {
+    m.positions.insert(m.positions.end(), {double(v & 1), double(v >> 1 & 1), double(v >> 2)});
+  }
   m.triangles = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
                  2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
   return m;

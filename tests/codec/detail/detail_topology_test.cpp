@@ -76,7 +76,8 @@ int check_walk(const Mesh& mesh) {
     const int32_t first = topo.parallelogram_offsets[i], last = topo.parallelogram_offsets[i + 1];
     EXPECT_LE(last - first, kMaxParallelograms);
     for (int32_t p = first; p < last; ++p) {
-      const int32_t a = topo.parallelograms[3 * p], b = topo.parallelograms[3 * p + 1], c = topo.parallelograms[3 * p + 2];
+      const int32_t a = topo.parallelograms[3 * p], b = topo.parallelograms[3 * p + 1];
+      const int32_t c = topo.parallelograms[3 * p + 2];
       EXPECT_TRUE(done[a] && done[b] && done[c]) << "step " << i;
       EXPECT_TRUE(corners.count({v, a, b})) << "step " << i;
       EXPECT_TRUE(unoriented.count({a, b, c})) << "step " << i;
