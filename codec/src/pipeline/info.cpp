@@ -62,7 +62,8 @@ Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
       DetailParams params;
       size_t offset = 0;
       const Status s = read_detail_head(payload, payload_size, detail_frame_of(header), &params, &offset);
-      if (!s.ok()) return s.code() == StatusCode::kUnsupported ? s : corrupt("detail (chunk " + std::to_string(chunk) + "): " + s.message());
+      if (s.code() == StatusCode::kUnsupported) return s;
+      if (!s.ok()) return corrupt("detail (chunk " + std::to_string(chunk) + "): " + s.message());
       info->detail_bytes = in.offset() - at;
       info->detail_step = params.step;
       info->chunks_present = chunk + 1;
