@@ -305,6 +305,10 @@ TEST(CodecCliTest, UnreachableTargetWarnsAndStillWrites) {
   r = run_gab("compress -i " + in + " -o " + gab + " --error 1e-3 --detail sometimes");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--detail must be auto, on or off, got 'sometimes'"), std::string::npos) << r.err;
+  r = run_gab("compress -i " + in + " -o " + gab + " --anchors 10 --detail on");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--detail on needs an error target (--error or --linf), not --anchors"), std::string::npos)
+      << r.err;
 }
 
 TEST(CodecCliTest, DemoRunsOnAGivenMeshAndWritesItsFiles) {
