@@ -117,7 +117,7 @@ void AnchorChunkCoder::encode_positions(RangeEncoder* enc, const std::vector<int
       const bool near = prediction_is_near_tie(s);
       enc->encode(&models_->near_tie_[c], near ? 1 : 0);
       bool up = false;
-      const int32_t predicted = round_prediction(s, &up);
+      const int32_t predicted = static_cast<int32_t>(round_prediction(s, &up));  // s lies on the grid
       if (near) enc->encode(&models_->round_up_[c], up ? 1 : 0);
       r[c] = target - predicted;
       models_->residual_.encode(enc, r[c], axis_context(c, r, previous_max, AnchorModels::kBuckets));
@@ -153,7 +153,7 @@ Status AnchorChunkCoder::decode_positions(RangeDecoder* dec, const std::vector<i
         const bool near = dec->decode(&models_->near_tie_[c]) != 0;
         const bool up = near && dec->decode(&models_->round_up_[c]) != 0;
         r[c] = models_->residual_.decode(dec, axis_context(c, r, previous_max, AnchorModels::kBuckets));
-        value = int64_t{resolve_prediction(s, near, up)} + r[c];
+        value = resolve_prediction(s, near, up) + r[c];
       }
       if (value < 0 || value > q_.max_index) {
         status = Status::Error(StatusCode::kParseError, "anchor " + std::to_string(v) + " lies off the grid");

@@ -31,22 +31,22 @@ int32_t Quantizer::quantize(double v, int c) const {
   return static_cast<int32_t>(std::floor(scaled(v, c) + 0.5));
 }
 
-bool prediction_is_near_tie(double s) {
+bool prediction_is_near_tie(double s, double guard) {
   const double frac = s - std::floor(s);
-  return std::fabs(frac - 0.5) < kPredictionGuard;
+  return std::fabs(frac - 0.5) < guard;
 }
 
-int32_t round_prediction(double s, bool* round_up) {
+int64_t round_prediction(double s, bool* round_up) {
   const double f = std::floor(s);
   *round_up = s - f >= 0.5;
-  return static_cast<int32_t>(f) + (*round_up ? 1 : 0);
+  return static_cast<int64_t>(f) + (*round_up ? 1 : 0);
 }
 
-int32_t resolve_prediction(double s, bool near_tie, bool round_up) {
+int64_t resolve_prediction(double s, bool near_tie, bool round_up) {
   // Near a tie both sides' s lie within the guard of the same half-integer
   // k + 1/2, so floor(s) = k on both; elsewhere plain rounding agrees.
-  if (near_tie) return static_cast<int32_t>(std::floor(s)) + (round_up ? 1 : 0);
-  return static_cast<int32_t>(std::floor(s + 0.5));
+  if (near_tie) return static_cast<int64_t>(std::floor(s)) + (round_up ? 1 : 0);
+  return static_cast<int64_t>(std::floor(s + 0.5));
 }
 
 }  // namespace gab

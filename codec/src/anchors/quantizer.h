@@ -42,11 +42,11 @@ struct Quantizer {
 // bits.
 constexpr double kPredictionGuard = 1.0 / 1024;
 
-// True if the scaled prediction s is within the guard of a half-integer.
-bool prediction_is_near_tie(double s);
+// True if the scaled prediction s is within `guard` of a half-integer.
+bool prediction_is_near_tie(double s, double guard = kPredictionGuard);
 // The encoder's rounding of s; near a tie also `round_up` (the direction).
-int32_t round_prediction(double s, bool* round_up);
+int64_t round_prediction(double s, bool* round_up);
 // The decoder's integer for its own s, given the encoder's flag/direction.
-int32_t resolve_prediction(double s, bool near_tie, bool round_up);
+int64_t resolve_prediction(double s, bool near_tie, bool round_up);
 
 }  // namespace gab

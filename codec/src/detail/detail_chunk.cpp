@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "anchors/quantizer.h"
 #include "container/byte_io.h"
 #include "detail/detail_predictor.h"
 #include "entropy/int_coder.h"
@@ -131,11 +132,11 @@ std::vector<uint8_t> encode_detail_chunk(const DetailTopology& topo, const Detai
       const int c = static_cast<int>(i % 3);
       double s = lattice_scaled(smooth[i], frame.origin[c], fine);
       if (std::isnan(s)) s = 0;  // never for a reconstruction inside the box's reach (choose_detail checks)
-      const bool near = std::fabs(s - std::floor(s) - 0.5) < guard;
-      const double f = std::floor(s);
-      const bool up = s - f >= 0.5;
+      const bool near = prediction_is_near_tie(s, guard);
+      bool up = false;
+      const int64_t rounded = round_prediction(s, &up);
       work.ties[i] = static_cast<uint8_t>(near ? (up ? 2 : 1) : 0);
-      work.lattice[i] = frame.origin[c] + fine * (f + (up ? 1 : 0));
+      work.lattice[i] = frame.origin[c] + fine * static_cast<double>(rounded);
     }
     smooth_normals(topo, work.lattice, &work.normals);
   }
@@ -186,8 +187,7 @@ Status decode_detail_chunk(const uint8_t* payload, size_t size, const DetailTopo
       if (std::isnan(s)) return corrupt("the anchors' shape lies beyond the detail lattice");
       const bool near = dec.decode(&models.near_tie) != 0;
       const bool up = near && dec.decode(&models.round_up) != 0;
-      const double rounded = near ? std::floor(s) + (up ? 1 : 0) : std::floor(s + 0.5);
-      lattice[i] = frame.origin[c] + fine * rounded;
+      lattice[i] = frame.origin[c] + fine * static_cast<double>(resolve_prediction(s, near, up));
     }
   }
   if (dec.overrun()) return corrupt("detail chunk is cut short");

@@ -4,6 +4,19 @@
 
 namespace gab {
 
+namespace {
+
+// (x_b - x_a) x (x_c - x_a) for the points at offsets a, b, c of x (3 per point).
+void cross_at(const std::vector<double>& x, size_t a, size_t b, size_t c, double out[3]) {
+  const double e1[3] = {x[b] - x[a], x[b + 1] - x[a + 1], x[b + 2] - x[a + 2]};
+  const double e2[3] = {x[c] - x[a], x[c + 1] - x[a + 1], x[c + 2] - x[a + 2]};
+  out[0] = e1[1] * e2[2] - e1[2] * e2[1];
+  out[1] = e1[2] * e2[0] - e1[0] * e2[2];
+  out[2] = e1[0] * e2[1] - e1[1] * e2[0];
+}
+
+}  // namespace
+
 void smooth_normals(const DetailTopology& topo, const std::vector<double>& smooth, std::vector<double>* out) {
   out->assign(3 * static_cast<size_t>(topo.num_vertices), 0.0);
   std::vector<double>& normals = *out;
@@ -11,10 +24,8 @@ void smooth_normals(const DetailTopology& topo, const std::vector<double>& smoot
   for (size_t t3 = 0; t3 + 2 < tri.size(); t3 += 3) {
     const size_t i0 = 3 * static_cast<size_t>(tri[t3]), i1 = 3 * static_cast<size_t>(tri[t3 + 1]),
                  i2 = 3 * static_cast<size_t>(tri[t3 + 2]);
-    const double e1[3] = {smooth[i1] - smooth[i0], smooth[i1 + 1] - smooth[i0 + 1], smooth[i1 + 2] - smooth[i0 + 2]};
-    const double e2[3] = {smooth[i2] - smooth[i0], smooth[i2 + 1] - smooth[i0 + 1], smooth[i2 + 2] - smooth[i0 + 2]};
-    const double nrm[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                           e1[0] * e2[1] - e1[1] * e2[0]};
+    double nrm[3];
+    cross_at(smooth, i0, i1, i2, nrm);
     for (size_t corner : {i0, i1, i2}) {
       // A degenerate triangle names a vertex twice: it adds its (zero-ish) normal twice, on both sides alike.
       for (int j = 0; j < 3; ++j) normals[corner + j] += nrm[j];
@@ -27,7 +38,25 @@ void predict_detail(const DetailTopology& topo, const std::vector<double>& smoot
                     int alpha_tangent16, size_t i, DetailPrediction* out) {
   const int32_t v = topo.order[i];
   const size_t v3 = 3 * static_cast<size_t>(v);
-  double par[3] = {0, 0, 0}, gate[3] = {0, 0, 0};
+  double* n = out->frame[0];
+  double* t1 = out->frame[1];
+  double* t2 = out->frame[2];
+  // The smooth shape's normal: the fallback, and the side the fan's normal is turned to.
+  const double nl = std::sqrt(normals[v3] * normals[v3] + normals[v3 + 1] * normals[v3 + 1] +
+                              normals[v3 + 2] * normals[v3 + 2]);
+  if (nl > 0) {
+    for (int j = 0; j < 3; ++j) n[j] = normals[v3 + j] / nl;
+  } else {
+    n[0] = 0;
+    n[1] = 0;
+    n[2] = 1;
+  }
+  // Per parallelogram (a, b, c): the rule's a + b - c, and the decoded
+  // triangle's normal. The decoded triangles across the parallelograms'
+  // edges know the surface at the vertex's own scale, which the smooth shape
+  // has lost: their area-weighted normal, each turned to the smooth normal's
+  // side, is the frame's.
+  double par[3] = {0, 0, 0}, gate[3] = {0, 0, 0}, fan[3] = {0, 0, 0};
   const int32_t first = topo.parallelogram_offsets[i], last = topo.parallelogram_offsets[i + 1];
   for (int32_t p = first; p < last; ++p) {
     const size_t a3 = 3 * static_cast<size_t>(topo.parallelograms[3 * static_cast<size_t>(p)]);
@@ -37,6 +66,14 @@ void predict_detail(const DetailTopology& topo, const std::vector<double>& smoot
     if (p == first) {
       for (int j = 0; j < 3; ++j) gate[j] = decoded[b3 + j] - decoded[a3 + j];
     }
+    double cross[3];
+    cross_at(decoded, a3, b3, c3, cross);
+    const double side = cross[0] * n[0] + cross[1] * n[1] + cross[2] * n[2] < 0 ? -1.0 : 1.0;
+    for (int j = 0; j < 3; ++j) fan[j] += side * cross[j];
+  }
+  const double fl = std::sqrt(fan[0] * fan[0] + fan[1] * fan[1] + fan[2] * fan[2]);
+  if (fl > 0) {
+    for (int j = 0; j < 3; ++j) n[j] = fan[j] / fl;
   }
   const int32_t parallelograms = last - first;
   // pB: the smooth shape moved by the decoded neighbours' mean offset from it.
@@ -50,40 +87,6 @@ void predict_detail(const DetailTopology& topo, const std::vector<double>& smoot
   for (int j = 0; j < 3; ++j) {
     pb[j] = smooth[v3 + j] + (known > 0 ? offset[j] / known : 0.0);
     pa[j] = parallelograms > 0 ? par[j] / parallelograms : pb[j];
-  }
-  double* n = out->frame[0];
-  double* t1 = out->frame[1];
-  double* t2 = out->frame[2];
-  const double nl = std::sqrt(normals[v3] * normals[v3] + normals[v3 + 1] * normals[v3 + 1] +
-                              normals[v3 + 2] * normals[v3 + 2]);
-  if (nl > 0) {
-    for (int j = 0; j < 3; ++j) n[j] = normals[v3 + j] / nl;
-  } else {
-    n[0] = 0;
-    n[1] = 0;
-    n[2] = 1;
-  }
-  // The decoded triangles across the parallelograms' edges know the surface
-  // at the vertex's own scale, which the smooth shape has lost: their
-  // area-weighted normal, each turned to the smooth normal's side.
-  double fan[3] = {0, 0, 0};
-  for (int32_t p = first; p < last; ++p) {
-    const size_t a3 = 3 * static_cast<size_t>(topo.parallelograms[3 * static_cast<size_t>(p)]);
-    const size_t b3 = 3 * static_cast<size_t>(topo.parallelograms[3 * static_cast<size_t>(p) + 1]);
-    const size_t c3 = 3 * static_cast<size_t>(topo.parallelograms[3 * static_cast<size_t>(p) + 2]);
-    const double e1[3] = {decoded[b3] - decoded[a3], decoded[b3 + 1] - decoded[a3 + 1],
-                          decoded[b3 + 2] - decoded[a3 + 2]};
-    const double e2[3] = {decoded[c3] - decoded[a3], decoded[c3 + 1] - decoded[a3 + 1],
-                          decoded[c3 + 2] - decoded[a3 + 2]};
-    double cross[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
-    if (cross[0] * n[0] + cross[1] * n[1] + cross[2] * n[2] < 0) {
-      for (int j = 0; j < 3; ++j) cross[j] = -cross[j];
-    }
-    for (int j = 0; j < 3; ++j) fan[j] += cross[j];
-  }
-  const double fl = std::sqrt(fan[0] * fan[0] + fan[1] * fan[1] + fan[2] * fan[2]);
-  if (fl > 0) {
-    for (int j = 0; j < 3; ++j) n[j] = fan[j] / fl;
   }
   const double d[3] = {pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
   const double dn = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];

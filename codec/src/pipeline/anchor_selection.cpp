@@ -197,6 +197,7 @@ Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const EncodeOpti
     if (rec->num_anchors() >= growth * opened_at) schedule.cuts.push_back(rec->num_anchors());
   }
   if (schedule.cuts.back() < rec->num_anchors()) schedule.cuts.push_back(rec->num_anchors());
+  out->shape = std::move(shape);
   out->refined = refinement.refined();
   if (out->refined) {
     out->refined_grid = refinement.refinement().grid;

@@ -43,6 +43,7 @@ struct Selection {
   AnchorSchedule schedule;
   double flops = 0;                  // the first factorization's cost (what the default growths follow)
   double rms_rel = 0, linf_rel = 0;  // of the last reconstruction (unrefined)
+  std::vector<double> shape;         // that reconstruction, 3 per vertex: every anchor at its quantized position
   std::vector<GreedyStep> curve;     // after every greedy step
   bool refined = false;              // the refinement is worth a chunk
   std::vector<int32_t> refined_grid;  // then: the refined grid indices, 3 per anchor in schedule order

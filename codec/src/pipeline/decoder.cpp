@@ -210,8 +210,8 @@ Status apply_refinement(ByteReader* in, ChunkDecoding* st) {
 }
 
 // The detail chunk over the anchors' shape `smooth`: *positions the
-// detailed shape, or left alone when the file ends inside the chunk
-// (truncated).
+// detailed shape (stats->detail set), or left alone when the file ends
+// inside the chunk (truncated).
 Status apply_detail(ByteReader* in, const GabHeader& header, const Mesh& mesh, const EdgeGraph& graph,
                     const std::vector<double>& smooth, std::vector<double>* positions, DecodeStats* stats) {
   const auto start = std::chrono::steady_clock::now();
@@ -286,8 +286,9 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
   stats->solve_s += seconds_since(t_solve);
   const bool detail = header.detail() && options.detail && !stats->truncated && whole;
   if (detail) {
-    const std::vector<double> smooth = out.positions;
-    GAB_RETURN_IF_ERROR(apply_detail(&in, header, out, graph, smooth, &out.positions, stats));
+    std::vector<double> detailed;
+    GAB_RETURN_IF_ERROR(apply_detail(&in, header, out, graph, out.positions, &detailed, stats));
+    if (stats->detail) out.positions.swap(detailed);
   }
   const bool read_all = whole && (!header.detail() || detail);
   if (!stats->truncated && read_all && in.remaining() != 0) {

@@ -237,12 +237,11 @@ Status encode_on_grid(const Mesh& mesh, const EncodeOptions& options, const Box&
   for (int c = 0; c < 3; ++c) header.box_min[c] = quantizer.min[c];
   header.step = quantizer.step;
   if (detail.wanted()) {
-    // The decoder's shape of all the anchors (unrefined: the caller asks for no refinement).
-    std::vector<double> smooth;
-    GAB_RETURN_IF_ERROR(rec.reconstruct(&smooth));
+    // The decoder's shape of all the anchors: selection's last (unrefined:
+    // the caller asks for no refinement).
     const DetailTopology topo = build_detail_topology(mesh.num_vertices(), mesh.triangles, graph);
     DetailChoice choice;
-    GAB_RETURN_IF_ERROR(choose_detail(topo, detail_frame_of(header), smooth, mesh, 1.0 / box.diagonal,
+    GAB_RETURN_IF_ERROR(choose_detail(topo, detail_frame_of(header), selection.shape, mesh, 1.0 / box.diagonal,
                                       detail.rms_rel, detail.linf_rel, &choice));
     layout.chunks.push_back(std::move(choice.chunk));
     stats->detail = true;
