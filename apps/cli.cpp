@@ -160,6 +160,18 @@ bool Args::get_threads(int32_t* value) {
   return true;
 }
 
+bool Args::get_matrix_ordering(MatrixOrdering* value) {
+  const std::string text = get("--ordering", "auto");
+  for (MatrixOrdering o : {MatrixOrdering::kAuto, MatrixOrdering::kAmd, MatrixOrdering::kNestedDissection}) {
+    if (text == matrix_ordering_name(o)) {
+      *value = o;
+      return true;
+    }
+  }
+  error_ = "--ordering must be auto, amd or nd, got '" + text + "'";
+  return false;
+}
+
 double median(std::vector<double> values) {
   if (values.empty()) return 0.0;
   std::sort(values.begin(), values.end());

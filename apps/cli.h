@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "gab/codec/matrix_ordering.h"
+
 namespace gab {
 namespace cli {
 
@@ -41,6 +43,8 @@ class Args {
   // --threads T (1..64); absent: every hardware thread (at most 64). The
   // results never depend on it, only the time.
   bool get_threads(int32_t* value);
+  // --ordering auto|amd|nd (gab/codec/matrix_ordering.h); absent: auto.
+  bool get_matrix_ordering(MatrixOrdering* value);
 
  private:
   std::vector<std::pair<std::string, std::string>> values_;

@@ -23,7 +23,7 @@ constexpr double kDefaultError = 1e-3;
 int run_compress(int argc, char** argv) {
   Args args;
   if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--error", "--linf", "--bits", "--weight", "--batch", "--chunk-growth",
-                   "--initial", "--threads", "--layout", "--detail"},
+                   "--initial", "--threads", "--layout", "--detail", "--ordering"},
                   {"--json", "--geometry-only", "--refine", "--reorder"})) {
     return usage_error("compress", args.error());
   }
@@ -39,7 +39,8 @@ int run_compress(int argc, char** argv) {
       !args.get_double("--weight", 1e-6, 1e6, &options.weight) ||
       !args.get_double("--batch", 0.0, 1.0, &options.batch_fraction) ||
       !args.get_double("--chunk-growth", 1.01, 1e9, &options.chunk_growth) ||
-      !args.get_int("--initial", 1, 0x7FFFFFFF, &initial) || !args.get_threads(&options.threads)) {
+      !args.get_int("--initial", 1, 0x7FFFFFFF, &initial) || !args.get_threads(&options.threads) ||
+      !args.get_matrix_ordering(&options.ordering)) {
     return usage_error("compress", args.error());
   }
   options.max_anchors = static_cast<int32_t>(anchors);
@@ -132,6 +133,7 @@ int run_compress(int argc, char** argv) {
     o.add("detail_bytes", static_cast<int64_t>(stats.detail_bytes));
     o.add("detail_step_rel", stats.detail_step_rel);
     o.add("anchor_rms_rel", stats.detail ? stats.anchor_rms_rel : stats.rms_rel);
+    o.add("ordering", std::string(matrix_ordering_name(stats.ordering)));
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }

@@ -21,7 +21,7 @@ namespace {
 
 int run_decompress(int argc, char** argv) {
   Args args;
-  if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--connectivity", "--threads"}, {"--json"})) {
+  if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--connectivity", "--threads", "--ordering"}, {"--json"})) {
     return usage_error("decompress", args.error());
   }
   if (!args.positionals().empty()) {
@@ -30,7 +30,9 @@ int run_decompress(int argc, char** argv) {
   if (!args.has("-i") || !args.has("-o")) return usage_error("decompress", "need -i IN.gab and -o OUT");
   int64_t anchors = -1;
   int32_t threads = 1;
-  if (!args.get_int("--anchors", 0, 0x7FFFFFFF, &anchors) || !args.get_threads(&threads)) {
+  MatrixOrdering ordering = MatrixOrdering::kAuto;
+  if (!args.get_int("--anchors", 0, 0x7FFFFFFF, &anchors) || !args.get_threads(&threads) ||
+      !args.get_matrix_ordering(&ordering)) {
     return usage_error("decompress", args.error());
   }
   const std::string in = args.get("-i"), out = args.get("-o");
@@ -46,6 +48,7 @@ int run_decompress(int argc, char** argv) {
   DecodeOptions options;
   options.max_anchors = static_cast<int32_t>(anchors);
   options.threads = threads;
+  options.ordering = ordering;
   if (args.has("--connectivity")) {
     status = read_mesh(args.get("--connectivity"), &connectivity);
     if (!status.ok()) return fail(status.message());
@@ -87,6 +90,7 @@ int run_decompress(int argc, char** argv) {
     o.add("connectivity_s", stats.connectivity_s);
     o.add_bool("detail", stats.detail);
     o.add("detail_s", stats.detail_s);
+    o.add("ordering", std::string(matrix_ordering_name(stats.ordering)));
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }

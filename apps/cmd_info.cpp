@@ -52,15 +52,17 @@ int run_info(int argc, char** argv) {
     o.add("detail_step", info.detail_step);
     o.add_bool("levels", info.levels);
     o.add_bool("reordered", info.reordered);
+    o.add("ordering", std::string(matrix_ordering_name(info.ordering)));
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }
   std::printf("%s: .gab version %d, %d vertices, %d triangles%s\n", in.c_str(), info.version, info.num_vertices,
               info.num_triangles, info.geometry_only ? " (geometry only: decode with --connectivity MESH)" : "");
-  std::printf("%d anchors in %d chunks%s%s; q = %d bits, w = %g\n", info.anchors, info.chunks,
+  std::printf("%d anchors in %d chunks%s%s; q = %d bits, w = %g, ordered by %s\n", info.anchors, info.chunks,
               info.levels ? " (chunk 0 codes the anchor set, later chunks are the decoder's levels)" : "",
               info.truncated ? (" (truncated: " + std::to_string(info.chunks_present) + " complete)").c_str() : "",
-              info.bits, info.weight);
+              info.bits, info.weight,
+              info.ordering == MatrixOrdering::kNestedDissection ? "nested dissection" : "AMD");
   std::printf("%zu bytes: geometry %zu (%.3f bits/vertex), connectivity %zu (%s)", info.bytes, info.geometry_bytes,
               bpv, info.connectivity_bytes,
               info.geometry_only       ? "a hash"

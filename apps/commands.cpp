@@ -10,17 +10,21 @@ const std::vector<Command>& commands() {
       {"compress", run_compress,
        {"-i IN -o OUT.gab [--anchors K | --error E | --linf E] [--bits Q] [--weight W]",
         "[--geometry-only | --reorder] [--detail auto|on|off] [--refine] [--threads T] [--json]",
-        "(tuning: --batch F --chunk-growth G --initial K --layout smaller|levels|selection)"},
+        "(tuning: --batch F --chunk-growth G --initial K --layout smaller|levels|selection",
+        "         --ordering auto|amd|nd)"},
        "compress a mesh's geometry with geometry-aware anchors (default --error 0.001: relative\n"
        "vertex RMS over the bounding-box diagonal; q picked from the target, 12 for --anchors);\n"
        "the connectivity and the vertex numbering are kept, triangles as a set (their order is the\n"
        "coder's). --reorder drops the numbering for a smaller file: the decoded mesh is numbered in\n"
        "the coder's traversal order, so per-vertex data kept outside the file no longer lines up.\n"
        "Below about 3e-4 the anchors stop early and a detail layer codes every vertex's residual;\n"
-       "--detail auto keeps the smaller file, on/off force it (off may miss a target)"},
+       "--detail auto keeps the smaller file, on/off force it (off may miss a target). --ordering:\n"
+       "the factorizations' (speed only; recorded in the file; auto: nested dissection from 20k vertices)"},
       {"decompress", run_decompress,
-       {"-i IN.gab -o OUT [--anchors K] [--connectivity MESH] [--threads T] [--json]"},
-       "decode a .gab file (its first K anchors only: a coarser level of detail)"},
+       {"-i IN.gab -o OUT [--anchors K] [--connectivity MESH] [--threads T] [--ordering auto|amd|nd]",
+        "[--json]"},
+       "decode a .gab file (its first K anchors only: a coarser level of detail); --ordering auto\n"
+       "uses the file's"},
       {"info", run_info, {"IN.gab [--json]"}, "what a .gab file holds (checksums verified, nothing decoded)"},
       {"demo", run_demo, {""}, "compress a real mesh at several anchor counts, print a table, write the meshes"},
       {"factor", run_factor, {"IN [--ordering amd|nd|natural] [--anchors K] [--repeat R] [--threads T] [--json]"},

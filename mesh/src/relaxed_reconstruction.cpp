@@ -73,6 +73,8 @@ Status RelaxedReconstruction::init(const EdgeGraph& graph, double weight,
   }
   GAB_RETURN_IF_ERROR(assemble_normal_matrix(graph, anchors, weight, &matrix_, threads_));
   AnalyzeOptions options;
+  options.ordering = ordering_;
+  options.given_perm = given_perm_;
   options.threads = threads_;
   options.max_factor_entries = max_factor_entries_;
   GAB_RETURN_IF_ERROR(chol_.analyze(matrix_, options));

@@ -284,6 +284,32 @@ TEST(CodecCliTest, UsageAndInputErrors) {
   EXPECT_EQ(r.err, "gab: error: " + not_gab + ": not a .gab file (bad magic)\n");
 }
 
+TEST(CodecCliTest, OrderingIsChosenRecordedAndOverridable) {
+  const std::string in = write_scratch_file("ordering.off", torus_off(12, 6));
+  const std::string gab = write_scratch_file("ordering.gab", "");
+  const std::string out = write_scratch_file("ordering-out.off", "");
+  CommandResult r = run_gab("compress -i " + in + " -o " + gab + " --anchors 12 --json");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"ordering\": \"amd\""), std::string::npos) << r.out;  // auto, on a small mesh
+  r = run_gab("compress -i " + in + " -o " + gab + " --anchors 12 --ordering nd --json");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"ordering\": \"nd\""), std::string::npos) << r.out;
+  r = run_gab("info " + gab);
+  EXPECT_NE(r.out.find("w = 100, ordered by nested dissection\n"), std::string::npos) << r.out;
+  r = run_gab("info " + gab + " --json");
+  EXPECT_NE(r.out.find("\"ordering\": \"nd\""), std::string::npos) << r.out;
+  r = run_gab("decompress -i " + gab + " -o " + out + " --json");
+  EXPECT_NE(r.out.find("\"ordering\": \"nd\""), std::string::npos) << r.out;  // the file's
+  r = run_gab("decompress -i " + gab + " -o " + out + " --ordering amd --json");
+  EXPECT_NE(r.out.find("\"ordering\": \"amd\""), std::string::npos) << r.out;
+  for (const char* command : {"compress", "decompress"}) {
+    r = run_gab(std::string(command) + " -i " + (command[0] == 'c' ? in : gab) + " -o " +
+                (command[0] == 'c' ? gab : out) + " --ordering metis");
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("--ordering must be auto, amd or nd, got 'metis'"), std::string::npos) << r.err;
+  }
+}
+
 TEST(CodecCliTest, UnreachableTargetWarnsAndStillWrites) {
   const std::string in = write_scratch_file("far.off", torus_off(12, 6));
   const std::string gab = write_scratch_file("far.gab", "");

@@ -9,8 +9,8 @@
 # torus-levels seeds later still, with flag bit 2, torus-reordered with
 # flag bit 3, torus-reordered-v1 with flag bit 4 (its valence section
 # version 1), torus-*ordered-v2 with its version 2, torus-detail* with flag
-# bit 5 (the detail chunk, version 1), by running just their
-# lines: the older seeds pin what the first encoder wrote; torus-coarse,
+# bit 5 (the detail chunk, version 1), torus-nd with header byte 11
+# (the ordering: nested dissection), by running just their lines: the older seeds pin what the first encoder wrote; torus-coarse,
 # made before the greedy batches ranked by error mass, no longer comes out
 # byte for byte, so keep the committed one.)
 set -euo pipefail
@@ -46,6 +46,7 @@ PY
 "$gab" compress -i "$tmp/torus.off" -o "$tmp/reordered-v2.gab" --anchors 20 --chunk-growth 1.5 --reorder
 "$gab" compress -i "$tmp/torus.off" -o "$tmp/detail.gab" --error 1e-4 --detail on
 "$gab" compress -i "$tmp/torus.off" -o "$tmp/detail-geo.gab" --error 1e-4 --detail on --geometry-only
+"$gab" compress -i "$tmp/torus.off" -o "$tmp/nd.gab" --anchors 20 --chunk-growth 1.5 --ordering nd
 mkdir -p "$out"
 { printf '\x00'; cat "$tmp/full.gab"; } > "$out/torus-full"
 { printf '\x01'; cat "$tmp/geo.gab"; } > "$out/torus-geometry-only"
@@ -60,3 +61,4 @@ mkdir -p "$out"
 { printf '\x00'; cat "$tmp/reordered-v2.gab"; } > "$out/torus-reordered-v2"
 { printf '\x00'; cat "$tmp/detail.gab"; } > "$out/torus-detail"
 { printf '\x01'; cat "$tmp/detail-geo.gab"; } > "$out/torus-detail-geometry-only"
+{ printf '\x00'; cat "$tmp/nd.gab"; } > "$out/torus-nd"

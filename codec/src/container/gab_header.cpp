@@ -27,7 +27,7 @@ void write_gab_header(const GabHeader& h, ByteWriter* out) {
   out->u8(h.version);
   out->u8(h.flags);
   out->u8(static_cast<uint8_t>(h.bits));
-  out->u8(0);
+  out->u8(h.ordering);
   out->u32(static_cast<uint32_t>(h.num_vertices));
   out->u32(static_cast<uint32_t>(h.num_triangles));
   out->f64(h.weight);
@@ -43,10 +43,10 @@ Status read_gab_header(ByteReader* in, size_t file_size, GabHeader* h) {
   if (!in->bytes(sizeof kGabMagic, &raw) || std::memcmp(raw, kGabMagic, sizeof kGabMagic) != 0) {
     return Status::Error(StatusCode::kParseError, "not a .gab file (bad magic)");
   }
-  uint8_t version = 0, flags = 0, bits = 0, zero = 0;
+  uint8_t version = 0, flags = 0, bits = 0, ordering = 0;
   uint32_t n = 0, faces = 0, anchors = 0, chunks = 0, crc = 0;
   double weight = 0, min[3] = {0, 0, 0}, step = 0;
-  if (!in->u8(&version) || !in->u8(&flags) || !in->u8(&bits) || !in->u8(&zero) || !in->u32(&n) ||
+  if (!in->u8(&version) || !in->u8(&flags) || !in->u8(&bits) || !in->u8(&ordering) || !in->u32(&n) ||
       !in->u32(&faces) || !in->f64(&weight) || !in->f64(&min[0]) || !in->f64(&min[1]) || !in->f64(&min[2]) ||
       !in->f64(&step) || !in->u32(&anchors) || !in->u32(&chunks)) {
     return header_error("file ends inside the header");
@@ -62,9 +62,13 @@ Status read_gab_header(ByteReader* in, size_t file_size, GabHeader* h) {
   // The header's checksum holds, so unknown flags come from a newer writer,
   // not from damage.
   const unsigned known = known_gab_flags();
-  if ((flags & ~known) != 0 || zero != 0) {
-    return Status::Error(StatusCode::kUnsupported, "unsupported .gab flags " + hex_byte(flags) + " " + hex_byte(zero) +
-                                                       " (this build knows " + hex_byte(known) + " 0x00)");
+  if ((flags & ~known) != 0) {
+    return Status::Error(StatusCode::kUnsupported,
+                         "unsupported .gab flags " + hex_byte(flags) + " (this build knows " + hex_byte(known) + ")");
+  }
+  if (ordering > kGabOrderingNestedDissection) {
+    return Status::Error(StatusCode::kUnsupported, "unsupported .gab ordering " + std::to_string(ordering) +
+                                                       " (this build knows 0: amd, 1: nd)");
   }
   if (bits < kGabMinBits || bits > kGabMaxBits) return header_error("bits " + std::to_string(bits) + " out of range");
   if (n < 1 || n > 0x7FFFFFFFu || faces < 1 || faces > 0x7FFFFFFFu / 3) {
@@ -86,6 +90,7 @@ Status read_gab_header(ByteReader* in, size_t file_size, GabHeader* h) {
   h->version = version;
   h->flags = flags;
   h->bits = bits;
+  h->ordering = ordering;
   h->num_vertices = static_cast<int32_t>(n);
   h->num_triangles = static_cast<int32_t>(faces);
   h->weight = weight;

@@ -143,7 +143,8 @@ std::vector<double> GridPositions::coefficients_of(const std::vector<int32_t>& a
 }
 
 Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const EncodeOptions& options,
-                      const GridPositions& grid, double scale, RelaxedReconstruction* rec, Selection* out) {
+                      const GridPositions& grid, double scale, OrderingPlan* ordering, RelaxedReconstruction* rec,
+                      Selection* out) {
   const int32_t n = mesh.num_vertices();
   *out = Selection();
   int32_t components = 0;
@@ -159,7 +160,9 @@ Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const EncodeOpti
   schedule.cuts.push_back(schedule.spread);
 
   rec->set_threads(options.threads);
+  ordering->apply(rec);
   GAB_RETURN_IF_ERROR(rec->init(graph, options.weight, schedule.order, grid.coefficients_of(schedule.order)));
+  ordering->remember(*rec);
   out->flops = rec->cholesky().symbolic().flops;
   const double fraction = options.batch_fraction >= 0 ? options.batch_fraction : default_batch_fraction(out->flops);
   const double growth = options.chunk_growth > 0 ? options.chunk_growth : default_chunk_growth(out->flops);

@@ -13,6 +13,7 @@
 #include "gab/mesh/mesh.h"
 #include "gab/mesh/relaxed_reconstruction.h"
 #include "gab/status.h"
+#include "pipeline/ordering_choice.h"
 
 namespace gab {
 
@@ -54,8 +55,10 @@ struct Selection {
 // rules or every vertex; `rec` is left holding them, in schedule order, at
 // their quantized positions. `scale`: 1 / the bounding-box diagonal. Cost: a
 // factorization, then per step a solve and an update or refactorization
-// (and a refinement try: 2 * refine_iterations + 1 solves).
+// (and a refinement try: 2 * refine_iterations + 1 solves). `ordering`
+// orders rec's factorization and remembers its permutation.
 Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const EncodeOptions& options,
-                      const GridPositions& grid, double scale, RelaxedReconstruction* rec, Selection* out);
+                      const GridPositions& grid, double scale, OrderingPlan* ordering, RelaxedReconstruction* rec,
+                      Selection* out);
 
 }  // namespace gab

@@ -21,6 +21,7 @@
 #include "detail/detail_chunk.h"
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/relaxed_reconstruction.h"
+#include "pipeline/ordering_choice.h"
 
 namespace gab {
 
@@ -271,6 +272,8 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
   AnchorChunkCoder coder(state.quantizer, &models);
   state.rec.set_threads(options.threads);
   state.rec.set_max_factor_entries(options.max_factor_entries);
+  stats->ordering = decoder_ordering(options.ordering, header.ordering);
+  OrderingPlan(stats->ordering).apply(&state.rec);
   if (header.levels()) {
     GAB_RETURN_IF_ERROR(decode_level_chunks(&in, &coder, &state));
   } else {

@@ -26,6 +26,7 @@
 #include "pipeline/anchor_selection.h"
 #include "pipeline/detail_search.h"
 #include "pipeline/encoder_tuning.h"
+#include "pipeline/ordering_choice.h"
 
 namespace gab {
 
@@ -124,7 +125,8 @@ ChunkLayout encode_selection_layout(const AnchorSchedule& schedule, const GridPo
 // less one factorization and one solve: levels - 1 solves and updates (or
 // refactorizations).
 Status encode_level_layout(const AnchorSchedule& schedule, const EdgeGraph& graph, double weight, double growth,
-                           int32_t threads, const GridPositions& grid, ChunkLayout* out) {
+                           int32_t threads, const OrderingPlan& ordering, const GridPositions& grid,
+                           ChunkLayout* out) {
   std::vector<int32_t> spread(schedule.order.begin(), schedule.order.begin() + schedule.spread);
   std::vector<int32_t> rest(schedule.order.begin() + schedule.spread, schedule.order.end());
   std::sort(spread.begin(), spread.end());
@@ -143,6 +145,7 @@ Status encode_level_layout(const AnchorSchedule& schedule, const EdgeGraph& grap
   LevelMembers members(order, rest, graph.num_vertices());
   RelaxedReconstruction levels;  // the decoder's reconstructions from level 2 on
   levels.set_threads(threads);
+  ordering.apply(&levels);
   std::vector<double> shape;
   std::vector<int32_t> before = spread, previous;  // before level 2: the spread set and level 1
   for (size_t k = 0; k < sizes.size(); ++k) {
@@ -187,18 +190,19 @@ struct DetailTargets {
 // With `detail` wanted, the anchors stop at options' rules and a detail
 // chunk over their shape meets `detail`'s targets.
 Status encode_on_grid(const Mesh& mesh, const EncodeOptions& options, const Box& box, const Quantizer& quantizer,
-                      int bits, const CodedConnectivity& coded, const DetailTargets& detail,
+                      int bits, const CodedConnectivity& coded, OrderingPlan* ordering, const DetailTargets& detail,
                       std::vector<uint8_t>* file, EncodeStats* stats) {
   *stats = EncodeStats();
   stats->num_vertices = mesh.num_vertices();
   stats->num_triangles = mesh.num_triangles();
   stats->bits = bits;
+  stats->ordering = ordering->choice();
   const GridPositions grid(mesh, quantizer);
   const EdgeGraph graph = build_edge_graph(mesh);
   RelaxedReconstruction rec;
   Selection selection;
-  GAB_RETURN_IF_ERROR(select_anchors(mesh, graph, options, grid, box.diagonal > 0 ? 1.0 / box.diagonal : 1.0, &rec,
-                                     &selection));
+  GAB_RETURN_IF_ERROR(select_anchors(mesh, graph, options, grid, box.diagonal > 0 ? 1.0 / box.diagonal : 1.0,
+                                     ordering, &rec, &selection));
   stats->curve = std::move(selection.curve);
 
   // The level layout unless the selection order codes smaller (it can on
@@ -209,8 +213,8 @@ Status encode_on_grid(const Mesh& mesh, const EncodeOptions& options, const Box&
   const bool try_levels = options.layout != FileLayout::kSelectionOrder;
   if (try_levels) {
     const double growth = options.chunk_growth > 0 ? options.chunk_growth : default_level_growth(selection.flops);
-    GAB_RETURN_IF_ERROR(encode_level_layout(selection.schedule, graph, options.weight, growth, options.threads, grid,
-                                            &in_levels));
+    GAB_RETURN_IF_ERROR(encode_level_layout(selection.schedule, graph, options.weight, growth, options.threads,
+                                            *ordering, grid, &in_levels));
   }
   const bool levels = try_levels && (options.layout == FileLayout::kLevels ||
                                      in_levels.bytes() <= in_selection_order.bytes());
@@ -234,6 +238,7 @@ Status encode_on_grid(const Mesh& mesh, const EncodeOptions& options, const Box&
 
   GabHeader header;
   header.bits = bits;
+  header.ordering = ordering_code(ordering->choice());
   for (int c = 0; c < 3; ++c) header.box_min[c] = quantizer.min[c];
   header.step = quantizer.step;
   if (detail.wanted()) {
@@ -285,12 +290,14 @@ Quantizer dense_grid(const Box& box, double target_rms_rel, int* bits) {
 
 // The anchors-only file (no detail chunk), with the dense regime's retry.
 Status encode_anchors_only(const Mesh& mesh, const EncodeOptions& options, const Box& box,
-                           const CodedConnectivity& coded, std::vector<uint8_t>* file, EncodeStats* stats) {
+                           const CodedConnectivity& coded, OrderingPlan* ordering, std::vector<uint8_t>* file,
+                           EncodeStats* stats) {
   const int bits = options.bits != 0 ? options.bits
                                      : default_bits(box.diagonal > 0 ? box.extent / box.diagonal : 1.0,
                                                     options.target_rms_rel, options.target_linf_rel);
   const Quantizer quantizer = Quantizer::for_box(box.lo, box.hi, bits);
-  GAB_RETURN_IF_ERROR(encode_on_grid(mesh, options, box, quantizer, bits, coded, DetailTargets(), file, stats));
+  GAB_RETURN_IF_ERROR(
+      encode_on_grid(mesh, options, box, quantizer, bits, coded, ordering, DetailTargets(), file, stats));
   // Dense regime: most vertices became anchors, so nearly every vertex pays
   // for the grid; a coarser one, with a few more anchors, may cost less.
   const bool dense = stats->anchors > kDenseAnchorFraction * mesh.num_vertices();
@@ -301,7 +308,8 @@ Status encode_anchors_only(const Mesh& mesh, const EncodeOptions& options, const
       std::vector<uint8_t> other;
       EncodeStats other_stats;
       GAB_RETURN_IF_ERROR(
-          encode_on_grid(mesh, options, box, coarse, coarse_bits, coded, DetailTargets(), &other, &other_stats));
+          encode_on_grid(mesh, options, box, coarse, coarse_bits, coded, ordering, DetailTargets(), &other,
+                         &other_stats));
       if (other_stats.target_met && other.size() < file->size()) {
         *file = std::move(other);
         *stats = std::move(other_stats);
@@ -314,8 +322,8 @@ Status encode_anchors_only(const Mesh& mesh, const EncodeOptions& options, const
 // A file whose anchors are `anchors` (on their own default grid unless
 // options fix q), a detail chunk meeting options' targets after them.
 Status encode_with_detail(const Mesh& mesh, const EncodeOptions& options, const Box& box,
-                          const CodedConnectivity& coded, const DetailAnchors& anchors, std::vector<uint8_t>* file,
-                          EncodeStats* stats) {
+                          const CodedConnectivity& coded, OrderingPlan* ordering, const DetailAnchors& anchors,
+                          std::vector<uint8_t>* file, EncodeStats* stats) {
   const int bits = options.bits != 0 ? options.bits
                    : anchors.bits != 0 ? anchors.bits
                                        : default_bits(box.extent / box.diagonal, anchors.rms_rel, 0);
@@ -339,7 +347,7 @@ Status encode_with_detail(const Mesh& mesh, const EncodeOptions& options, const 
   DetailTargets targets;
   targets.rms_rel = options.target_rms_rel;
   targets.linf_rel = options.target_linf_rel;
-  return encode_on_grid(mesh, anchor_options, box, quantizer, bits, coded, targets, file, stats);
+  return encode_on_grid(mesh, anchor_options, box, quantizer, bits, coded, ordering, targets, file, stats);
 }
 
 // Whether candidate b is better than a: meeting the targets first, then smaller.
@@ -356,9 +364,10 @@ Status encode_numbered(const Mesh& mesh, const EncodeOptions& options, const Cod
   const bool detail_possible = options.detail != DetailMode::kOff && box.diagonal > 0 && box.extent > 0 &&
                                (options.target_rms_rel > 0 || options.target_linf_rel > 0);
   const DetailPlan plan = detail_plan(options.target_rms_rel, options.target_linf_rel);
+  OrderingPlan ordering(encoder_ordering(options.ordering, mesh.num_vertices()));
   bool have = false;
   if (!detail_possible || (options.detail == DetailMode::kAuto && plan.try_anchors_only)) {
-    GAB_RETURN_IF_ERROR(encode_anchors_only(mesh, options, box, coded, file, stats));
+    GAB_RETURN_IF_ERROR(encode_anchors_only(mesh, options, box, coded, &ordering, file, stats));
     have = true;
   }
   if (!detail_possible) return Status::Ok();
@@ -371,7 +380,7 @@ Status encode_numbered(const Mesh& mesh, const EncodeOptions& options, const Cod
     if (options.bits != 0 && &anchors != &plan.anchors.front()) break;
     std::vector<uint8_t> other;
     EncodeStats other_stats;
-    GAB_RETURN_IF_ERROR(encode_with_detail(mesh, options, box, coded, anchors, &other, &other_stats));
+    GAB_RETURN_IF_ERROR(encode_with_detail(mesh, options, box, coded, &ordering, anchors, &other, &other_stats));
     if (!have || better(*stats, file->size(), other_stats, other.size())) {
       *file = std::move(other);
       *stats = std::move(other_stats);

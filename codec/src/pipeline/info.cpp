@@ -35,6 +35,8 @@ Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
   info->reordered = header.reordered();
   info->versioned_valence = header.versioned_valence();
   info->detail = header.detail();
+  info->ordering = header.ordering == kGabOrderingNestedDissection ? MatrixOrdering::kNestedDissection
+                                                                   : MatrixOrdering::kAmd;
   for (int c = 0; c < 3; ++c) info->box_min[c] = header.box_min[c];
   info->step = header.step;
   info->anchors = header.anchors;

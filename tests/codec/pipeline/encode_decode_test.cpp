@@ -2,6 +2,7 @@
 // stopping rules, geometry-only files, odd meshes, option errors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/gab_files.h"
@@ -82,6 +83,65 @@ TEST(EncodeDecode, FilesAndShapesDoNotDependOnTheThreadCount) {
       EXPECT_EQ(out.positions, first) << threads << " threads";
     }
   }
+}
+
+// The largest coordinate difference between two shapes of the same mesh.
+double max_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  EXPECT_EQ(a.size(), b.size());
+  double d = 0;
+  for (size_t i = 0; i < a.size() && i < b.size(); ++i) d = std::max(d, std::fabs(a[i] - b[i]));
+  return d;
+}
+
+TEST(EncodeDecode, TheFileRecordsItsOrderingAndAnyOrderingDecodesIt) {
+  // The ordering is a matter of speed (matrix_ordering.h): the file records
+  // the encoder's and the decoder follows it; told to order otherwise it
+  // decodes the same anchors and a shape equal up to rounding, and a detail
+  // layer's positions bit for bit.
+  const Mesh mesh = bumpy_torus(90, 45);
+  const double diagonal = bounding_box_diagonal(mesh);
+  for (MatrixOrdering ordering : {MatrixOrdering::kAmd, MatrixOrdering::kNestedDissection}) {
+    const MatrixOrdering other =
+        ordering == MatrixOrdering::kAmd ? MatrixOrdering::kNestedDissection : MatrixOrdering::kAmd;
+    EncodeOptions options;
+    options.target_rms_rel = 2e-3;
+    options.ordering = ordering;
+    EncodeStats es;
+    const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
+    EXPECT_EQ(es.ordering, ordering);
+    ASSERT_GE(file.size(), kGabHeaderBytes);
+    EXPECT_EQ(file[11], ordering == MatrixOrdering::kAmd ? kGabOrderingAmd : kGabOrderingNestedDissection);
+    GabFileInfo info;
+    ASSERT_TRUE(read_gab_info(file.data(), file.size(), &info).ok());
+    EXPECT_EQ(info.ordering, ordering);
+
+    DecodeStats ds;
+    const Mesh own = decode_or_die(file, DecodeOptions(), &ds);
+    EXPECT_EQ(ds.ordering, ordering);
+    EXPECT_NEAR(relative_rms(mesh, own), es.rms_rel, 1e-12) << matrix_ordering_name(ordering);
+    DecodeOptions decode;
+    decode.ordering = other;
+    DecodeStats ds_other;
+    const Mesh out = decode_or_die(file, decode, &ds_other);
+    EXPECT_EQ(ds_other.ordering, other);
+    EXPECT_EQ(ds_other.anchors, ds.anchors);
+    EXPECT_NE(out.positions, own.positions) << "the orderings should round differently";
+    EXPECT_LT(max_difference(out.positions, own.positions), 1e-11 * diagonal);
+
+    options.target_rms_rel = 1e-4;
+    options.detail = DetailMode::kOn;
+    const std::vector<uint8_t> detailed = encode_or_die(mesh, options, &es);
+    ASSERT_TRUE(es.detail);
+    EXPECT_EQ(decode_or_die(detailed, decode, &ds_other).positions,
+              decode_or_die(detailed, DecodeOptions(), &ds).positions);
+  }
+  // Without a choice, small meshes take AMD (encoder_ordering, ordering_choice.cpp).
+  EncodeOptions options;
+  options.max_anchors = 30;
+  EncodeStats es;
+  const std::vector<uint8_t> file = encode_or_die(bumpy_torus(30, 15), options, &es);
+  EXPECT_EQ(es.ordering, MatrixOrdering::kAmd);
+  EXPECT_EQ(file[11], kGabOrderingAmd);
 }
 
 TEST(EncodeDecode, EveryChunkPrefixIsTheEncodersShapeAtThatAnchorCount) {

@@ -220,16 +220,26 @@ TEST(FileSafety, HeaderErrorsNameTheProblem) {
   EXPECT_EQ(message(bad), "unsupported .gab version 9 (this build reads version 1)");
   // A newer writer's flag, with the header's checksum made whole again: a
   // well-formed file this build cannot read, not a corrupt one.
+  const auto with_header_crc = [](std::vector<uint8_t> f) {
+    const uint32_t crc = crc32(f.data(), kGabHeaderBytes - 4);
+    for (int b = 0; b < 4; ++b) f[kGabHeaderBytes - 4 + b] = static_cast<uint8_t>(crc >> (8 * b));
+    return f;
+  };
   bad = file;
   bad[9] |= 0x40;
-  const uint32_t crc = crc32(bad.data(), kGabHeaderBytes - 4);
-  for (int b = 0; b < 4; ++b) bad[kGabHeaderBytes - 4 + b] = static_cast<uint8_t>(crc >> (8 * b));
+  bad = with_header_crc(bad);
   const Status unknown_flag = decode_mesh(bad.data(), bad.size(), DecodeOptions(), &out, &ds);
   EXPECT_EQ(unknown_flag.code(), StatusCode::kUnsupported);
   char flags[8];
   std::snprintf(flags, sizeof flags, "0x%02x", bad[9]);
-  EXPECT_EQ(unknown_flag.message(),
-            "unsupported .gab flags " + std::string(flags) + " 0x00 (this build knows 0x3f 0x00)");
+  EXPECT_EQ(unknown_flag.message(), "unsupported .gab flags " + std::string(flags) + " (this build knows 0x3f)");
+  // A newer writer's ordering (header byte 11).
+  bad = file;
+  bad[11] = 2;
+  bad = with_header_crc(bad);
+  const Status unknown_ordering = decode_mesh(bad.data(), bad.size(), DecodeOptions(), &out, &ds);
+  EXPECT_EQ(unknown_ordering.code(), StatusCode::kUnsupported);
+  EXPECT_EQ(unknown_ordering.message(), "unsupported .gab ordering 2 (this build knows 0: amd, 1: nd)");
   bad = file;
   bad[8] = 9;
   EXPECT_EQ(decode_mesh(bad.data(), bad.size(), DecodeOptions(), &out, &ds).code(), StatusCode::kUnsupported);

@@ -6,7 +6,8 @@
 // a new flag adds seeds beside the old ones (bit 1: torus-refined; bit 2,
 // the level layout: torus-levels*; bit 3: torus-reordered; bit 4:
 // torus-*ordered-vK for each valence coder version K; bit 5, the detail
-// chunk: torus-detail*, each version of the chunk).
+// chunk: torus-detail*, each version of the chunk; header byte 11, the
+// ordering: torus-nd).
 #include <dirent.h>
 #include <gtest/gtest.h>
 
@@ -129,6 +130,33 @@ TEST(GoldenFiles, TheLatestValenceSeedsAreWhatTheEncoderWrites) {
   EXPECT_EQ(testing_util::encode_or_die(gab_fuzz::seed_torus(), options, &es), seed("torus-ordered-v2"));
   options.reorder = true;
   EXPECT_EQ(testing_util::encode_or_die(gab_fuzz::seed_torus(), options, &es), seed("torus-reordered-v2"));
+}
+
+TEST(GoldenFiles, NestedDissectionSeedDecodesWithEitherOrdering) {
+  // torus-nd: torus-ordered-v2's options with --ordering nd (header byte
+  // 11 = 1). The same anchors, hence the same chunks; the shape solved from
+  // them is the same up to rounding whichever ordering decodes it.
+  const Mesh torus = gab_fuzz::seed_torus();
+  const std::vector<uint8_t> golden = seed("torus-nd");
+  ASSERT_GE(golden.size(), kGabHeaderBytes);
+  EXPECT_EQ(golden[11], kGabOrderingNestedDissection);
+  const std::vector<uint8_t> amd = seed("torus-ordered-v2");
+  EXPECT_EQ(std::vector<uint8_t>(golden.begin() + kGabHeaderBytes, golden.end()),
+            std::vector<uint8_t>(amd.begin() + kGabHeaderBytes, amd.end()));
+  for (MatrixOrdering ordering : {MatrixOrdering::kAuto, MatrixOrdering::kAmd}) {
+    DecodeOptions options;
+    options.ordering = ordering;
+    Mesh out;
+    DecodeStats ds;
+    const Status status = decode_mesh(golden.data(), golden.size(), options, &out, &ds);
+    ASSERT_TRUE(status.ok()) << status.message();
+    EXPECT_EQ(ds.ordering,
+              ordering == MatrixOrdering::kAuto ? MatrixOrdering::kNestedDissection : MatrixOrdering::kAmd);
+    EXPECT_EQ(ds.anchors, 20);
+    EXPECT_EQ(ds.chunks, 4);
+    EXPECT_EQ(oriented_triangle_set(out.triangles), oriented_triangle_set(torus.triangles));
+    EXPECT_NEAR(testing_util::relative_rms(torus, out), 0.0225883, 5e-8);
+  }
 }
 
 // FNV-1a over the bytes of the coordinates: a fingerprint of a shape.

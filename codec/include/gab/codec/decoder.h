@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "gab/codec/matrix_ordering.h"
 #include "gab/mesh/mesh.h"
 #include "gab/status.h"
 
@@ -35,6 +36,9 @@ struct DecodeOptions {
   int64_t max_factor_entries = int64_t{3} << 30;
   // Threads for the factorizations; the shape is bit-identical for any count.
   int32_t threads = 1;
+  // The factorization's ordering (matrix_ordering.h); kAuto: the file's. Any other decodes the same anchors
+  // and a shape equal up to rounding.
+  MatrixOrdering ordering = MatrixOrdering::kAuto;
   // Called before each chunk is decoded (chunk index, chunks in the file).
   std::function<void(int32_t, int32_t)> progress;
 };
@@ -54,6 +58,7 @@ struct DecodeStats {
   double connectivity_s = 0;  // decoding the connectivity section
   double detail_s = 0;        // decoding the detail chunk (part of decode_s)
   int32_t refactorizations = 0;  // chunks added by refactoring rather than updates
+  MatrixOrdering ordering = MatrixOrdering::kAmd;  // the factorization's ordering (never kAuto)
 };
 
 // Decodes `data` into `mesh` (positions and triangles).
@@ -77,6 +82,7 @@ struct GabFileInfo {
   bool detail = false;              // the last chunk is the detail layer (flag bit 5; not counted below)
   size_t detail_bytes = 0;          // its framed size when present
   double detail_step = 0;           // its quantization step (in the mesh's units) when present
+  MatrixOrdering ordering = MatrixOrdering::kAmd;  // the encoder's factorizations' (header byte 11)
   bool truncated = false;
   size_t bytes = 0, connectivity_bytes = 0, geometry_bytes = 0;
   size_t order_bytes = 0;              // the vertex order block with its framing (0 without)

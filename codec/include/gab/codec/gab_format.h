@@ -10,7 +10,8 @@
 //   version    u8 (1), flags u8 (bit 0: geometry only; bit 1: refined;
 //              bit 2: levels; bit 3: reordered; bit 4: versioned valence;
 //              bit 5: detail),
-//              bits q u8, 0 u8
+//              bits q u8, ordering u8 (0: AMD, 1: nested dissection; see
+//              kGabOrderingAmd)
 //   n, faces   u32, u32   vertex and triangle counts
 //   weight     f64        anchor weight w of the relaxed basis
 //   box min    3 x f64    quantization grid origin
@@ -102,6 +103,12 @@ constexpr uint8_t kGabFlagVersionedValence = 16;
 // reconstruction and the positions decoded before it
 // (codec/src/detail/detail_chunk.h).
 constexpr uint8_t kGabFlagDetail = 32;
+// The fill-reducing ordering the encoder factored with (header byte 11,
+// once always 0). Decoding is correct with any ordering (the codec's
+// predictions are rounded through a guard, codec/src/anchors/quantizer.h;
+// gab/codec/matrix_ordering.h); the decoder uses the file's by default.
+constexpr uint8_t kGabOrderingAmd = 0;
+constexpr uint8_t kGabOrderingNestedDissection = 1;
 constexpr int kGabMinBits = 2;
 constexpr int kGabMaxBits = 24;
 constexpr size_t kGabHeaderBytes = 72;
@@ -111,6 +118,7 @@ struct GabHeader {
   uint8_t version = kGabVersion;
   uint8_t flags = 0;
   int bits = 12;
+  uint8_t ordering = kGabOrderingAmd;
   int32_t num_vertices = 0;
   int32_t num_triangles = 0;
   double weight = 1.0;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "gab/mesh/edge_graph.h"
@@ -20,7 +21,7 @@ class RelaxedReconstruction {
   // coefficients are `coefficients` (3 per anchor: x y z). Anchors must be
   // distinct vertices and every connected component needs one (otherwise
   // the system is singular: the error names a vertex of such a component).
-  // Cost: one AMD ordering, analysis and factorization.
+  // Cost: one ordering (set_ordering), analysis and factorization.
   Status init(const EdgeGraph& graph, double weight, const std::vector<int32_t>& anchors,
               const std::vector<double>& coefficients);
 
@@ -68,6 +69,22 @@ class RelaxedReconstruction {
   // call before init. The factor, hence every shape, is bit-identical for
   // any count (factor_schedule.h): an encoder and a decoder may differ.
   void set_threads(int32_t threads) { threads_ = threads; }
+  // The fill-reducing ordering of init's analysis (kAmd or
+  // kNestedDissection; default kAmd); call before init. Shapes agree with
+  // any other ordering's up to rounding only, which is all a codec with
+  // guarded rounding needs (quantizer.h): encoder and decoder may differ.
+  void set_ordering(Ordering ordering) {
+    ordering_ = ordering;
+    given_perm_.clear();
+  }
+  // Orders by `perm` (a permutation of the vertices): the pattern of
+  // L^T L + w^2 E^T E does not depend on the anchors, so a permutation an
+  // earlier analysis of the same connectivity computed (cholesky().symbolic()
+  // .perm) serves every later one and saves its ordering time.
+  void set_given_ordering(std::vector<int32_t> perm) {
+    ordering_ = Ordering::kGiven;
+    given_perm_ = std::move(perm);
+  }
   // A bound on the factor's stored entries, checked by init right after the
   // analysis, before the factor's storage is reserved or factored (see
   // AnalyzeOptions::max_factor_entries): over it, init fails with
@@ -90,6 +107,8 @@ class RelaxedReconstruction {
   int32_t n_ = 0;
   double weight_ = 0.0;
   int32_t threads_ = 1;
+  Ordering ordering_ = Ordering::kAmd;
+  std::vector<int32_t> given_perm_;  // for Ordering::kGiven
   int64_t max_factor_entries_ = INT64_MAX;
   Cholesky chol_;
   CscMatrix matrix_;  // lower triangle of L^T L + w^2 E^T E for the anchors so far

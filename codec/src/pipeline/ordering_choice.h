@@ -1,0 +1,41 @@
+// MatrixOrdering made concrete: the encoder's choice by the mesh's size, the
+// decoder's from the file (gab_format.h, header byte 11), and the encoder's
+// reuse of one permutation across its factorizations.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gab/codec/matrix_ordering.h"
+#include "gab/mesh/relaxed_reconstruction.h"
+
+namespace gab {
+
+// `asked` unless kAuto; for kAuto, by the vertex count (the measured
+// crossover is in ordering_choice.cpp). Never returns kAuto.
+MatrixOrdering encoder_ordering(MatrixOrdering asked, int32_t num_vertices);
+// `asked` unless kAuto; for kAuto the one the file's encoder used
+// (`file_code`, a kGabOrdering* value): the same factor, the same shapes.
+MatrixOrdering decoder_ordering(MatrixOrdering asked, uint8_t file_code);
+// The header's code of a concrete ordering.
+uint8_t ordering_code(MatrixOrdering ordering);
+
+// One encode's orderings: the choice, and the permutation the first
+// analysis computed, which every later factorization of the same
+// connectivity reuses (RelaxedReconstruction::set_given_ordering): the
+// encoder factors up to a dozen times per file.
+class OrderingPlan {
+ public:
+  explicit OrderingPlan(MatrixOrdering choice) : choice_(choice) {}
+  MatrixOrdering choice() const { return choice_; }
+  // Before rec's init: the remembered permutation, else the choice.
+  void apply(RelaxedReconstruction* rec) const;
+  // After rec's init: keeps its permutation (once).
+  void remember(const RelaxedReconstruction& rec);
+
+ private:
+  MatrixOrdering choice_;
+  std::vector<int32_t> perm_;
+};
+
+}  // namespace gab
