@@ -41,6 +41,9 @@ const std::vector<Command>& commands() {
       {"diff", run_diff, {"A B [--samples N] [--json]"},
        "distances between two meshes (.obj .off .ply): per vertex when the vertex counts\n"
        "match, and the symmetric surface distance (mean, RMS, Hausdorff) from N samples"},
+      {"subdivide", run_subdivide, {"IN -o OUT [--levels K]"},
+       "K levels (default 1) of 1:4 midpoint subdivision of a mesh, written to OUT (.obj .off .ply):\n"
+       "the same shape at 4^K times the triangles, for scale studies"},
   };
   return table;
 }

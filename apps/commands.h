@@ -14,6 +14,7 @@ namespace cli {
 int run_factor(int argc, char** argv);
 int run_study(int argc, char** argv);
 int run_diff(int argc, char** argv);
+int run_subdivide(int argc, char** argv);
 int run_compress(int argc, char** argv);
 int run_decompress(int argc, char** argv);
 int run_info(int argc, char** argv);

@@ -265,4 +265,21 @@ TEST(CliStudyTest, BadUsage) {
   EXPECT_EQ(r.exit_code, 1);
 }
 
+TEST(CliTest, SubdivideWritesTheFinerMesh) {
+  // The octahedron: 6 vertices, 12 edges, 8 triangles. One level adds a
+  // vertex per edge (18) and quadruples the triangles (32, with 48 edges);
+  // the second gives 18 + 48 = 66 vertices and 128 triangles.
+  const std::string in = write_scratch_file("octa-sub.off", kOctahedron);
+  const std::string out = write_scratch_file("octa-sub2.obj", "");
+  CommandResult r = run_gab("subdivide " + in + " -o " + out + " --levels 2");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("66 vertices, 128 triangles after 2 levels"), std::string::npos) << r.out;
+  r = run_gab("factor " + out + " --json");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"n\": 66,"), std::string::npos) << r.out;
+  r = run_gab("subdivide " + in + " -o " + out + " --levels 9");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--levels"), std::string::npos) << r.err;
+}
+
 }  // namespace

@@ -18,7 +18,7 @@ namespace {
 using gab_test::CommandResult;
 using gab_test::run_gab;
 
-const char* kCommands[] = {"compress", "decompress", "info", "demo", "factor", "study", "diff"};
+const char* kCommands[] = {"compress", "decompress", "info", "demo", "factor", "study", "diff", "subdivide"};
 
 // The usage a command prints after a bad option: "usage: gab NAME ..." to
 // the end of stderr.
