@@ -19,7 +19,7 @@ const std::vector<Command>& commands() {
        "the coder's traversal order, so per-vertex data kept outside the file no longer lines up.\n"
        "Below about 3e-4 the anchors stop early and a detail layer codes every vertex's residual;\n"
        "--detail auto keeps the smaller file, on/off force it (off may miss a target). --ordering:\n"
-       "the factorizations' (speed only; recorded in the file; auto: nested dissection from 20k vertices)"},
+       "the factorizations' (speed only; recorded in the file; auto: nested dissection from 100k vertices)"},
       {"decompress", run_decompress,
        {"-i IN.gab -o OUT [--anchors K] [--connectivity MESH] [--threads T] [--ordering auto|amd|nd]",
         "[--json]"},

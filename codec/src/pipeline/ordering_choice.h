@@ -11,8 +11,11 @@
 
 namespace gab {
 
-// `asked` unless kAuto; for kAuto, by the vertex count (the measured
-// crossover is in ordering_choice.cpp). Never returns kAuto.
+// kAuto's crossover (the measurements: ordering_choice.cpp).
+constexpr int32_t kNestedDissectionFrom = 100000;
+
+// `asked` unless kAuto; for kAuto, nested dissection from
+// kNestedDissectionFrom vertices, AMD below. Never returns kAuto.
 MatrixOrdering encoder_ordering(MatrixOrdering asked, int32_t num_vertices);
 // `asked` unless kAuto; for kAuto the one the file's encoder used
 // (`file_code`, a kGabOrdering* value): the same factor, the same shapes.
