@@ -199,10 +199,16 @@ Status encode_on_grid(const Mesh& mesh, const EncodeOptions& options, const Box&
   stats->ordering = ordering->choice();
   const GridPositions grid(mesh, quantizer);
   const EdgeGraph graph = build_edge_graph(mesh);
-  RelaxedReconstruction rec;
   Selection selection;
-  GAB_RETURN_IF_ERROR(select_anchors(mesh, graph, options, grid, box.diagonal > 0 ? 1.0 / box.diagonal : 1.0,
-                                     ordering, &rec, &selection));
+  int32_t anchors = 0;
+  {
+    // The selection's factor goes before the level layout's is made: at
+    // 2.4M vertices each is gigabytes.
+    RelaxedReconstruction rec;
+    GAB_RETURN_IF_ERROR(select_anchors(mesh, graph, options, grid, box.diagonal > 0 ? 1.0 / box.diagonal : 1.0,
+                                       ordering, &rec, &selection));
+    anchors = rec.num_anchors();
+  }
   stats->curve = std::move(selection.curve);
 
   // The level layout unless the selection order codes smaller (it can on
@@ -266,7 +272,7 @@ Status encode_on_grid(const Mesh& mesh, const EncodeOptions& options, const Box&
   header.num_vertices = mesh.num_vertices();
   header.num_triangles = mesh.num_triangles();
   header.weight = options.weight;
-  header.anchors = rec.num_anchors();
+  header.anchors = anchors;
   header.chunks = static_cast<int32_t>(layout.chunks.size());
   *file = assemble_file(header, mesh, coded, layout.chunks, stats);
   stats->reordered = options.reorder;
