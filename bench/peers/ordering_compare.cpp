@@ -1,0 +1,139 @@
+// Orderings side by side on the mesh matrices of DESIGN.md's benchmark rule
+// (L^T L + sum_a e_a e_a^T, k0 = 100): gab's AMD, gab's nested dissection
+// and CHOLMOD's METIS ordering (cholmod_metis, METIS_NodeND underneath), each
+// timed (median of 3 runs), then analyzed and factored by gab with that
+// permutation given, so nnz(L), flops and the entries an anchor update
+// touches (mean over the benchmark's 1000 updates) are counted the same way
+// for all three. Issue 19's quality, ordering-time and update targets. Built
+// only with -DGAB_BENCH_CHOLMOD=ON when SuiteSparse (with METIS) is there.
+//
+//   bench/peers/ordering_compare [mesh ...]   (default: ../shared/meshes' igea, horse, nefertiti, bunny)
+//
+// `gab subdivide data/meshes/bunny00.off -o b2.off --levels 2` writes the
+// 603k-vertex mesh of the issue (3 levels: 2.4M vertices, ~6 GB here).
+#include <cholmod.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "../bench_check.h"
+#include "gab/mesh/edge_graph.h"
+#include "gab/mesh/mesh_io.h"
+#include "gab/mesh/normal_matrix.h"
+#include "gab/sparse/amd.h"
+#include "gab/sparse/cholesky.h"
+#include "gab/sparse/nested_dissection.h"
+
+namespace {
+
+constexpr int kRepeat = 3;
+constexpr int kUpdates = 1000;
+
+double now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+// The benchmark update sequence (README, "The command-line tool", gab study).
+std::vector<int32_t> update_sequence(int32_t n, const std::vector<int32_t>& initial, int count) {
+  std::vector<char> anchored(n, 0);
+  for (int32_t a : initial) anchored[a] = 1;
+  std::vector<int32_t> seq;
+  for (uint64_t t = 1; static_cast<int>(seq.size()) < count && seq.size() + initial.size() < anchored.size(); ++t) {
+    const int32_t v = static_cast<int32_t>((t * 2654435761ull) % static_cast<uint64_t>(n));
+    if (!anchored[v]) {
+      anchored[v] = 1;
+      seq.push_back(v);
+    }
+  }
+  return seq;
+}
+
+// CHOLMOD's METIS permutation of the lower triangle `a`.
+std::vector<int32_t> metis_order(const gab::CscMatrix& a, cholmod_common* c) {
+  const int32_t n = a.ncols;
+  cholmod_sparse* ca = cholmod_allocate_sparse(n, n, a.nnz(), 1, 1, -1, CHOLMOD_PATTERN, c);
+  std::copy(a.colptr.begin(), a.colptr.end(), static_cast<int32_t*>(ca->p));
+  std::copy(a.rowind.begin(), a.rowind.end(), static_cast<int32_t*>(ca->i));
+  std::vector<int32_t> perm(n);
+  if (!cholmod_metis(ca, nullptr, 0, 1, perm.data(), c)) {
+    std::fprintf(stderr, "ordering_compare: cholmod_metis failed (status %d)\n", c->status);
+    std::exit(1);
+  }
+  cholmod_free_sparse(&ca, c);
+  return perm;
+}
+
+void compare(const std::string& path, cholmod_common* c) {
+  gab::Mesh mesh;
+  if (!gab::read_mesh(path, &mesh).ok()) {
+    std::fprintf(stderr, "skip %s\n", path.c_str());
+    return;
+  }
+  const gab::EdgeGraph g = gab::build_edge_graph(mesh);
+  const std::vector<int32_t> anchors = gab::benchmark_anchors(g, 100);
+  gab::CscMatrix a;
+  gab_bench::check(gab::assemble_normal_matrix(g, anchors, 1.0, &a), "ordering_compare: assemble_normal_matrix");
+  const int32_t n = a.ncols;
+  const std::vector<int32_t> seq = update_sequence(n, anchors, kUpdates);
+  const std::string name = path.substr(path.find_last_of('/') + 1);
+  for (const char* ordering : {"gab amd", "gab nd", "cholmod metis"}) {
+    std::vector<int32_t> perm;
+    std::vector<double> t;
+    for (int r = 0; r < kRepeat; ++r) {
+      const double t0 = now();
+      if (ordering[4] == 'a') {
+        gab_bench::check(gab::amd_order(a, &perm), "ordering_compare: amd_order");
+      } else if (ordering[4] == 'n') {
+        gab_bench::check(gab::nested_dissection_order(a, &perm), "ordering_compare: nested_dissection_order");
+      } else {
+        perm = metis_order(a, c);
+      }
+      t.push_back(now() - t0);
+    }
+    gab::AnalyzeOptions options;
+    options.ordering = gab::Ordering::kGiven;
+    options.given_perm = perm;
+    gab::Cholesky chol;
+    gab_bench::check(chol.analyze(a, options), "ordering_compare: analyze");
+    gab_bench::check(chol.factorize(a), "ordering_compare: factorize");
+    gab_bench::check(chol.prepare_updates(), "ordering_compare: prepare_updates");
+    double touched = 0;
+    for (int32_t v : seq) {
+      gab::UpdateStats st;
+      gab_bench::check(chol.add_anchor(v, 1.0, &st), "ordering_compare: add_anchor");
+      touched += static_cast<double>(st.touched);
+    }
+    touched /= std::max<size_t>(1, seq.size());
+    std::printf("| %s | %d | %s | %.3f | %.4g | %.4g | %.4g | %.2f |\n", name.c_str(), n, ordering, median(t),
+                static_cast<double>(chol.symbolic().nnz_L), chol.symbolic().flops, touched, touched / n);
+    std::fflush(stdout);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> inputs(argv + 1, argv + argc);
+  if (inputs.empty()) {
+    for (const char* m : {"igea", "horse", "nefertiti", "bunny"}) {
+      inputs.push_back(std::string(GAB_SHARED_MESHES) + "/" + m + ".off");
+    }
+  }
+  cholmod_common c;
+  cholmod_start(&c);
+  std::printf("| mesh | n | ordering | order s | nnz(L) | flops | touched per update | per n |\n");
+  std::printf("|---|---:|---|---:|---:|---:|---:|---:|\n");
+  for (const std::string& path : inputs) compare(path, &c);
+  cholmod_finish(&c);
+  std::printf("\nnnz(L), flops and touched entries by gab's analysis and updater on each permutation; "
+              "order s: the ordering alone, median of %d, single thread.\n", kRepeat);
+  return 0;
+}
