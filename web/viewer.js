@@ -6,6 +6,7 @@
 //   file=NAME.gab   the file to show (a URL relative to this page)
 //   level=L         stop at level L (the first L + 1 chunks), as if the
 //                   file ended there
+//   compact=1       a one-line panel (level, anchors, bytes), for pictures
 //
 // For scripts: once the last level is shown, document.title is
 // "gab: done n=<vertices> anchors=<anchors>"; on a bad file (decoder or HTTP
@@ -17,6 +18,8 @@
   const params = new URLSearchParams(window.location.search);
   const fileName = params.get('file');
   const stopLevel = params.has('level') ? parseInt(params.get('level'), 10) : -1;
+  const compact = params.get('compact') === '1';
+  if (compact) document.body.classList.add('compact');
 
   const canvas = document.getElementById('view');
   const statusEl = document.getElementById('status');
@@ -132,7 +135,7 @@
       'level ' + level + kind + ' of ' + (info.chunksInFile - 1) +
       ' · anchors ' + info.anchors + ' / ' + info.anchorsInFile +
       ' · ' + kb(size) + (total ? ' / ' + kb(total) : '') +
-      ' · n = ' + info.n + ', ' + info.t + ' triangles · decoded in ' + ms + ' ms';
+      (compact ? '' : ' · n = ' + info.n + ', ' + info.t + ' triangles · decoded in ' + ms + ' ms');
     const item = document.createElement('li');
     item.className = 'level';
     item.dataset.level = String(level);
