@@ -12,7 +12,7 @@ Checks, each by the title the page sets (web/viewer.js) and its level list:
     missing file end at "gab: error: ..." with the decoder's (or HTTP's) message.
 
 Exit 0 on success, 1 on a failure, 77 (ctest: skipped) when emscripten or
-Chromium is missing.
+Chromium is missing, unless GAB_WEB_TEST_REQUIRED=1 (CI): then 1.
 
   viewer_test.py --gab build/apps/gab --source . --work build/web-test [--mesh MESH]
 """
@@ -242,13 +242,15 @@ def main():
 
     chromium = find_chromium()
     missing = [tool for tool, path in (("emcc", shutil.which("emcc")), ("chromium", chromium)) if not path]
+    required = os.environ.get("GAB_WEB_TEST_REQUIRED") == "1"
     if missing:
-        log("SKIPPED: %s not installed (apt-get install emscripten chromium)" % " and ".join(missing))
-        return SKIP
+        log("%s: %s not installed (apt-get install emscripten chromium)" %
+            ("FAIL" if required else "SKIPPED", " and ".join(missing)))
+        return 1 if required else SKIP
     mesh = args.mesh or os.path.join(args.source, "data", "meshes", "camel.off")
     if not os.path.isfile(mesh):
-        log("SKIPPED: no mesh at %s (scripts/setup-and-run.sh unpacks it)" % mesh)
-        return SKIP
+        log("%s: no mesh at %s (scripts/setup-and-run.sh unpacks it)" % ("FAIL" if required else "SKIPPED", mesh))
+        return 1 if required else SKIP
 
     work = os.path.abspath(args.work)
     site = os.path.join(work, "site")
