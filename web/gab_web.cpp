@@ -18,7 +18,6 @@
 // return code plus gab_web_message().
 #include <cstddef>
 #include <cstdint>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -73,7 +72,8 @@ bool skip_frame(gab::ByteReader* in) {
 }  // namespace
 
 // A buffer of at least `capacity` bytes holding the bytes given so far
-// (their contents kept when it grows); null when memory is short. O(capacity).
+// (their contents kept when it grows). Memory too short for it aborts the
+// module (no exceptions in this build), which the page reports. O(capacity).
 GAB_WEB_EXPORT uint8_t* gab_web_buffer(size_t capacity) {
   std::vector<uint8_t>& input = state().input;
   if (capacity > input.size()) input.resize(capacity);

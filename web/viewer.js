@@ -34,6 +34,7 @@
   let total = 0;           // Content-Length (0: unknown)
   let streamDone = false;
   let decodedChunks = 0;   // complete chunks of the level on screen
+  let shown = null;        // what the decoder said of it
   let stepPending = false;
   let finished = false;    // done or failed: nothing more happens
 
@@ -53,7 +54,7 @@
     const need = received + bytes.length;
     const capacity = Math.max(need, total, 2 * received);
     const ptr = gab._gab_web_buffer(capacity);
-    if (ptr === 0) throw new Error('out of memory for ' + need + ' bytes');
+    if (!ptr) throw new Error('out of memory for ' + need + ' bytes');
     gab.HEAPU8.set(bytes, ptr + received);  // HEAPU8 afresh: the memory may have grown
     received = need;
   }
@@ -77,23 +78,44 @@
       last = true;
     }
     if (frames < 0) frames = 0;
-    if (frames > decodedChunks || (last && frames === decodedChunks)) {
+    if (frames > decodedChunks || (last && shown === null)) {
       // Whole chunks only; the decoder checks every checksum.
       const size = frames > 0 ? gab._gab_web_chunk_end(frames - 1) : received;
-      decodeAndShow(size, last);
+      if (!decodeAndShow(size)) return;
+    }
+    if (shown && (last || isComplete(shown))) conclude(shown);
+  }
+
+  function isComplete(info) {
+    return info.chunks === info.chunksInFile && info.anchors === info.anchorsInFile;
+  }
+
+  // The last level is on screen: done, or the file ended early.
+  function conclude(info) {
+    if (isComplete(info) || stopLevel >= 0) {
+      finished = true;
+      document.title = 'gab: done n=' + info.n + ' anchors=' + info.anchors;
+    } else {
+      fail('the file ends inside chunk ' + info.chunks + ' of ' + info.chunksInFile +
+           ' (showing the first ' + info.chunks + ')');
     }
   }
 
-  function decodeAndShow(size, last) {
+  // Decodes the first `size` bytes and shows the shape; false on an error.
+  function decodeAndShow(size) {
     const t0 = performance.now();
     let rc;
     try {
       rc = gab._gab_web_decode(size, -1);
     } catch (e) {
-      return fail('the decoder stopped: ' + e);
+      fail('the decoder stopped: ' + e);
+      return false;
     }
     const decodeMs = performance.now() - t0;
-    if (rc !== 0) return fail(gab.UTF8ToString(gab._gab_web_message()));
+    if (rc !== 0) {
+      fail(gab.UTF8ToString(gab._gab_web_message()));
+      return false;
+    }
     const info = {
       n: gab._gab_web_vertices(),
       t: gab._gab_web_triangles(),
@@ -105,24 +127,14 @@
       detail: gab._gab_web_detail() !== 0,
       decodeMs: decodeMs,
     };
-    if (info.chunks > decodedChunks || decodedChunks === 0) {
-      decodedChunks = info.chunks;
-      const n = info.n;
-      const positions = new Float32Array(gab.HEAPF32.buffer, gab._gab_web_positions(), 3 * n).slice();
-      const indices = new Uint32Array(gab.HEAPU32.buffer, gab._gab_web_indices(), 3 * info.t).slice();
-      uploadMesh(positions, indices);
-      report(info, size);
-      draw();
-    }
-    if (!last) return;
-    const complete = info.chunks === info.chunksInFile && info.anchors === info.anchorsInFile;
-    if (complete || stopLevel >= 0) {
-      finished = true;
-      document.title = 'gab: done n=' + info.n + ' anchors=' + info.anchors;
-    } else {
-      fail('the file ends inside chunk ' + info.chunks + ' of ' + info.chunksInFile +
-           ' (showing the first ' + info.chunks + ')');
-    }
+    decodedChunks = info.chunks;
+    shown = info;
+    const positions = new Float32Array(gab.HEAPF32.buffer, gab._gab_web_positions(), 3 * info.n).slice();
+    const indices = new Uint32Array(gab.HEAPU32.buffer, gab._gab_web_indices(), 3 * info.t).slice();
+    uploadMesh(positions, indices);
+    report(info, size);
+    draw();
+    return true;
   }
 
   function report(info, size) {
