@@ -19,13 +19,10 @@ const char* matrix_ordering_name(MatrixOrdering ordering) {
 MatrixOrdering encoder_ordering(MatrixOrdering asked, int32_t num_vertices) {
   if (asked != MatrixOrdering::kAuto) return asked;
   // Where nested dissection's cheaper factor and shorter update paths pay
-  // for its ordering time (about 3x AMD's, sparse/src/nested_dissection_graph.h),
-  // measured at 1e-3 on one thread (CPU seconds, encode / decode, AMD -> ND;
-  // bench/TUNING.md, "Ordering"): igea (134k
-  // vertices) 6.10 -> 3.96 / 1.37 -> 1.26; horse and bunny (48k, 35k)
-  // encode 18% faster but decode 5-7% slower, nefertiti and feline (50k,
-  // 49k) even, max-planck (25k) 15% slower both ways. The file is decoded
-  // more often than encoded, so ND starts where decoding gains too.
+  // for its ordering time (about 3x AMD's): below igea's 134k vertices the
+  // codec's times under either ordering were within the runs' noise, igea
+  // encoded 19-35% faster and decoded as fast, and from 600k vertices the
+  // factor is 2-3x cheaper and a third smaller (bench/TUNING.md, "Ordering").
   return num_vertices >= kNestedDissectionFrom ? MatrixOrdering::kNestedDissection : MatrixOrdering::kAmd;
 }
 
