@@ -44,6 +44,7 @@ const std::vector<Command>& commands() {
       {"subdivide", run_subdivide, {"IN -o OUT [--levels K]"},
        "K levels (default 1) of 1:4 midpoint subdivision of a mesh, written to OUT (.obj .off .ply):\n"
        "the same shape at 4^K times the triangles, for scale studies"},
+      {"version", run_version, {""}, "print the version (also gab --version): the library's gab_version()"},
   };
   return table;
 }

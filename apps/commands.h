@@ -19,6 +19,7 @@ int run_compress(int argc, char** argv);
 int run_decompress(int argc, char** argv);
 int run_info(int argc, char** argv);
 int run_demo(int argc, char** argv);
+int run_version(int argc, char** argv);
 
 struct Command {
   const char* name;

@@ -52,6 +52,7 @@ int main(int argc, char** argv) {
     std::fputs(help_text().c_str(), stdout);
     return gab::cli::kExitOk;
   }
+  if (!std::strcmp(command, "--version")) command = "version";
   if (const gab::cli::Command* c = gab::cli::find_command(command)) return c->run(argc - 2, argv + 2);
   std::fprintf(stderr, "gab: unknown command '%s' (try 'gab help')\n", command);
   return gab::cli::kExitUsage;

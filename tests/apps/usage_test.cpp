@@ -18,7 +18,8 @@ namespace {
 using gab_test::CommandResult;
 using gab_test::run_gab;
 
-const char* kCommands[] = {"compress", "decompress", "info", "demo", "factor", "study", "diff", "subdivide"};
+const char* kCommands[] = {"compress", "decompress", "info", "demo", "factor", "study", "diff", "subdivide",
+                           "version"};
 
 // The usage a command prints after a bad option: "usage: gab NAME ..." to
 // the end of stderr.

@@ -1,0 +1,149 @@
+/* gab's C API: mesh compression with geometry-aware bases and the sparse
+   Cholesky engine behind it, for C99 and anything that calls C.
+
+   Contract, for every function below:
+   - It returns GAB_OK (0) or one of the GAB_E_* codes; the codes keep their
+     values across versions. Functions taking `message, message_size` write a
+     one-line message there on failure ("" on success), truncated to fit and
+     always NUL-terminated; message may be NULL (then message_size is ignored).
+   - Nothing is thrown across it and nothing aborts: bad arguments (NULL
+     pointers, negative counts, indices out of range) are reported, and so is
+     memory that cannot be had.
+   - Memory the library returns (*out, *positions, *triangles) is malloc'd and
+     released with gab_free; on failure the out pointers are set to NULL / 0.
+   - Calls on different handles and different buffers may run in several
+     threads at once; one handle is used by one thread at a time.
+   - Indices are 0-based int32 (counts below 2^31); coordinates are doubles,
+     3 per vertex (x0 y0 z0 x1 ...); triangles 3 int32 vertex indices each.
+   - Decoding is safe on untrusted bytes: a malformed, corrupted or forged
+     file is an error (GAB_E_PARSE, GAB_E_UNSUPPORTED, GAB_E_RESOURCE_EXHAUSTED),
+     never a read outside `data`.
+   The C++ API (gab/codec/encoder.h, gab/sparse/cholesky.h, ...) is what this
+   wraps; see README.md, "The C API". */
+#ifndef GAB_GAB_H
+#define GAB_GAB_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "gab/version.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- Error codes ---------------------------------------------------------- */
+
+#define GAB_OK 0
+#define GAB_E_INVALID_ARGUMENT 1      /* an argument breaks the function's contract */
+#define GAB_E_IO 2                    /* a file could not be opened or read */
+#define GAB_E_PARSE 3                 /* malformed, corrupted or forged bytes */
+#define GAB_E_NOT_POSITIVE_DEFINITE 4 /* Cholesky met a non-positive pivot (message names the column) */
+#define GAB_E_OVERFLOW 5              /* a count exceeds the int32 index limit */
+#define GAB_E_OUT_OF_MEMORY 6         /* memory could not be had */
+#define GAB_E_RESOURCE_EXHAUSTED 7    /* the work would exceed a limit of the decoder */
+#define GAB_E_UNSUPPORTED 8           /* well-formed input of a newer format, or options this library does not know */
+#define GAB_E_STATE 9                 /* a call out of order (a solve before a factorization) */
+#define GAB_E_INTERNAL 10             /* a failure that is a bug in gab: please report the message */
+
+/* The name of an error code ("GAB_E_PARSE"), "GAB_OK", or "GAB_E_UNKNOWN". */
+const char* gab_error_name(int code);
+
+/* ---- Library ------------------------------------------------------------- */
+
+/* The library's version, "MAJOR.MINOR.PATCH" (GAB_VERSION_STRING of the build). */
+const char* gab_version(void);
+/* Releases memory the library returned; NULL is fine. */
+void gab_free(void* p);
+
+/* ---- Meshes ---------------------------------------------------------------- */
+
+/* Reads an .obj, .off or .ply file (format by extension, content checked):
+   *positions gets 3 n doubles, *triangles 3 t int32 (polygons fan-triangulated).
+   O(file size). */
+int gab_read_mesh(const char* path, double** positions, int32_t* n, int32_t** triangles, int32_t* t,
+                  char* message, size_t message_size);
+
+/* ---- Compression ------------------------------------------------------------ */
+
+/* The detail layer (gab_compress_options.detail). */
+#define GAB_DETAIL_AUTO 0 /* with an error target: the smaller of the files with and without it */
+#define GAB_DETAIL_ON 1   /* with an error target: always */
+#define GAB_DETAIL_OFF 2  /* never: the anchors alone (a target may be missed) */
+
+/* Options of gab_compress_ex. ABI-stable: `size` says how much of the struct
+   the caller knows; later versions only append fields, and a field beyond
+   `size` takes its default. Fill it with gab_compress_options_init, then set
+   fields. Stopping rules (any combination; with none of them, target_rms_rel
+   = 1e-3): max_anchors, target_rms_rel, target_linf_rel. */
+typedef struct gab_compress_options {
+  size_t size;            /* sizeof(gab_compress_options) as the caller compiled it */
+  double target_rms_rel;  /* relative vertex RMS over the bounding-box diagonal (CLI --error); 0: none */
+  double target_linf_rel; /* relative max vertex error (--linf); 0: none */
+  double weight;          /* anchor weight w of the relaxed basis, > 0 (default 100) */
+  int32_t max_anchors;    /* anchors in the file (--anchors); 0: no count limit */
+  int32_t bits;           /* q, bits per coordinate, 2..24 (--bits); 0: chosen from the target */
+  int32_t reorder;        /* nonzero: number the decoded mesh in the coder's order, smaller file (--reorder) */
+  int32_t threads;        /* threads for the factorizations (default 1; 0: every core); same file for any count */
+  int32_t detail;         /* GAB_DETAIL_AUTO (default), GAB_DETAIL_ON or GAB_DETAIL_OFF */
+  int32_t refine;         /* nonzero: append the least-squares refinement chunk (--refine) */
+} gab_compress_options;
+
+/* Sets the defaults: options->size = min(size, sizeof(gab_compress_options)),
+   every known field within `size` to its default, the rest of `size` bytes
+   to zero. Call as gab_compress_options_init(&o, sizeof o). */
+void gab_compress_options_init(gab_compress_options* options, size_t size);
+
+/* positions: 3n doubles (x0 y0 z0 x1 ...), triangles: 3t int32. target_rms_rel:
+   relative vertex RMS target (as --error); *out receives a malloc'd .gab image.
+   The decoded mesh keeps the vertex numbering; the triangles come back as
+   the same set of oriented triangles, in the coder's order. Cost: about the
+   CLI's `gab compress` (factorizations and greedy updates). */
+int gab_compress(const double* positions, int32_t n, const int32_t* triangles, int32_t t,
+                 double target_rms_rel, unsigned char** out, size_t* out_size,
+                 char* message, size_t message_size);
+/* gab_compress with options (NULL: the defaults). An options struct larger
+   than this library knows is accepted when its unknown bytes are zero, else
+   GAB_E_UNSUPPORTED. */
+int gab_compress_ex(const double* positions, int32_t n, const int32_t* triangles, int32_t t,
+                    const gab_compress_options* options, unsigned char** out, size_t* out_size,
+                    char* message, size_t message_size);
+
+/* max_anchors < 0: the whole file, else the first max_anchors anchors (a
+   coarser level). A file cut short decodes to its complete chunks. */
+int gab_decompress(const unsigned char* data, size_t size, int32_t max_anchors,
+                   double** positions, int32_t* n, int32_t** triangles, int32_t* t,
+                   char* message, size_t message_size);
+
+/* ---- Sparse Cholesky -------------------------------------------------------- */
+
+typedef struct gab_cholesky gab_cholesky;
+
+/* pattern of the lower triangle of a symmetric positive definite n x n matrix, CSC, 0-based:
+   ordering and symbolic analysis (values may be NULL); factorize then takes the values.
+   colptr: n + 1 entries from 0, nondecreasing; rowind: colptr[n] entries, in
+   each column strictly increasing, all >= the column (lower triangle), the
+   diagonal present. When values is not NULL the matrix is factorized too.
+   The pattern is copied: the caller's arrays may go. Cost: AMD ordering and
+   symbolic analysis, O(nnz(L)) memory reserved for the factor. */
+int gab_cholesky_create(int32_t n, const int32_t* colptr, const int32_t* rowind,
+                        const double* values, gab_cholesky** out, char* message, size_t message_size);
+/* Numeric factorization: values in the pattern's order (colptr[n] finite
+   doubles). Discards any earlier updates. */
+int gab_cholesky_factorize(gab_cholesky* c, const double* values, char* message, size_t message_size);
+/* b: n x nrhs, column-major, in place. Needs a factorization. */
+int gab_cholesky_solve(gab_cholesky* c, double* b, int32_t nrhs);
+/* A + w^2 e_j e_j^T, in place: Givens rotations along the elimination-tree
+   path of j, no change of structure. Needs a factorization. */
+int gab_cholesky_add_anchor(gab_cholesky* c, int32_t j, double w);
+/* The message of the last call on c (solve, add_anchor, factorize): "" when
+   it succeeded. Valid until the next call on c. */
+const char* gab_cholesky_message(const gab_cholesky* c);
+/* Releases c; NULL is fine. */
+void gab_cholesky_destroy(gab_cholesky* c);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* GAB_GAB_H */

@@ -1,0 +1,68 @@
+// What every C entry point does at the boundary (gab.h's contract): map a
+// gab::Status to a stable GAB_E_* code, write the caller's message buffer,
+// catch every exception, and move arrays between C and gab's types.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <new>
+#include <string>
+#include <vector>
+
+#include "gab/gab.h"
+#include "gab/mesh/mesh.h"
+#include "gab/status.h"
+
+namespace gab {
+namespace capi {
+
+// The GAB_E_* code of a status code (GAB_OK for kOk).
+int error_code(StatusCode code);
+
+// Copies `text` into the caller's buffer: truncated to size - 1 bytes and
+// NUL-terminated; nothing when message is NULL or size is 0.
+void write_message(const std::string& text, char* message, size_t size);
+
+// kInvalidArgument with `what` unless `ok`: the door's argument checks.
+Status require(bool ok, const std::string& what);
+
+// Writes "FUNCTION: message" to the caller's buffer ("" when ok) and
+// returns the status's GAB_E_* code.
+int report(const char* function, const Status& status, char* message, size_t size);
+
+// Runs `body` (returning a Status) and reports its outcome as gab.h
+// promises: the code, and "FUNCTION: message" in the caller's buffer (""
+// on success). No exception leaves: std::bad_alloc is GAB_E_OUT_OF_MEMORY,
+// anything else GAB_E_INTERNAL naming what was thrown.
+template <class Body>
+int guarded(const char* function, char* message, size_t size, Body&& body) {
+  try {
+    return report(function, body(), message, size);
+  } catch (const std::bad_alloc&) {
+    return report(function, Status::Error(StatusCode::kOutOfMemory, "out of memory"), message, size);
+  } catch (const std::exception& e) {
+    write_message(std::string(function) + ": internal error: " + e.what(), message, size);
+  } catch (...) {
+    write_message(std::string(function) + ": internal error: unknown exception", message, size);
+  }
+  return GAB_E_INTERNAL;
+}
+
+// A mesh from the caller's arrays (3n doubles, 3t indices), checked as
+// every mesh reader's output is (validate_mesh): counts, NULL pointers,
+// finite coordinates, indices in range. O(n + t).
+Status import_mesh(const double* positions, int32_t n, const int32_t* triangles, int32_t t, Mesh* mesh);
+
+// Sets the output arrays of a function returning a mesh to NULL / 0, and
+// fails when one of the four pointers is NULL.
+Status clear_mesh_outputs(double** positions, int32_t* n, int32_t** triangles, int32_t* t);
+
+// The mesh into malloc'd arrays the caller frees with gab_free.
+Status export_mesh(const Mesh& mesh, double** positions, int32_t* n, int32_t** triangles, int32_t* t);
+
+// Bytes into a malloc'd array the caller frees with gab_free.
+Status export_bytes(const std::vector<uint8_t>& bytes, unsigned char** out, size_t* out_size);
+
+}  // namespace capi
+}  // namespace gab

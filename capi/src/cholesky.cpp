@@ -1,0 +1,130 @@
+// gab_cholesky_*: the engine's Cholesky (gab/sparse/cholesky.h) behind the C
+// door. The handle keeps its own copy of the pattern, the values of the last
+// factorization, and the message of its last call (solve and add_anchor have
+// no message buffer in their signature).
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "boundary.h"
+#include "gab/sparse/cholesky.h"
+
+struct gab_cholesky {
+  gab::CscMatrix lower;  // the pattern, and the values of the last factorize
+  gab::Cholesky chol;
+  std::string message;  // of the last call: "" when it succeeded
+};
+
+namespace gab {
+namespace capi {
+
+namespace {
+
+// The caller's pattern, checked: colptr from 0 and nondecreasing (read
+// before rowind, whose length it gives), rows in range and strictly
+// increasing (check_csc), the first row of every column its diagonal (so
+// nothing above it, and the diagonal a positive definite matrix needs).
+Status import_pattern(int32_t n, const int32_t* colptr, const int32_t* rowind, CscMatrix* lower) {
+  GAB_RETURN_IF_ERROR(require(n > 0, "n = " + std::to_string(n) + ": must be positive"));
+  GAB_RETURN_IF_ERROR(require(colptr != nullptr, "colptr is NULL"));
+  GAB_RETURN_IF_ERROR(require(colptr[0] == 0, "colptr[0] = " + std::to_string(colptr[0]) + ": must be 0"));
+  for (int32_t j = 0; j < n; ++j) {
+    GAB_RETURN_IF_ERROR(require(colptr[j + 1] >= colptr[j], "colptr decreases at column " + std::to_string(j)));
+  }
+  GAB_RETURN_IF_ERROR(require(rowind != nullptr, "rowind is NULL"));
+  lower->nrows = lower->ncols = n;
+  lower->colptr.assign(colptr, colptr + n + 1);
+  lower->rowind.assign(rowind, rowind + colptr[n]);
+  lower->values.clear();
+  GAB_RETURN_IF_ERROR(check_csc(*lower));
+  for (int32_t j = 0; j < n; ++j) {
+    const int32_t first = colptr[j] < colptr[j + 1] ? rowind[colptr[j]] : n;
+    GAB_RETURN_IF_ERROR(require(first >= j, "column " + std::to_string(j) + ": row " + std::to_string(first) +
+                                                " is above the diagonal (give the lower triangle)"));
+    GAB_RETURN_IF_ERROR(require(first == j, "column " + std::to_string(j) + " has no diagonal entry"));
+  }
+  return Status::Ok();
+}
+
+Status factorize(gab_cholesky* c, const double* values) {
+  GAB_RETURN_IF_ERROR(require(values != nullptr, "values is NULL"));
+  const size_t nnz = c->lower.rowind.size();
+  for (size_t k = 0; k < nnz; ++k) {
+    GAB_RETURN_IF_ERROR(require(std::isfinite(values[k]), "values[" + std::to_string(k) + "] is not finite"));
+  }
+  c->lower.values.assign(values, values + nnz);
+  return c->chol.factorize(c->lower);
+}
+
+// Runs a call on the handle and keeps its message there (solve and
+// add_anchor have no buffer of their own; factorize has both). Solves and
+// updates need a factorization: without one, GAB_E_STATE.
+template <class Body>
+int on_handle(gab_cholesky* c, const char* function, bool needs_factor, char* message, size_t size, Body&& body) {
+  if (c == nullptr) {
+    write_message(std::string(function) + ": c is NULL", message, size);
+    return GAB_E_INVALID_ARGUMENT;
+  }
+  char kept[1024];
+  int code;
+  if (needs_factor && !c->chol.factorized()) {
+    code = GAB_E_STATE;
+    write_message(std::string(function) + ": no factorization: call gab_cholesky_factorize first (or it failed)",
+                  kept, sizeof kept);
+  } else {
+    code = guarded(function, kept, sizeof kept, body);
+  }
+  c->message = kept;
+  write_message(c->message, message, size);
+  return code;
+}
+
+}  // namespace
+
+}  // namespace capi
+}  // namespace gab
+
+extern "C" int gab_cholesky_create(int32_t n, const int32_t* colptr, const int32_t* rowind, const double* values,
+                                   gab_cholesky** out, char* message, size_t message_size) {
+  using namespace gab;
+  return capi::guarded("gab_cholesky_create", message, message_size, [&]() -> Status {
+    if (out != nullptr) *out = nullptr;
+    GAB_RETURN_IF_ERROR(capi::require(out != nullptr, "out is NULL"));
+    std::unique_ptr<gab_cholesky> c(new gab_cholesky);
+    GAB_RETURN_IF_ERROR(capi::import_pattern(n, colptr, rowind, &c->lower));
+    GAB_RETURN_IF_ERROR(c->chol.analyze(c->lower));
+    if (values != nullptr) GAB_RETURN_IF_ERROR(capi::factorize(c.get(), values));
+    *out = c.release();
+    return Status::Ok();
+  });
+}
+
+extern "C" int gab_cholesky_factorize(gab_cholesky* c, const double* values, char* message, size_t message_size) {
+  return gab::capi::on_handle(c, "gab_cholesky_factorize", false, message, message_size,
+                              [&]() { return gab::capi::factorize(c, values); });
+}
+
+extern "C" int gab_cholesky_solve(gab_cholesky* c, double* b, int32_t nrhs) {
+  return gab::capi::on_handle(c, "gab_cholesky_solve", true, nullptr, 0, [&]() -> gab::Status {
+    GAB_RETURN_IF_ERROR(gab::capi::require(nrhs >= 0, "nrhs = " + std::to_string(nrhs) + ": must not be negative"));
+    if (nrhs == 0) return gab::Status::Ok();
+    GAB_RETURN_IF_ERROR(gab::capi::require(b != nullptr, "b is NULL"));
+    return c->chol.solve(b, nrhs, c->lower.nrows);
+  });
+}
+
+extern "C" int gab_cholesky_add_anchor(gab_cholesky* c, int32_t j, double w) {
+  return gab::capi::on_handle(c, "gab_cholesky_add_anchor", true, nullptr, 0, [&]() -> gab::Status {
+    const int32_t n = c->lower.nrows;
+    GAB_RETURN_IF_ERROR(gab::capi::require(j >= 0 && j < n, "j = " + std::to_string(j) + " is out of range [0, " +
+                                                                 std::to_string(n) + ")"));
+    GAB_RETURN_IF_ERROR(gab::capi::require(std::isfinite(w), "w is not finite"));
+    return c->chol.add_anchor(j, w);
+  });
+}
+
+extern "C" const char* gab_cholesky_message(const gab_cholesky* c) {
+  return c == nullptr ? "gab_cholesky_message: c is NULL" : c->message.c_str();
+}
+
+extern "C" void gab_cholesky_destroy(gab_cholesky* c) { delete c; }

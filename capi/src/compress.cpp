@@ -1,0 +1,129 @@
+// gab_compress, gab_compress_ex, gab_compress_options_init: the encoder
+// (gab/codec/encoder.h) behind the C door.
+#include <cstddef>
+#include <cstring>
+#include <thread>
+
+#include "boundary.h"
+#include "gab/codec/encoder.h"
+#include "gab/sparse/factor_schedule.h"
+
+namespace gab {
+namespace capi {
+
+namespace {
+
+constexpr double kDefaultError = 1e-3;  // as the CLI's compress without a stopping rule
+
+// Copies one field of the caller's struct when the caller's size covers it.
+template <class T>
+void take(const gab_compress_options* in, size_t offset, T* field) {
+  if (offset + sizeof(T) <= in->size) std::memcpy(field, reinterpret_cast<const char*>(in) + offset, sizeof(T));
+}
+
+// The caller's options (NULL: the defaults) as the encoder's. Fields beyond
+// in->size keep their defaults; bytes beyond what this library knows must
+// be zero. The encoder checks the values it owns (targets, bits, weight).
+Status read_options(const gab_compress_options* in, EncodeOptions* out) {
+  gab_compress_options o;
+  gab_compress_options_init(&o, sizeof o);
+  if (in != nullptr) {
+    GAB_RETURN_IF_ERROR(require(in->size >= sizeof(size_t), "options->size is " + std::to_string(in->size) +
+                                                                ": set it with gab_compress_options_init"));
+    const unsigned char* bytes = reinterpret_cast<const unsigned char*>(in);
+    for (size_t i = sizeof o; i < in->size; ++i) {
+      if (bytes[i] != 0) {
+        return Status::Error(StatusCode::kUnsupported, "options->size is " + std::to_string(in->size) +
+                                                           " and byte " + std::to_string(i) + " is set: gab " +
+                                                           GAB_VERSION_STRING " knows " + std::to_string(sizeof o) +
+                                                           " bytes of options");
+      }
+    }
+#define GAB_TAKE(field) take(in, offsetof(gab_compress_options, field), &o.field)
+    GAB_TAKE(target_rms_rel);
+    GAB_TAKE(target_linf_rel);
+    GAB_TAKE(weight);
+    GAB_TAKE(max_anchors);
+    GAB_TAKE(bits);
+    GAB_TAKE(reorder);
+    GAB_TAKE(threads);
+    GAB_TAKE(detail);
+    GAB_TAKE(refine);
+#undef GAB_TAKE
+  }
+  GAB_RETURN_IF_ERROR(require(o.threads >= 0 && o.threads <= kMaxFactorThreads,
+                              "options->threads is " + std::to_string(o.threads) + ": must be in 0.." +
+                                  std::to_string(kMaxFactorThreads) + " (0: every core)"));
+  GAB_RETURN_IF_ERROR(require(o.detail == GAB_DETAIL_AUTO || o.detail == GAB_DETAIL_ON || o.detail == GAB_DETAIL_OFF,
+                              "options->detail is " + std::to_string(o.detail) +
+                                  ": must be GAB_DETAIL_AUTO, GAB_DETAIL_ON or GAB_DETAIL_OFF"));
+  const bool no_rule = o.max_anchors == 0 && o.target_rms_rel == 0 && o.target_linf_rel == 0;
+  out->max_anchors = o.max_anchors;
+  out->target_rms_rel = no_rule ? kDefaultError : o.target_rms_rel;
+  out->target_linf_rel = o.target_linf_rel;
+  out->bits = o.bits;
+  out->weight = o.weight;
+  out->reorder = o.reorder != 0;
+  out->refine = o.refine != 0;
+  const unsigned cores = std::thread::hardware_concurrency();
+  out->threads = o.threads > 0 ? o.threads : static_cast<int32_t>(std::min<unsigned>(std::max(1u, cores), kMaxFactorThreads));
+  out->detail = o.detail == GAB_DETAIL_ON ? DetailMode::kOn : o.detail == GAB_DETAIL_OFF ? DetailMode::kOff : DetailMode::kAuto;
+  return Status::Ok();
+}
+
+int compress(const char* function, const double* positions, int32_t n, const int32_t* triangles, int32_t t,
+             const EncodeOptions* fixed, const gab_compress_options* options, unsigned char** out,
+             size_t* out_size, char* message, size_t message_size) {
+  return guarded(function, message, message_size, [&]() -> Status {
+    if (out != nullptr) *out = nullptr;
+    if (out_size != nullptr) *out_size = 0;
+    GAB_RETURN_IF_ERROR(require(out != nullptr, "out is NULL"));
+    GAB_RETURN_IF_ERROR(require(out_size != nullptr, "out_size is NULL"));
+    Mesh mesh;
+    GAB_RETURN_IF_ERROR(import_mesh(positions, n, triangles, t, &mesh));
+    EncodeOptions encode_options;
+    if (fixed != nullptr) {
+      encode_options = *fixed;
+    } else {
+      GAB_RETURN_IF_ERROR(read_options(options, &encode_options));
+    }
+    std::vector<uint8_t> file;
+    EncodeStats stats;
+    GAB_RETURN_IF_ERROR(encode_mesh(mesh, encode_options, &file, &stats));
+    return export_bytes(file, out, out_size);
+  });
+}
+
+}  // namespace
+
+}  // namespace capi
+}  // namespace gab
+
+extern "C" void gab_compress_options_init(gab_compress_options* options, size_t size) {
+  if (options == nullptr || size < sizeof(size_t)) return;  // not even the size field fits
+  gab_compress_options o;
+  std::memset(&o, 0, sizeof o);
+  o.size = size < sizeof o ? size : sizeof o;
+  o.weight = gab::EncodeOptions().weight;
+  o.threads = 1;
+  o.detail = GAB_DETAIL_AUTO;
+  std::memset(options, 0, size);
+  std::memcpy(options, &o, o.size);
+}
+
+extern "C" int gab_compress_ex(const double* positions, int32_t n, const int32_t* triangles, int32_t t,
+                               const gab_compress_options* options, unsigned char** out, size_t* out_size,
+                               char* message, size_t message_size) {
+  return gab::capi::compress("gab_compress_ex", positions, n, triangles, t, nullptr, options, out, out_size, message,
+                             message_size);
+}
+
+extern "C" int gab_compress(const double* positions, int32_t n, const int32_t* triangles, int32_t t,
+                            double target_rms_rel, unsigned char** out, size_t* out_size, char* message,
+                            size_t message_size) {
+  // The target as given: 0 is not "the default" here but a missing rule (the encoder says so).
+  gab::EncodeOptions options;
+  options.target_rms_rel = target_rms_rel;
+  return gab::capi::compress("gab_compress", positions, n, triangles, t, &options, nullptr, out, out_size, message,
+                             message_size);
+}

@@ -1,0 +1,134 @@
+/* C99 scenarios over gab.h (capi_scenarios.h): compiled as C, with
+   -std=c99 -Wall -Wextra -pedantic -Werror, and nothing but gab.h and the C
+   standard library. */
+#include "capi/capi_scenarios.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "gab/gab.h"
+
+void capi_free_mesh(capi_mesh* mesh) {
+  gab_free(mesh->positions);
+  gab_free(mesh->triangles);
+  mesh->positions = NULL;
+  mesh->triangles = NULL;
+  mesh->n = mesh->t = 0;
+}
+
+int capi_version_and_names(void) {
+  static const char* const names[] = {"GAB_OK", "GAB_E_INVALID_ARGUMENT", "GAB_E_IO", "GAB_E_PARSE",
+                                      "GAB_E_NOT_POSITIVE_DEFINITE", "GAB_E_OVERFLOW", "GAB_E_OUT_OF_MEMORY",
+                                      "GAB_E_RESOURCE_EXHAUSTED", "GAB_E_UNSUPPORTED", "GAB_E_STATE",
+                                      "GAB_E_INTERNAL"};
+  const int codes[] = {GAB_OK, GAB_E_INVALID_ARGUMENT, GAB_E_IO, GAB_E_PARSE, GAB_E_NOT_POSITIVE_DEFINITE,
+                       GAB_E_OVERFLOW, GAB_E_OUT_OF_MEMORY, GAB_E_RESOURCE_EXHAUSTED, GAB_E_UNSUPPORTED,
+                       GAB_E_STATE, GAB_E_INTERNAL};
+  size_t i;
+  if (strcmp(gab_version(), GAB_VERSION_STRING) != 0) return 0;
+  for (i = 0; i < sizeof codes / sizeof codes[0]; ++i) {
+    if (codes[i] != (int)i || strcmp(gab_error_name(codes[i]), names[i]) != 0) return 0;
+  }
+  return strcmp(gab_error_name(-1), "GAB_E_UNKNOWN") == 0;
+}
+
+/* Vertex RMS distance between two position arrays over a's box diagonal. */
+static double relative_rms(const double* a, const double* b, int32_t n) {
+  double lo[3], hi[3], sum = 0.0, diagonal2 = 0.0;
+  int32_t v;
+  int c;
+  for (c = 0; c < 3; ++c) lo[c] = hi[c] = a[c];
+  for (v = 0; v < n; ++v) {
+    for (c = 0; c < 3; ++c) {
+      const double x = a[3 * (size_t)v + c], d = x - b[3 * (size_t)v + c];
+      lo[c] = x < lo[c] ? x : lo[c];
+      hi[c] = x > hi[c] ? x : hi[c];
+      sum += d * d;
+    }
+  }
+  for (c = 0; c < 3; ++c) diagonal2 += (hi[c] - lo[c]) * (hi[c] - lo[c]);
+  return sqrt(sum / n) / sqrt(diagonal2);
+}
+
+void capi_round_trip_run(const double* positions, int32_t n, const int32_t* triangles, int32_t t, double target,
+                         int32_t coarse_anchors, capi_round_trip* r) {
+  memset(r, 0, sizeof *r);
+  r->compress_code = gab_compress(positions, n, triangles, t, target, &r->file, &r->size, r->message,
+                                  sizeof r->message);
+  if (r->compress_code != GAB_OK) return;
+  r->decode_code = gab_decompress(r->file, r->size, -1, &r->decoded.positions, &r->decoded.n,
+                                  &r->decoded.triangles, &r->decoded.t, r->message, sizeof r->message);
+  if (r->decode_code != GAB_OK) return;
+  r->coarse_code = gab_decompress(r->file, r->size, coarse_anchors, &r->coarse.positions, &r->coarse.n,
+                                  &r->coarse.triangles, &r->coarse.t, r->message, sizeof r->message);
+  if (r->decoded.n == n) r->rms_rel = relative_rms(positions, r->decoded.positions, n);
+  if (r->coarse_code == GAB_OK && r->coarse.n == n) r->coarse_rms_rel = relative_rms(positions, r->coarse.positions, n);
+}
+
+void capi_round_trip_free(capi_round_trip* r) {
+  gab_free(r->file);
+  capi_free_mesh(&r->decoded);
+  capi_free_mesh(&r->coarse);
+  r->file = NULL;
+}
+
+int capi_compress_anchors(const double* positions, int32_t n, const int32_t* triangles, int32_t t,
+                          int32_t anchors, int32_t bits, int32_t threads, unsigned char** file, size_t* size,
+                          char* message, size_t message_size) {
+  gab_compress_options options;
+  gab_compress_options_init(&options, sizeof options);
+  options.max_anchors = anchors;
+  options.bits = bits;
+  options.threads = threads;
+  options.detail = GAB_DETAIL_OFF;
+  return gab_compress_ex(positions, n, triangles, t, &options, file, size, message, message_size);
+}
+
+int capi_read_mesh(const char* path, capi_mesh* mesh, char* message, size_t message_size) {
+  return gab_read_mesh(path, &mesh->positions, &mesh->n, &mesh->triangles, &mesh->t, message, message_size);
+}
+
+void capi_cholesky_run(int32_t n, const int32_t* colptr, const int32_t* rowind, const double* values,
+                       const double* b, int32_t nrhs, int32_t j, double w, double* x, double* x_updated, int code[6]) {
+  gab_cholesky* c = NULL;
+  const size_t entries = (size_t)n * (size_t)nrhs;
+  char message[256];
+  memset(code, -1, 6 * sizeof code[0]);
+  code[0] = gab_cholesky_create(n, colptr, rowind, NULL, &c, message, sizeof message);
+  if (code[0] != GAB_OK) return;
+  code[1] = gab_cholesky_factorize(c, values, message, sizeof message);
+  memcpy(x, b, entries * sizeof *x);
+  code[2] = gab_cholesky_solve(c, x, nrhs);
+  code[3] = gab_cholesky_add_anchor(c, j, w);
+  memcpy(x_updated, b, entries * sizeof *x_updated);
+  code[4] = gab_cholesky_solve(c, x_updated, nrhs);
+  code[5] = strcmp(gab_cholesky_message(c), "") == 0 ? GAB_OK : GAB_E_INTERNAL;
+  gab_cholesky_destroy(c);
+}
+
+int capi_error_paths(void) {
+  const double positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  const int32_t triangles[3] = {0, 1, 7};
+  unsigned char* file = (unsigned char*)&file; /* must come back NULL */
+  size_t size = 99;
+  char small[8];
+  int ok = 1;
+  /* NULL message buffer: the code alone. */
+  ok &= gab_compress(positions, 3, triangles, 1, 1e-3, &file, &size, NULL, 0) == GAB_E_INVALID_ARGUMENT;
+  ok &= file == NULL && size == 0;
+  /* A small buffer: the message's first 7 bytes and a NUL. */
+  memset(small, 'x', sizeof small);
+  ok &= gab_compress(positions, 3, triangles, 1, 1e-3, &file, &size, small, sizeof small) == GAB_E_INVALID_ARGUMENT;
+  ok &= memcmp(small, "gab_com", 8) == 0;
+  /* A zero-size buffer is left alone. */
+  small[0] = 'x';
+  ok &= gab_compress(positions, 3, triangles, 1, 1e-3, &file, &size, small, 0) == GAB_E_INVALID_ARGUMENT;
+  ok &= small[0] == 'x';
+  /* NULL handles and NULL frees. */
+  ok &= gab_cholesky_solve(NULL, NULL, 1) == GAB_E_INVALID_ARGUMENT;
+  ok &= gab_cholesky_add_anchor(NULL, 0, 1.0) == GAB_E_INVALID_ARGUMENT;
+  ok &= gab_cholesky_factorize(NULL, NULL, NULL, 0) == GAB_E_INVALID_ARGUMENT;
+  gab_cholesky_destroy(NULL);
+  gab_free(NULL);
+  return ok;
+}

@@ -1,0 +1,66 @@
+/* Scenarios written in C99 against gab.h alone (capi_scenarios.c, compiled
+   as C): each drives the C API the way an embedding product would and hands
+   back what it got; the C++ tests (capi_test.cpp) check it. */
+#ifndef GAB_TESTS_CAPI_SCENARIOS_H
+#define GAB_TESTS_CAPI_SCENARIOS_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* A mesh the library returned (free with capi_free_mesh). */
+typedef struct capi_mesh {
+  double* positions;
+  int32_t n;
+  int32_t* triangles;
+  int32_t t;
+} capi_mesh;
+
+void capi_free_mesh(capi_mesh* mesh);
+
+/* gab_version against GAB_VERSION_STRING, and gab_error_name of every code:
+   1 when all agree with gab.h. */
+int capi_version_and_names(void);
+
+/* gab_compress at `target`, then gab_decompress of the whole file and of its
+   first `coarse_anchors` anchors. Codes in *compress_code, *decode_code,
+   *coarse_code; the file in *file (gab_free), messages in `message`. */
+typedef struct capi_round_trip {
+  int compress_code, decode_code, coarse_code;
+  unsigned char* file;
+  size_t size;
+  capi_mesh decoded, coarse;
+  double rms_rel, coarse_rms_rel; /* vertex RMS over the input's bounding-box diagonal */
+  char message[256];
+} capi_round_trip;
+void capi_round_trip_run(const double* positions, int32_t n, const int32_t* triangles, int32_t t, double target,
+                         int32_t coarse_anchors, capi_round_trip* r);
+void capi_round_trip_free(capi_round_trip* r);
+
+/* gab_compress_ex with an anchor count alone (detail off, `bits`, `threads`). */
+int capi_compress_anchors(const double* positions, int32_t n, const int32_t* triangles, int32_t t,
+                          int32_t anchors, int32_t bits, int32_t threads, unsigned char** file, size_t* size,
+                          char* message, size_t message_size);
+
+/* gab_read_mesh of `path`. */
+int capi_read_mesh(const char* path, capi_mesh* mesh, char* message, size_t message_size);
+
+/* The Cholesky door in order: create from the pattern alone, factorize,
+   solve b (n x nrhs) into x, add_anchor(j, w), solve b again into
+   x_updated, destroy. Codes of each call in code[0..5] (create, factorize,
+   solve, add_anchor, solve, and the message of the last call being ""). */
+void capi_cholesky_run(int32_t n, const int32_t* colptr, const int32_t* rowind, const double* values,
+                       const double* b, int32_t nrhs, int32_t j, double w, double* x, double* x_updated, int code[6]);
+
+/* Error paths from C: a NULL message buffer, a message truncated to a
+   small buffer, NULL handles. 1 when each behaves as gab.h says. */
+int capi_error_paths(void);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* GAB_TESTS_CAPI_SCENARIOS_H */

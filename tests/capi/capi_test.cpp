@@ -1,0 +1,410 @@
+// The C API (gab.h): the C99 scenarios' results (capi_scenarios.c) checked
+// against the C++ API's, and every door's error codes and messages.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "capi/capi_scenarios.h"
+#include "capi/capi_test_util.h"
+#include "common/gab_files.h"
+#include "common/scratch_files.h"
+#include "common/test_meshes.h"
+#include "gab/gab.h"
+
+namespace {
+
+using gab::Mesh;
+using gab::testing_util::bumpy_torus;
+
+// A call's code and message, for the error-path tests.
+struct Outcome {
+  int code;
+  std::string message;
+};
+
+Outcome compress_outcome(const double* positions, int32_t n, const int32_t* triangles, int32_t t, double target) {
+  char message[256];
+  unsigned char* file = nullptr;
+  size_t size = 0;
+  const int code = gab_compress(positions, n, triangles, t, target, &file, &size, message, sizeof message);
+  gab_free(file);
+  return {code, message};
+}
+
+Outcome decompress_outcome(const unsigned char* data, size_t size, int32_t max_anchors = -1) {
+  char message[256];
+  double* positions = nullptr;
+  int32_t* triangles = nullptr;
+  int32_t n = -1, t = -1;
+  const int code = gab_decompress(data, size, max_anchors, &positions, &n, &triangles, &t, message, sizeof message);
+  const bool cleared = positions == nullptr && triangles == nullptr && n == 0 && t == 0;
+  gab_free(positions);
+  gab_free(triangles);
+  if (code != GAB_OK && !cleared) return {GAB_E_INTERNAL, "outputs not cleared on failure"};
+  return {code, message};
+}
+
+Outcome create_outcome(int32_t n, const std::vector<int32_t>& colptr, const std::vector<int32_t>& rowind) {
+  char message[256];
+  gab_cholesky* c = reinterpret_cast<gab_cholesky*>(&message);  // must come back NULL
+  const int code = gab_cholesky_create(n, colptr.data(), rowind.data(), nullptr, &c, message, sizeof message);
+  if (code != GAB_OK && c != nullptr) return {GAB_E_INTERNAL, "handle not cleared on failure"};
+  gab_cholesky_destroy(c);
+  return {code, message};
+}
+
+TEST(CapiTest, VersionAndErrorNamesAgreeWithTheHeader) {
+  EXPECT_EQ(capi_version_and_names(), 1);
+  EXPECT_STREQ(gab_version(), GAB_VERSION_STRING);
+}
+
+TEST(CapiTest, RoundTripMeetsTheTargetAndMatchesTheCppApi) {
+  const Mesh mesh = bumpy_torus(40, 30);
+  capi_round_trip r;
+  capi_round_trip_run(mesh.positions.data(), mesh.num_vertices(), mesh.triangles.data(), mesh.num_triangles(), 1e-3,
+                      20, &r);
+  ASSERT_EQ(r.compress_code, GAB_OK) << r.message;
+  ASSERT_EQ(r.decode_code, GAB_OK) << r.message;
+  ASSERT_EQ(r.coarse_code, GAB_OK) << r.message;
+  EXPECT_EQ(r.decoded.n, mesh.num_vertices());
+  EXPECT_EQ(r.decoded.t, mesh.num_triangles());
+  EXPECT_GT(r.rms_rel, 0.0);
+  EXPECT_LE(r.rms_rel, 1e-3);
+  EXPECT_EQ(gab_test::oriented_set(r.decoded.triangles, r.decoded.t),
+            gab_test::oriented_set(mesh.triangles.data(), mesh.num_triangles()));
+  // The first 20 anchors are a coarser level of the same mesh.
+  EXPECT_EQ(r.coarse.n, mesh.num_vertices());
+  EXPECT_GT(r.coarse_rms_rel, 2 * r.rms_rel);
+  // The same bytes and the same decoded shape as the C++ API's.
+  gab::EncodeOptions options;
+  options.target_rms_rel = 1e-3;
+  gab::EncodeStats stats;
+  const std::vector<uint8_t> file = gab::testing_util::encode_or_die(mesh, options, &stats);
+  ASSERT_EQ(file.size(), r.size);
+  EXPECT_EQ(std::memcmp(file.data(), r.file, r.size), 0);
+  gab::DecodeStats decoded_stats;
+  const Mesh decoded = gab::testing_util::decode_or_die(file, gab::DecodeOptions(), &decoded_stats);
+  ASSERT_EQ(decoded.positions.size(), 3 * static_cast<size_t>(r.decoded.n));
+  EXPECT_EQ(std::memcmp(decoded.positions.data(), r.decoded.positions, decoded.positions.size() * sizeof(double)), 0);
+  capi_round_trip_free(&r);
+}
+
+TEST(CapiTest, AnchorPrefixesAreCoarserLevels) {
+  const Mesh mesh = bumpy_torus(30, 20);
+  unsigned char* file = nullptr;
+  size_t size = 0;
+  char message[256];
+  ASSERT_EQ(capi_compress_anchors(mesh.positions.data(), mesh.num_vertices(), mesh.triangles.data(),
+                                  mesh.num_triangles(), 150, 12, 1, &file, &size, message, sizeof message),
+            GAB_OK)
+      << message;
+  gab::DecodeStats stats;
+  gab::Mesh whole;
+  ASSERT_TRUE(gab::decode_mesh(file, size, gab::DecodeOptions(), &whole, &stats).ok());
+  EXPECT_EQ(stats.anchors, 150);
+  double previous = HUGE_VAL;
+  for (int32_t anchors : {10, 40, 150}) {
+    double* positions = nullptr;
+    int32_t* triangles = nullptr;
+    int32_t n = 0, t = 0;
+    ASSERT_EQ(gab_decompress(file, size, anchors, &positions, &n, &triangles, &t, message, sizeof message), GAB_OK)
+        << message;
+    const Mesh level{std::vector<double>(positions, positions + 3 * static_cast<size_t>(n)),
+                     std::vector<int32_t>(triangles, triangles + 3 * static_cast<size_t>(t))};
+    const double rms = gab::testing_util::relative_rms(mesh, level);
+    EXPECT_LT(rms, previous) << anchors << " anchors";
+    previous = rms;
+    gab_free(positions);
+    gab_free(triangles);
+  }
+  gab_free(file);
+}
+
+TEST(CapiTest, OptionsStructIsReadUpToItsSize) {
+  const Mesh mesh = bumpy_torus(20, 12);
+  const int32_t n = mesh.num_vertices(), t = mesh.num_triangles();
+  auto compress = [&](const gab_compress_options* o, std::vector<uint8_t>* bytes) {
+    char message[256];
+    unsigned char* file = nullptr;
+    size_t size = 0;
+    const int code = gab_compress_ex(mesh.positions.data(), n, mesh.triangles.data(), t, o, &file, &size, message,
+                                     sizeof message);
+    if (bytes) bytes->assign(file, file + size);
+    gab_free(file);
+    return Outcome{code, message};
+  };
+  // NULL options are the defaults: the CLI's --error 0.001.
+  std::vector<uint8_t> defaults, same;
+  ASSERT_EQ(compress(nullptr, &defaults).code, GAB_OK);
+  gab_compress_options o;
+  gab_compress_options_init(&o, sizeof o);
+  EXPECT_EQ(o.size, sizeof o);
+  EXPECT_EQ(o.weight, 100.0);
+  EXPECT_EQ(o.threads, 1);
+  ASSERT_EQ(compress(&o, &same).code, GAB_OK);
+  EXPECT_EQ(defaults, same);
+  // An older caller's struct (up to target_linf_rel): the weight it does not
+  // know takes its default even if the bytes after its size say otherwise.
+  struct {
+    gab_compress_options o;
+    unsigned char guard[8];
+  } older;
+  std::memset(&older, 0xAB, sizeof older);
+  gab_compress_options_init(&older.o, offsetof(gab_compress_options, weight));
+  EXPECT_EQ(older.o.size, offsetof(gab_compress_options, weight));
+  EXPECT_EQ(reinterpret_cast<unsigned char*>(&older.o)[offsetof(gab_compress_options, weight)], 0xAB);  // not written
+  older.o.target_rms_rel = 1e-3;
+  ASSERT_EQ(compress(&older.o, &same).code, GAB_OK);
+  EXPECT_EQ(defaults, same);
+  // A newer caller's larger struct: zero tail accepted, a set byte refused.
+  struct {
+    gab_compress_options o;
+    int64_t future[2];
+  } newer;
+  std::memset(&newer, 0, sizeof newer);
+  gab_compress_options_init(&newer.o, sizeof newer.o);
+  newer.o.size = sizeof newer;
+  ASSERT_EQ(compress(&newer.o, &same).code, GAB_OK);
+  EXPECT_EQ(defaults, same);
+  newer.future[1] = 1;
+  const Outcome refused = compress(&newer.o, nullptr);
+  EXPECT_EQ(refused.code, GAB_E_UNSUPPORTED);
+  EXPECT_EQ(refused.message, "gab_compress_ex: options->size is " + std::to_string(sizeof newer) + " and byte " +
+                                 std::to_string(sizeof newer - 8) + " is set: gab " GAB_VERSION_STRING " knows " +
+                                 std::to_string(sizeof o) + " bytes of options");
+  // Values the door checks, and one the encoder checks.
+  gab_compress_options_init(&o, sizeof o);
+  o.threads = -1;
+  EXPECT_EQ(compress(&o, nullptr).message, "gab_compress_ex: options->threads is -1: must be in 0..64 (0: every core)");
+  gab_compress_options_init(&o, sizeof o);
+  o.detail = 7;
+  EXPECT_EQ(compress(&o, nullptr).message,
+            "gab_compress_ex: options->detail is 7: must be GAB_DETAIL_AUTO, GAB_DETAIL_ON or GAB_DETAIL_OFF");
+  gab_compress_options_init(&o, sizeof o);
+  o.bits = 30;
+  const Outcome bits = compress(&o, nullptr);
+  EXPECT_EQ(bits.code, GAB_E_INVALID_ARGUMENT);
+  EXPECT_EQ(bits.message, "gab_compress_ex: bits must be in 2..24");
+  gab_compress_options_init(&o, 4);  // not even the size field: nothing written
+  o.size = 4;
+  EXPECT_EQ(compress(&o, nullptr).message, "gab_compress_ex: options->size is 4: set it with gab_compress_options_init");
+}
+
+TEST(CapiTest, CompressRejectsBadArgumentsWithClearMessages) {
+  const Mesh mesh = bumpy_torus(8, 6);
+  const double* p = mesh.positions.data();
+  const int32_t* f = mesh.triangles.data();
+  const int32_t n = mesh.num_vertices(), t = mesh.num_triangles();
+  EXPECT_EQ(capi_error_paths(), 1);
+  const Outcome no_positions = compress_outcome(nullptr, n, f, t, 1e-3);
+  EXPECT_EQ(no_positions.code, GAB_E_INVALID_ARGUMENT);
+  EXPECT_EQ(no_positions.message, "gab_compress: positions is NULL");
+  EXPECT_EQ(compress_outcome(p, n, nullptr, t, 1e-3).message, "gab_compress: triangles is NULL");
+  EXPECT_EQ(compress_outcome(p, -4, f, t, 1e-3).message, "gab_compress: n = -4: a mesh needs at least one vertex");
+  EXPECT_EQ(compress_outcome(p, n, f, 0, 1e-3).message, "gab_compress: t = 0: a mesh needs at least one triangle");
+  // A triangle naming a vertex past n: the mesh layer's check, named.
+  EXPECT_EQ(compress_outcome(p, 10, f, t, 1e-3).message,
+            "gab_compress: mesh: triangle 6: vertex index 10 out of range [0, 10)");
+  std::vector<double> nan_positions = mesh.positions;
+  nan_positions[7] = std::nan("");
+  EXPECT_EQ(compress_outcome(nan_positions.data(), n, f, t, 1e-3).message,
+            "gab_compress: mesh: vertex 2: coordinate is not finite");
+  EXPECT_EQ(compress_outcome(p, n, f, t, 0).message,
+            "gab_compress: set a stopping rule: an anchor count, an RMS or an L-inf target");
+  EXPECT_EQ(compress_outcome(p, n, f, t, -1).code, GAB_E_INVALID_ARGUMENT);
+  char message[64];
+  size_t size = 0;
+  EXPECT_EQ(gab_compress(p, n, f, t, 1e-3, nullptr, &size, message, sizeof message), GAB_E_INVALID_ARGUMENT);
+  EXPECT_STREQ(message, "gab_compress: out is NULL");
+}
+
+TEST(CapiTest, DecompressReportsHostileBytesAndNeverCrashes) {
+  const Mesh mesh = bumpy_torus(12, 10);
+  gab::EncodeOptions options;
+  options.max_anchors = 30;
+  gab::EncodeStats stats;
+  const std::vector<uint8_t> file = gab::testing_util::encode_or_die(mesh, options, &stats);
+  ASSERT_EQ(decompress_outcome(file.data(), file.size()).code, GAB_OK);
+  const Outcome empty = decompress_outcome(nullptr, 0);
+  EXPECT_EQ(empty.code, GAB_E_PARSE);
+  EXPECT_EQ(empty.message.rfind("gab_decompress: ", 0), 0u) << empty.message;
+  EXPECT_EQ(decompress_outcome(nullptr, 5).message, "gab_decompress: data is NULL");
+  const std::string garbage = "this is not a .gab file, not at all";
+  EXPECT_EQ(decompress_outcome(reinterpret_cast<const unsigned char*>(garbage.data()), garbage.size()).code,
+            GAB_E_PARSE);
+  char message[64];
+  double* positions = nullptr;
+  int32_t n = 0;
+  EXPECT_EQ(gab_decompress(file.data(), file.size(), -1, &positions, &n, nullptr, nullptr, message, sizeof message),
+            GAB_E_INVALID_ARGUMENT);
+  EXPECT_STREQ(message, "gab_decompress: triangles is NULL");
+  // Every cut and 300 random byte flips: a code and a message, never a crash
+  // (ASan checks the reads).
+  for (size_t cut = 0; cut < file.size(); cut += 1 + file.size() / 97) {
+    const Outcome o = decompress_outcome(file.data(), cut);
+    EXPECT_NE(o.code, GAB_E_INTERNAL) << cut << ": " << o.message;
+    EXPECT_TRUE(o.code == GAB_OK || !o.message.empty()) << o.code;
+  }
+  std::mt19937 rng(7);
+  for (int trial = 0; trial < 300; ++trial) {
+    std::vector<uint8_t> damaged = file;
+    damaged[rng() % damaged.size()] ^= static_cast<uint8_t>(1 + rng() % 255);
+    const Outcome o = decompress_outcome(damaged.data(), damaged.size(), trial % 3 == 0 ? 10 : -1);
+    EXPECT_NE(o.code, GAB_E_INTERNAL) << trial << ": " << o.message;
+    EXPECT_TRUE(o.code == GAB_OK || !o.message.empty()) << o.code;
+  }
+}
+
+TEST(CapiTest, ReadMeshReadsAFileAndNamesWhatIsWrong) {
+  const std::string path =
+      gab_test::write_scratch_file("quad.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n3 0 2 1\n");
+  capi_mesh mesh{};
+  char message[256];
+  ASSERT_EQ(capi_read_mesh(path.c_str(), &mesh, message, sizeof message), GAB_OK) << message;
+  EXPECT_STREQ(message, "");
+  EXPECT_EQ(mesh.n, 4);
+  EXPECT_EQ(mesh.t, 3);  // the quad fan-triangulated, and the triangle
+  EXPECT_EQ(mesh.positions[7], 1.0);
+  EXPECT_EQ(std::vector<int32_t>(mesh.triangles, mesh.triangles + 9), (std::vector<int32_t>{0, 1, 2, 0, 2, 3, 0, 2, 1}));
+  capi_free_mesh(&mesh);
+  const std::string missing = gab_test::scratch_path("missing.off");
+  EXPECT_EQ(capi_read_mesh(missing.c_str(), &mesh, message, sizeof message), GAB_E_IO);
+  EXPECT_NE(std::string(message).find(missing), std::string::npos) << message;
+  EXPECT_TRUE(mesh.positions == nullptr && mesh.n == 0);
+  const std::string bad = gab_test::write_scratch_file("bad.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n");
+  EXPECT_EQ(capi_read_mesh(bad.c_str(), &mesh, message, sizeof message), GAB_E_PARSE) << message;
+  EXPECT_EQ(capi_read_mesh(nullptr, &mesh, message, sizeof message), GAB_E_INVALID_ARGUMENT);
+  EXPECT_STREQ(message, "gab_read_mesh: path is NULL");
+  EXPECT_EQ(capi_read_mesh("mesh.stl", &mesh, message, sizeof message), GAB_E_INVALID_ARGUMENT);
+}
+
+TEST(CapiTest, CholeskySolvesAndUpdatesLikeAFreshFactorization) {
+  const gab::CscMatrix a = gab_test::grid_laplacian(20, 0.05);
+  const int32_t n = a.nrows, nrhs = 3, j = 137;
+  const double w = 3.0;
+  std::vector<double> b(static_cast<size_t>(n) * nrhs);
+  for (size_t i = 0; i < b.size(); ++i) b[i] = std::sin(0.37 * static_cast<double>(i)) + 0.1;
+  std::vector<double> x(b.size()), x_updated(b.size());
+  int code[6];
+  capi_cholesky_run(n, a.colptr.data(), a.rowind.data(), a.values.data(), b.data(), nrhs, j, w, x.data(),
+                    x_updated.data(), code);
+  for (int k = 0; k < 6; ++k) EXPECT_EQ(code[k], GAB_OK) << "call " << k;
+  // A + w^2 e_j e_j^T, factored afresh through the C API.
+  gab::CscMatrix updated = a;
+  updated.values[updated.colptr[j]] += w * w;  // the diagonal leads its column
+  for (int32_t r = 0; r < nrhs; ++r) {
+    const size_t at = static_cast<size_t>(r) * n;
+    EXPECT_LT(gab_test::relative_residual(a, &x[at], &b[at]), 1e-12);
+    EXPECT_LT(gab_test::relative_residual(updated, &x_updated[at], &b[at]), 1e-12);
+  }
+  gab_cholesky* fresh = nullptr;
+  char message[256];
+  ASSERT_EQ(gab_cholesky_create(n, updated.colptr.data(), updated.rowind.data(), updated.values.data(), &fresh,
+                                message, sizeof message),
+            GAB_OK)
+      << message;
+  std::vector<double> x_fresh = b;
+  ASSERT_EQ(gab_cholesky_solve(fresh, x_fresh.data(), nrhs), GAB_OK);
+  for (size_t i = 0; i < b.size(); ++i) EXPECT_NEAR(x_updated[i], x_fresh[i], 1e-12 * (1 + std::fabs(x_fresh[i])));
+  // Refactoring discards the update.
+  ASSERT_EQ(gab_cholesky_factorize(fresh, a.values.data(), message, sizeof message), GAB_OK);
+  std::vector<double> x_again = b;
+  ASSERT_EQ(gab_cholesky_solve(fresh, x_again.data(), nrhs), GAB_OK);
+  for (size_t i = 0; i < b.size(); ++i) EXPECT_NEAR(x_again[i], x[i], 1e-12 * (1 + std::fabs(x[i])));
+  gab_cholesky_destroy(fresh);
+}
+
+TEST(CapiTest, CholeskyRejectsBadPatternsWithClearMessages) {
+  // [2 -1; -1 2] and a third column, lower triangle.
+  const std::vector<int32_t> colptr = {0, 2, 3, 4}, rowind = {0, 1, 1, 2};
+  EXPECT_EQ(create_outcome(3, colptr, rowind).code, GAB_OK);
+  const Outcome above = create_outcome(3, {0, 1, 3, 4}, {0, 0, 1, 2});
+  EXPECT_EQ(above.code, GAB_E_INVALID_ARGUMENT);
+  EXPECT_EQ(above.message, "gab_cholesky_create: column 1: row 0 is above the diagonal (give the lower triangle)");
+  EXPECT_EQ(create_outcome(3, {0, 1, 2, 3}, {1, 1, 2}).message, "gab_cholesky_create: column 0 has no diagonal entry");
+  EXPECT_EQ(create_outcome(3, {0, 2, 3, 4}, {1, 0, 1, 2}).message,
+            "gab_cholesky_create: column 0 has an out-of-range or unsorted row index");
+  EXPECT_EQ(create_outcome(3, {0, 2, 3, 4}, {0, 0, 1, 2}).message,  // a duplicate
+            "gab_cholesky_create: column 0 has an out-of-range or unsorted row index");
+  EXPECT_EQ(create_outcome(3, {0, 2, 3, 4}, {0, 3, 1, 2}).message,
+            "gab_cholesky_create: column 0 has an out-of-range or unsorted row index");
+  EXPECT_EQ(create_outcome(3, {1, 2, 3, 4}, rowind).message, "gab_cholesky_create: colptr[0] = 1: must be 0");
+  EXPECT_EQ(create_outcome(3, {0, 2, 1, 4}, rowind).message, "gab_cholesky_create: colptr decreases at column 1");
+  EXPECT_EQ(create_outcome(0, colptr, rowind).message, "gab_cholesky_create: n = 0: must be positive");
+  char message[128];
+  gab_cholesky* c = nullptr;
+  EXPECT_EQ(gab_cholesky_create(3, nullptr, rowind.data(), nullptr, &c, message, sizeof message),
+            GAB_E_INVALID_ARGUMENT);
+  EXPECT_STREQ(message, "gab_cholesky_create: colptr is NULL");
+  EXPECT_EQ(gab_cholesky_create(3, colptr.data(), rowind.data(), nullptr, nullptr, message, sizeof message),
+            GAB_E_INVALID_ARGUMENT);
+  EXPECT_STREQ(message, "gab_cholesky_create: out is NULL");
+}
+
+TEST(CapiTest, CholeskyCallsOutOfOrderOrOnBadValuesSaySo) {
+  const std::vector<int32_t> colptr = {0, 2, 3, 4}, rowind = {0, 1, 1, 2};
+  char message[128];
+  gab_cholesky* c = nullptr;
+  ASSERT_EQ(gab_cholesky_create(3, colptr.data(), rowind.data(), nullptr, &c, message, sizeof message), GAB_OK);
+  double b[3] = {1, 2, 3};
+  EXPECT_EQ(gab_cholesky_solve(c, b, 1), GAB_E_STATE);
+  EXPECT_STREQ(gab_cholesky_message(c),
+               "gab_cholesky_solve: no factorization: call gab_cholesky_factorize first (or it failed)");
+  EXPECT_EQ(gab_cholesky_add_anchor(c, 0, 1.0), GAB_E_STATE);
+  const double indefinite[4] = {1, 2, 1, 1};  // [1 2; 2 1] is indefinite
+  EXPECT_EQ(gab_cholesky_factorize(c, indefinite, message, sizeof message), GAB_E_NOT_POSITIVE_DEFINITE);
+  EXPECT_NE(std::string(message).find("column"), std::string::npos) << message;
+  EXPECT_STREQ(gab_cholesky_message(c), message);
+  EXPECT_EQ(gab_cholesky_solve(c, b, 1), GAB_E_STATE);  // the failed factorization left none
+  const double not_finite[4] = {2, -1, 2, HUGE_VAL};
+  EXPECT_EQ(gab_cholesky_factorize(c, not_finite, message, sizeof message), GAB_E_INVALID_ARGUMENT);
+  EXPECT_STREQ(message, "gab_cholesky_factorize: values[3] is not finite");
+  EXPECT_EQ(gab_cholesky_factorize(c, nullptr, message, sizeof message), GAB_E_INVALID_ARGUMENT);
+  EXPECT_STREQ(message, "gab_cholesky_factorize: values is NULL");
+  const double values[4] = {2, -1, 2, 1};
+  ASSERT_EQ(gab_cholesky_factorize(c, values, message, sizeof message), GAB_OK);
+  EXPECT_STREQ(gab_cholesky_message(c), "");
+  EXPECT_EQ(gab_cholesky_solve(c, b, -1), GAB_E_INVALID_ARGUMENT);
+  EXPECT_STREQ(gab_cholesky_message(c), "gab_cholesky_solve: nrhs = -1: must not be negative");
+  EXPECT_EQ(gab_cholesky_solve(c, nullptr, 1), GAB_E_INVALID_ARGUMENT);
+  EXPECT_STREQ(gab_cholesky_message(c), "gab_cholesky_solve: b is NULL");
+  EXPECT_EQ(gab_cholesky_solve(c, nullptr, 0), GAB_OK);  // nothing to solve
+  EXPECT_EQ(gab_cholesky_add_anchor(c, 3, 1.0), GAB_E_INVALID_ARGUMENT);
+  EXPECT_STREQ(gab_cholesky_message(c), "gab_cholesky_add_anchor: j = 3 is out of range [0, 3)");
+  EXPECT_EQ(gab_cholesky_add_anchor(c, 1, std::nan("")), GAB_E_INVALID_ARGUMENT);
+  EXPECT_STREQ(gab_cholesky_message(c), "gab_cholesky_add_anchor: w is not finite");
+  ASSERT_EQ(gab_cholesky_solve(c, b, 1), GAB_OK);
+  EXPECT_STREQ(gab_cholesky_message(c), "");
+  // [2 -1 0; -1 2 0; 0 0 1] x = (1 2 3): x = (4/3, 5/3, 3).
+  EXPECT_NEAR(b[0], 4.0 / 3, 1e-14);
+  EXPECT_NEAR(b[1], 5.0 / 3, 1e-14);
+  EXPECT_NEAR(b[2], 3.0, 1e-14);
+  gab_cholesky_destroy(c);
+}
+
+TEST(CapiTest, SharedMeshRoundTripKeepsTheNumbering) {
+  const std::string path = std::string(GAB_SHARED_MESHES) + "/bunny-small.off";
+  capi_mesh mesh{};
+  char message[256];
+  if (capi_read_mesh(path.c_str(), &mesh, message, sizeof message) == GAB_E_IO) {
+    GTEST_SKIP() << "no shared meshes (" << path << "): " << message;
+  }
+  ASSERT_NE(mesh.positions, nullptr) << message;
+  capi_round_trip r;
+  capi_round_trip_run(mesh.positions, mesh.n, mesh.triangles, mesh.t, 1e-3, 50, &r);
+  ASSERT_EQ(r.compress_code, GAB_OK) << r.message;
+  ASSERT_EQ(r.decode_code, GAB_OK) << r.message;
+  EXPECT_EQ(r.decoded.n, mesh.n);
+  EXPECT_LE(r.rms_rel, 1e-3);
+  EXPECT_GT(r.coarse_rms_rel, r.rms_rel);
+  EXPECT_EQ(gab_test::oriented_set(r.decoded.triangles, r.decoded.t), gab_test::oriented_set(mesh.triangles, mesh.t));
+  capi_round_trip_free(&r);
+  capi_free_mesh(&mesh);
+}
+
+}  // namespace
