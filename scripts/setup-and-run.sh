@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # One command from a fresh Debian machine: install what is missing, build
-# gab (Release, tests included), fetch a real mesh from Debian's libcgal-demo,
-# and run the main job on it (gab demo: compress / decompress).
+# gab (Release, tests included), install it (library, headers, the gab tool
+# and the Python module) under GAB_PREFIX (default ~/.local, whose Python
+# site directory python3 searches), fetch a real mesh from Debian's
+# libcgal-demo, and run the main job on it (gab demo: compress / decompress).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
-PACKAGES="cmake ninja-build g++ libgtest-dev googletest libbenchmark-dev libtinyobjloader-dev libcgal-demo"
+PACKAGES="cmake ninja-build g++ libgtest-dev googletest libbenchmark-dev libtinyobjloader-dev libcgal-demo python3-numpy"
 missing=""
 for p in $PACKAGES; do
   dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"
@@ -26,6 +28,8 @@ fi
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DGAB_BUILD_TESTS=ON
 cmake --build build -j2
+# The doors: libgab + gab.h for C, the gab module for python3 (README).
+cmake --install build --prefix "${GAB_PREFIX:-$HOME/.local}"
 
 # The main job: compress the camel at several anchor counts, decode every
 # file again, print the table, write the meshes to gab-demo/.

@@ -1,0 +1,114 @@
+"""ctypes bindings of gab.h: finding libgab, the functions' signatures, and
+turning an error code and message into a GabError."""
+
+import ctypes
+import os
+from ctypes import POINTER, c_char_p, c_double, c_int, c_int32, c_size_t, c_ubyte, c_void_p
+
+MESSAGE_SIZE = 1024
+
+
+class GabError(Exception):
+    """A gab call failed: `code` is its GAB_E_* code, `name` the code's name
+    ("GAB_E_PARSE"), and the text is the library's message."""
+
+    def __init__(self, code, message):
+        super().__init__(message)
+        self.code = code
+        self.name = LIB.gab_error_name(code).decode()
+
+
+class CompressOptions(ctypes.Structure):
+    """gab_compress_options, field for field (gab.h)."""
+
+    _fields_ = [
+        ("size", c_size_t),
+        ("target_rms_rel", c_double),
+        ("target_linf_rel", c_double),
+        ("weight", c_double),
+        ("max_anchors", c_int32),
+        ("bits", c_int32),
+        ("reorder", c_int32),
+        ("threads", c_int32),
+        ("detail", c_int32),
+        ("refine", c_int32),
+    ]
+
+
+def _candidates():
+    """Where libgab may be, in order: $GAB_LIBRARY, the copy the package was
+    installed with (_location.py, written by cmake --install), then the
+    dynamic loader's search path."""
+    explicit = os.environ.get("GAB_LIBRARY")
+    if explicit:
+        return [explicit]
+    found = []
+    try:
+        from . import _location
+
+        found.append(os.path.normpath(os.path.join(os.path.dirname(__file__), _location.LIBRARY)))
+    except ImportError:
+        pass
+    return found + ["libgab.so"]
+
+
+def _load():
+    errors = []
+    for path in _candidates():
+        try:
+            return ctypes.CDLL(path)
+        except OSError as e:
+            errors.append(str(e))
+    raise ImportError(
+        "gab: cannot load libgab (set GAB_LIBRARY to the path of libgab.so, or install gab with cmake --install): "
+        + "; ".join(errors)
+    )
+
+
+def _declare(lib):
+    P = POINTER
+    signatures = {
+        "gab_version": (c_char_p, []),
+        "gab_error_name": (c_char_p, [c_int]),
+        "gab_free": (None, [c_void_p]),
+        "gab_read_mesh": (c_int, [c_char_p, P(P(c_double)), P(c_int32), P(P(c_int32)), P(c_int32), c_char_p, c_size_t]),
+        "gab_compress_options_init": (None, [P(CompressOptions), c_size_t]),
+        "gab_compress_ex": (
+            c_int,
+            [P(c_double), c_int32, P(c_int32), c_int32, P(CompressOptions), P(P(c_ubyte)), P(c_size_t), c_char_p,
+             c_size_t],
+        ),
+        "gab_decompress": (
+            c_int,
+            [c_char_p, c_size_t, c_int32, P(P(c_double)), P(c_int32), P(P(c_int32)), P(c_int32), c_char_p, c_size_t],
+        ),
+        "gab_cholesky_create": (
+            c_int,
+            [c_int32, P(c_int32), P(c_int32), P(c_double), P(c_void_p), c_char_p, c_size_t],
+        ),
+        "gab_cholesky_factorize": (c_int, [c_void_p, P(c_double), c_char_p, c_size_t]),
+        "gab_cholesky_solve": (c_int, [c_void_p, P(c_double), c_int32]),
+        "gab_cholesky_add_anchor": (c_int, [c_void_p, c_int32, c_double]),
+        "gab_cholesky_message": (c_char_p, [c_void_p]),
+        "gab_cholesky_destroy": (None, [c_void_p]),
+    }
+    for name, (restype, argtypes) in signatures.items():
+        function = getattr(lib, name)
+        function.restype = restype
+        function.argtypes = argtypes
+    return lib
+
+
+LIB = _declare(_load())
+
+
+def check(code, message):
+    """Raises GabError unless code is GAB_OK; `message` is the call's buffer
+    (or the handle's message as bytes)."""
+    if code != 0:
+        text = message.value if hasattr(message, "value") else message
+        raise GabError(code, text.decode(errors="replace"))
+
+
+def message_buffer():
+    return ctypes.create_string_buffer(MESSAGE_SIZE)

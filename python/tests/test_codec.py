@@ -1,0 +1,143 @@
+"""gab.compress / decompress / read_mesh over libgab (run by ctest and .ci/run)."""
+
+import math
+import os
+import tempfile
+import unittest
+
+import numpy as np
+
+import gab
+
+
+def bumpy_torus(n, m):
+    """A closed torus with a bumpy radius: (V, F)."""
+    i, j = np.meshgrid(np.arange(n), np.arange(m), indexing="ij")
+    u, v = 2 * math.pi * i / n, 2 * math.pi * j / m
+    V = np.stack([(1 + 0.3 * np.cos(v)) * np.cos(u), (1 + 0.3 * np.cos(v)) * np.sin(u), 0.3 * np.sin(v)], -1)
+    V = V.reshape(-1, 3) * (1 + 0.08 * np.sin(3.1 * V.reshape(-1, 3)[:, :1] + 1.3))
+    a = (i * m + j).ravel()
+    b = (((i + 1) % n) * m + j).ravel()
+    c = (((i + 1) % n) * m + (j + 1) % m).ravel()
+    d = (i * m + (j + 1) % m).ravel()
+    F = np.concatenate([np.stack([a, b, c], -1), np.stack([a, c, d], -1)]).astype(np.int32)
+    return V, F
+
+
+def oriented_set(F):
+    """The triangles as a set of oriented triangles (each from its smallest corner)."""
+    F = np.asarray(F)
+    shift = np.argmin(F, axis=1)
+    rows = np.arange(len(F))[:, None]
+    rolled = F[rows, (shift[:, None] + np.arange(3)) % 3]
+    return sorted(map(tuple, rolled.tolist()))
+
+
+def relative_rms(V, W):
+    diagonal = np.linalg.norm(V.max(0) - V.min(0))
+    return math.sqrt(np.mean(np.sum((V - W) ** 2, axis=1))) / diagonal
+
+
+class CodecTest(unittest.TestCase):
+    def test_round_trip_keeps_numbering_and_meets_the_target(self):
+        V, F = bumpy_torus(40, 30)
+        data = gab.compress(V, F, error=1e-3)
+        self.assertIsInstance(data, bytes)
+        self.assertLess(len(data), V.nbytes // 10)
+        W, G = gab.decompress(data)
+        self.assertEqual(W.shape, V.shape)
+        self.assertEqual(W.dtype, np.float64)
+        self.assertEqual(G.dtype, np.int32)
+        self.assertEqual(oriented_set(G), oriented_set(F))
+        self.assertLessEqual(relative_rms(V, W), 1e-3)
+        self.assertGreater(relative_rms(V, W), 0)
+
+    def test_anchor_prefixes_are_coarser_levels(self):
+        V, F = bumpy_torus(30, 20)
+        data = gab.compress(V, F, anchors=120, detail="off", bits=12)
+        errors = [relative_rms(V, gab.decompress(data, anchors=k)[0]) for k in (10, 40, 120)]
+        self.assertGreater(errors[0], errors[1])
+        self.assertGreater(errors[1], errors[2])
+        self.assertEqual(relative_rms(V, gab.decompress(data)[0]), errors[2])
+
+    def test_options_change_the_file(self):
+        V, F = bumpy_torus(20, 16)
+        base = gab.compress(V, F)
+        self.assertEqual(base, gab.compress(V, F, error=1e-3))  # the default rule
+        self.assertEqual(base, gab.compress(V, F, threads=2))  # threads never change the bytes
+        self.assertNotEqual(base, gab.compress(V, F, error=3e-3))
+        W, _ = gab.decompress(gab.compress(V, F, linf=2e-3))
+        self.assertLessEqual(np.max(np.linalg.norm(V - W, axis=1)) / np.linalg.norm(V.max(0) - V.min(0)), 2e-3)
+        reordered = gab.compress(V, F, reorder=True)
+        self.assertLess(len(reordered), len(base))
+        self.assertNotEqual(base, gab.compress(V, F, weight=10))
+
+    def test_inputs_of_other_types_and_layouts(self):
+        V, F = bumpy_torus(12, 10)
+        data = gab.compress(V.astype(np.float32).tolist(), F.astype(np.int64))
+        W, G = gab.decompress(bytearray(data))
+        self.assertEqual(oriented_set(G), oriented_set(F))
+        self.assertEqual(gab.decompress(memoryview(data))[0].tolist(), W.tolist())
+
+    def test_errors_raise_with_the_library_message(self):
+        V, F = bumpy_torus(8, 6)
+        bad = F.copy()
+        bad[4, 1] = len(V)
+        with self.assertRaises(gab.GabError) as e:
+            gab.compress(V, bad)
+        self.assertEqual(e.exception.name, "GAB_E_INVALID_ARGUMENT")
+        self.assertEqual(str(e.exception), f"gab_compress_ex: mesh: triangle 4: vertex index {len(V)} out of range [0, {len(V)})")
+        with self.assertRaises(ValueError):
+            gab.compress(V[:, :2], F)
+        with self.assertRaises(ValueError):
+            gab.compress(V, F, detail="maybe")
+        with self.assertRaises(gab.GabError) as e:
+            gab.compress(V, F, bits=40)
+        self.assertEqual(str(e.exception), "gab_compress_ex: bits must be in 2..24")
+        with self.assertRaises(gab.GabError) as e:
+            gab.decompress(b"not a gab file at all")
+        self.assertEqual(e.exception.name, "GAB_E_PARSE")
+        self.assertTrue(str(e.exception).startswith("gab_decompress: "))
+        data = bytearray(gab.compress(V, F))
+        data[len(data) // 2] ^= 0x55
+        with self.assertRaises(gab.GabError) as e:
+            gab.decompress(bytes(data))
+        self.assertEqual(e.exception.code, 3)
+
+    def test_read_mesh(self):
+        with tempfile.TemporaryDirectory() as folder:
+            path = os.path.join(folder, "quad.off")
+            with open(path, "w") as f:
+                f.write("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n")
+            V, F = gab.read_mesh(path)
+            self.assertEqual(V.shape, (4, 3))
+            self.assertEqual(F.tolist(), [[0, 1, 2], [0, 2, 3]])
+            with self.assertRaises(gab.GabError) as e:
+                gab.read_mesh(os.path.join(folder, "missing.off"))
+            self.assertEqual(e.exception.name, "GAB_E_IO")
+            self.assertIn("missing.off", str(e.exception))
+
+    def test_version(self):
+        self.assertRegex(gab.version(), r"^\d+\.\d+\.\d+$")
+        self.assertEqual(gab.__version__, gab.version())
+
+    def test_shared_meshes(self):
+        """The small shared meshes round trip (GAB_PYTHON_ALL_MESHES=1: all of them)."""
+        folder = os.environ.get("GAB_SHARED_MESHES", "")
+        if not os.path.isdir(folder):
+            self.skipTest(f"no shared meshes in {folder!r}")
+        names = sorted(os.listdir(folder))
+        if os.environ.get("GAB_PYTHON_ALL_MESHES") != "1":
+            names = [n for n in names if n in ("bunny-small.off", "camel-head.off")]
+        for name in names:
+            if not name.endswith((".off", ".obj", ".ply")):
+                continue
+            with self.subTest(mesh=name):
+                V, F = gab.read_mesh(os.path.join(folder, name))
+                W, G = gab.decompress(gab.compress(V, F, error=1e-3, threads=0))
+                self.assertEqual(oriented_set(G), oriented_set(F))
+                self.assertLessEqual(relative_rms(V, W), 1e-3)
+
+
+if __name__ == "__main__":
+    unittest.main()
