@@ -1,7 +1,7 @@
 // Status codes and messages at the C boundary (boundary.h).
 #include "boundary.h"
 
-#include <cstring>
+#include <cstdio>
 
 namespace gab {
 namespace capi {
@@ -21,19 +21,21 @@ int error_code(StatusCode code) {
   return GAB_E_INTERNAL;  // a code added to status.h and not mapped here
 }
 
-void write_message(const std::string& text, char* message, size_t size) {
+void write_message(const char* function, const char* text, char* message, size_t size) {
   if (message == nullptr || size == 0) return;
-  const size_t length = text.size() < size - 1 ? text.size() : size - 1;
-  std::memcpy(message, text.data(), length);
-  message[length] = '\0';
+  if (text[0] == '\0') {
+    message[0] = '\0';
+  } else {
+    std::snprintf(message, size, "%s: %s", function, text);
+  }
 }
 
-Status require(bool ok, const std::string& what) {
-  return ok ? Status::Ok() : Status::Error(StatusCode::kInvalidArgument, what);
-}
+Status invalid(const std::string& what) { return Status::Error(StatusCode::kInvalidArgument, what); }
+
+Status require(bool ok, const std::string& what) { return ok ? Status::Ok() : invalid(what); }
 
 int report(const char* function, const Status& status, char* message, size_t size) {
-  write_message(status.ok() ? std::string() : std::string(function) + ": " + status.message(), message, size);
+  write_message(function, status.ok() ? "" : status.message().c_str(), message, size);
   return error_code(status.code());
 }
 

@@ -20,15 +20,18 @@ namespace capi {
 // The GAB_E_* code of a status code (GAB_OK for kOk).
 int error_code(StatusCode code);
 
-// Copies `text` into the caller's buffer: truncated to size - 1 bytes and
-// NUL-terminated; nothing when message is NULL or size is 0.
-void write_message(const std::string& text, char* message, size_t size);
+// Writes "FUNCTION: text" ("" when text is) into the caller's buffer:
+// truncated to size - 1 bytes and NUL-terminated; nothing when message is
+// NULL or size is 0. Allocates nothing, so it cannot throw.
+void write_message(const char* function, const char* text, char* message, size_t size);
 
-// kInvalidArgument with `what` unless `ok`: the door's argument checks.
+// kInvalidArgument with `what`, and the same unless `ok`: the door's
+// argument checks (in loops, test first: `what` is built before the call).
+Status invalid(const std::string& what);
 Status require(bool ok, const std::string& what);
 
 // Writes "FUNCTION: message" to the caller's buffer ("" when ok) and
-// returns the status's GAB_E_* code.
+// returns the status's GAB_E_* code. Cannot throw.
 int report(const char* function, const Status& status, char* message, size_t size);
 
 // Runs `body` (returning a Status) and reports its outcome as gab.h
@@ -40,11 +43,12 @@ int guarded(const char* function, char* message, size_t size, Body&& body) {
   try {
     return report(function, body(), message, size);
   } catch (const std::bad_alloc&) {
-    return report(function, Status::Error(StatusCode::kOutOfMemory, "out of memory"), message, size);
+    write_message(function, "out of memory", message, size);
+    return GAB_E_OUT_OF_MEMORY;
   } catch (const std::exception& e) {
-    write_message(std::string(function) + ": internal error: " + e.what(), message, size);
+    write_message(function, e.what(), message, size);  // a bug: GAB_E_INTERNAL says so
   } catch (...) {
-    write_message(std::string(function) + ": internal error: unknown exception", message, size);
+    write_message(function, "internal error: unknown exception", message, size);
   }
   return GAB_E_INTERNAL;
 }

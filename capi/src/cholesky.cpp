@@ -3,6 +3,7 @@
 // factorization, and the message of its last call (solve and add_anchor have
 // no message buffer in their signature).
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <string>
 
@@ -12,7 +13,7 @@
 struct gab_cholesky {
   gab::CscMatrix lower;  // the pattern, and the values of the last factorize
   gab::Cholesky chol;
-  std::string message;  // of the last call: "" when it succeeded
+  char message[1024] = "";  // of the last call: "" when it succeeded (no allocation to fail)
 };
 
 namespace gab {
@@ -29,7 +30,7 @@ Status import_pattern(int32_t n, const int32_t* colptr, const int32_t* rowind, C
   GAB_RETURN_IF_ERROR(require(colptr != nullptr, "colptr is NULL"));
   GAB_RETURN_IF_ERROR(require(colptr[0] == 0, "colptr[0] = " + std::to_string(colptr[0]) + ": must be 0"));
   for (int32_t j = 0; j < n; ++j) {
-    GAB_RETURN_IF_ERROR(require(colptr[j + 1] >= colptr[j], "colptr decreases at column " + std::to_string(j)));
+    if (colptr[j + 1] < colptr[j]) return invalid("colptr decreases at column " + std::to_string(j));
   }
   GAB_RETURN_IF_ERROR(require(rowind != nullptr, "rowind is NULL"));
   lower->nrows = lower->ncols = n;
@@ -39,9 +40,11 @@ Status import_pattern(int32_t n, const int32_t* colptr, const int32_t* rowind, C
   GAB_RETURN_IF_ERROR(check_csc(*lower));
   for (int32_t j = 0; j < n; ++j) {
     const int32_t first = colptr[j] < colptr[j + 1] ? rowind[colptr[j]] : n;
-    GAB_RETURN_IF_ERROR(require(first >= j, "column " + std::to_string(j) + ": row " + std::to_string(first) +
-                                                " is above the diagonal (give the lower triangle)"));
-    GAB_RETURN_IF_ERROR(require(first == j, "column " + std::to_string(j) + " has no diagonal entry"));
+    if (first < j) {
+      return invalid("column " + std::to_string(j) + ": row " + std::to_string(first) +
+                     " is above the diagonal (give the lower triangle)");
+    }
+    if (first > j) return invalid("column " + std::to_string(j) + " has no diagonal entry");
   }
   return Status::Ok();
 }
@@ -50,7 +53,7 @@ Status factorize(gab_cholesky* c, const double* values) {
   GAB_RETURN_IF_ERROR(require(values != nullptr, "values is NULL"));
   const size_t nnz = c->lower.rowind.size();
   for (size_t k = 0; k < nnz; ++k) {
-    GAB_RETURN_IF_ERROR(require(std::isfinite(values[k]), "values[" + std::to_string(k) + "] is not finite"));
+    if (!std::isfinite(values[k])) return invalid("values[" + std::to_string(k) + "] is not finite");
   }
   c->lower.values.assign(values, values + nnz);
   return c->chol.factorize(c->lower);
@@ -62,20 +65,17 @@ Status factorize(gab_cholesky* c, const double* values) {
 template <class Body>
 int on_handle(gab_cholesky* c, const char* function, bool needs_factor, char* message, size_t size, Body&& body) {
   if (c == nullptr) {
-    write_message(std::string(function) + ": c is NULL", message, size);
+    write_message(function, "c is NULL", message, size);
     return GAB_E_INVALID_ARGUMENT;
   }
-  char kept[1024];
-  int code;
+  int code = GAB_E_STATE;
   if (needs_factor && !c->chol.factorized()) {
-    code = GAB_E_STATE;
-    write_message(std::string(function) + ": no factorization: call gab_cholesky_factorize first (or it failed)",
-                  kept, sizeof kept);
+    std::snprintf(c->message, sizeof c->message,
+                  "%s: no factorization: call gab_cholesky_factorize first (or it failed)", function);
   } else {
-    code = guarded(function, kept, sizeof kept, body);
+    code = guarded(function, c->message, sizeof c->message, body);
   }
-  c->message = kept;
-  write_message(c->message, message, size);
+  if (message != nullptr && size > 0) std::snprintf(message, size, "%s", c->message);
   return code;
 }
 
@@ -124,7 +124,7 @@ extern "C" int gab_cholesky_add_anchor(gab_cholesky* c, int32_t j, double w) {
 }
 
 extern "C" const char* gab_cholesky_message(const gab_cholesky* c) {
-  return c == nullptr ? "gab_cholesky_message: c is NULL" : c->message.c_str();
+  return c == nullptr ? "gab_cholesky_message: c is NULL" : c->message;
 }
 
 extern "C" void gab_cholesky_destroy(gab_cholesky* c) { delete c; }
