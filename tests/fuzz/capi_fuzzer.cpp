@@ -1,0 +1,59 @@
+// libFuzzer target: the C API's decoder entry point, gab_decompress, on
+// untrusted bytes (issue 20: the C boundary fed hostile bytes). The first
+// input byte picks max_anchors (bit 0 set: a prefix of byte >> 1 anchors,
+// else the whole file); the rest is the file. Checks beyond "no crash": a
+// failure is a known code with a one-line message starting
+// "gab_decompress: " and NULL / 0 outputs; a success is a mesh with finite
+// coordinates and triangles inside it. The decoder behind it is fuzzed with
+// tighter limits by gab_fuzz_gab; the C API keeps the decoder's default
+// limits, so files declaring more than kMaxVertices vertices (whose forged
+// connectivity could ask for gigabytes within those limits) are skipped.
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+#include "fuzz_check.h"
+#include "gab/codec/gab_format.h"
+#include "gab/gab.h"
+
+namespace {
+
+constexpr uint32_t kMaxVertices = 4096;
+
+uint32_t declared_vertices(const uint8_t* file, size_t size) {
+  if (size < 16) return 0;
+  return static_cast<uint32_t>(file[12]) | static_cast<uint32_t>(file[13]) << 8 |
+         static_cast<uint32_t>(file[14]) << 16 | static_cast<uint32_t>(file[15]) << 24;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  if (size < 1) return 0;
+  const uint8_t* file = data + 1;
+  const size_t file_size = size - 1;
+  if (declared_vertices(file, file_size) > kMaxVertices) return 0;
+  const int32_t max_anchors = (data[0] & 1) ? data[0] >> 1 : -1;
+  double* positions = nullptr;
+  int32_t* triangles = nullptr;
+  int32_t n = -1, t = -1;
+  char message[256];
+  const int code = gab_decompress(file, file_size, max_anchors, &positions, &n, &triangles, &t, message,
+                                  sizeof message);
+  if (code != GAB_OK) {
+    gab_fuzz::require(code > GAB_OK && code <= GAB_E_INTERNAL && code != GAB_E_INTERNAL, "unknown or internal code");
+    gab_fuzz::require(std::strncmp(message, "gab_decompress: ", 16) == 0, "message without the function's name");
+    gab_fuzz::require(std::strchr(message, '\n') == nullptr, "message spans lines");
+    gab_fuzz::require(positions == nullptr && triangles == nullptr && n == 0 && t == 0, "outputs set on failure");
+    return 0;
+  }
+  gab_fuzz::require(message[0] == '\0', "message on success");
+  gab_fuzz::require(n > 0 && t > 0 && positions != nullptr && triangles != nullptr, "empty mesh on success");
+  for (int64_t i = 0; i < 3 * int64_t{n}; ++i) gab_fuzz::require(std::isfinite(positions[i]), "non-finite coordinate");
+  for (int64_t i = 0; i < 3 * int64_t{t}; ++i) {
+    gab_fuzz::require(triangles[i] >= 0 && triangles[i] < n, "triangle index out of range");
+  }
+  gab_free(positions);
+  gab_free(triangles);
+  return 0;
+}
