@@ -1,5 +1,6 @@
 // gab_compress, gab_compress_ex, gab_compress_options_init: the encoder
 // (gab/codec/encoder.h) behind the C door.
+#include <algorithm>
 #include <cstddef>
 #include <cstring>
 #include <thread>
@@ -66,8 +67,11 @@ Status read_options(const gab_compress_options* in, EncodeOptions* out) {
   out->reorder = o.reorder != 0;
   out->refine = o.refine != 0;
   const unsigned cores = std::thread::hardware_concurrency();
-  out->threads = o.threads > 0 ? o.threads : static_cast<int32_t>(std::min<unsigned>(std::max(1u, cores), kMaxFactorThreads));
-  out->detail = o.detail == GAB_DETAIL_ON ? DetailMode::kOn : o.detail == GAB_DETAIL_OFF ? DetailMode::kOff : DetailMode::kAuto;
+  out->threads =
+      o.threads > 0 ? o.threads : static_cast<int32_t>(std::min<unsigned>(std::max(1u, cores), kMaxFactorThreads));
+  out->detail = o.detail == GAB_DETAIL_ON    ? DetailMode::kOn
+                : o.detail == GAB_DETAIL_OFF ? DetailMode::kOff
+                                             : DetailMode::kAuto;
   return Status::Ok();
 }
 
