@@ -1,7 +1,7 @@
 // The dense kernels led by a thread with a team (kernel_team.h) give the
 // same bits as alone, on the packed and the unpacked paths of every SIMD
 // level: the tree-parallel factorization relies on it.
-#include "kernel_team.h"
+#include "factor/kernel_team.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // The kernels' fork-join team: one job at a time, published through an
 // atomic generation counter (release) and completed through a countdown
 // (acquire), so the helpers see the leader's data and the leader theirs.
-#include "kernel_team.h"
+#include "factor/kernel_team.h"
 
 #include <thread>
 

@@ -20,7 +20,7 @@
 #include <algorithm>
 #include <cstdlib>
 
-#include "nested_dissection_graph.h"
+#include "ordering/nested_dissection_graph.h"
 
 namespace gab {
 namespace nd {

@@ -6,7 +6,7 @@
 // seeds are tried and the smallest balanced separators kept.
 #include <algorithm>
 
-#include "nested_dissection_graph.h"
+#include "ordering/nested_dissection_graph.h"
 
 namespace gab {
 namespace nd {

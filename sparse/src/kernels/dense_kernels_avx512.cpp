@@ -9,7 +9,7 @@
 // accumulators cover the FMA latency x throughput product (2 pipes x 4
 // cycles = 8 independent chains) three times over and leave 8 registers for
 // the A vectors and broadcasts. Partial tiles use masks, never a scratch copy.
-#include "dense_kernels_internal.h"
+#include "kernels/dense_kernels_internal.h"
 
 #if defined(__x86_64__)
 

@@ -15,7 +15,7 @@
 // edges. A separator of a coarse level therefore still separates the part's
 // vertices when projected down; only the edge weights the matching reads are
 // approximate near the cut.
-#include "nested_dissection_graph.h"
+#include "ordering/nested_dissection_graph.h"
 
 namespace gab {
 namespace nd {

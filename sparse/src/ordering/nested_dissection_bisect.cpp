@@ -12,7 +12,7 @@
 // on (the idea of METIS's multiple separators, Karypis & Kumar sec. 6).
 #include <algorithm>
 
-#include "nested_dissection_graph.h"
+#include "ordering/nested_dissection_graph.h"
 
 namespace gab {
 namespace nd {

@@ -7,7 +7,7 @@
 // broadcast-FMA micro-kernel of Goto / BLIS sized for the 16 ymm registers:
 // 12 accumulators + 3 A vectors + 1 broadcast. Partial tiles use
 // vmaskmov loads/stores (fault-free past the end of a column).
-#include "dense_kernels_internal.h"
+#include "kernels/dense_kernels_internal.h"
 
 #if defined(__x86_64__)
 

@@ -7,7 +7,7 @@
 // fine graph's expensive ones.
 #include <algorithm>
 
-#include "nested_dissection_graph.h"
+#include "ordering/nested_dissection_graph.h"
 
 namespace gab {
 namespace nd {

@@ -19,7 +19,7 @@
 #include <thread>
 
 #include "gab/sparse/supernodal.h"
-#include "solve_kernels.h"
+#include "kernels/solve_kernels.h"
 
 namespace gab {
 namespace {

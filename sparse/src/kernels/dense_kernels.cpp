@@ -11,7 +11,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "dense_kernels_internal.h"
+#include "kernels/dense_kernels_internal.h"
 
 #if defined(__x86_64__)
 #include <cpuid.h>

@@ -20,7 +20,7 @@
 #include <limits>
 
 #include "gab/sparse/dense_kernels.h"
-#include "kernel_team.h"
+#include "factor/kernel_team.h"
 
 namespace gab {
 namespace dense_detail {

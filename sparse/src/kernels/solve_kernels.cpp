@@ -5,9 +5,9 @@
 // update follows the scalar order, so the axpy-form kernels give identical
 // results at every width; only the dot-form reductions (transposed solves)
 // sum in a width-dependent order.
-#include "solve_kernels.h"
+#include "kernels/solve_kernels.h"
 
-#include "simd_vec.h"
+#include "kernels/simd_vec.h"
 
 namespace gab {
 namespace solve_detail {

@@ -3,9 +3,9 @@
 // time while x stays in a register across the whole run of rotations: the
 // block is read and written exactly once. No FMA, and the same operation
 // order at every width, so all levels give bit-identical factors.
-#include "update_kernels.h"
+#include "update/update_kernels.h"
 
-#include "simd_vec.h"
+#include "kernels/simd_vec.h"
 
 namespace gab {
 namespace update_detail {

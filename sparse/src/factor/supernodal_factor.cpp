@@ -27,7 +27,7 @@
 #include <thread>
 
 #include "gab/sparse/supernodal.h"
-#include "kernel_team.h"
+#include "factor/kernel_team.h"
 
 namespace gab {
 

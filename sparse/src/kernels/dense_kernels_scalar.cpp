@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cstddef>
 
-#include "dense_kernels_internal.h"
+#include "kernels/dense_kernels_internal.h"
 
 namespace gab {
 namespace dense_detail {

@@ -5,7 +5,7 @@
 // sides of a separator first, the separator last, recursively.
 #include <algorithm>
 
-#include "nested_dissection_graph.h"
+#include "ordering/nested_dissection_graph.h"
 
 namespace gab {
 namespace nd {

@@ -17,7 +17,7 @@
 #include <string>
 
 #include "gab/sparse/amd_graph.h"
-#include "nested_dissection_graph.h"
+#include "ordering/nested_dissection_graph.h"
 
 namespace gab {
 namespace {

@@ -19,7 +19,7 @@
 #include <cmath>
 #include <string>
 
-#include "update_kernels.h"
+#include "update/update_kernels.h"
 
 namespace gab {
 
