@@ -21,6 +21,7 @@
 #include "cli.h"
 #include "commands.h"
 #include "gab/mesh/file_io.h"
+#include "gab/mesh/normal_matrix.h"
 #include "gab/sparse/cholesky.h"
 #include "gab/sparse/factor_schedule.h"
 #include "gab/sparse/nested_dissection.h"
@@ -57,23 +58,6 @@ struct StudyResult {
   bool diagonal_positive = true;
   std::vector<UpdateRecord> records;
 };
-
-// The benchmark update sequence (README, "The command-line tool", gab study).
-std::vector<int32_t> update_sequence(int32_t n, const std::vector<int32_t>& initial, int64_t count) {
-  std::vector<char> anchored(n, 0);
-  for (int32_t a : initial) anchored[a] = 1;
-  int64_t free_vertices = n;
-  for (int32_t a : initial) free_vertices -= anchored[a] ? 1 : 0;
-  std::vector<int32_t> seq;
-  count = std::min<int64_t>(count, free_vertices);
-  for (uint64_t t = 1; static_cast<int64_t>(seq.size()) < count; ++t) {
-    const int32_t v = static_cast<int32_t>((t * 2654435761ull) % static_cast<uint64_t>(n));
-    if (anchored[v]) continue;
-    anchored[v] = 1;
-    seq.push_back(v);
-  }
-  return seq;
-}
 
 Status study_one(const std::string& path, const std::string& ordering, int64_t updates,
                  int64_t batch, int64_t anchors, int64_t subdivide, int64_t threads,
@@ -116,7 +100,7 @@ Status study_one(const std::string& path, const std::string& ordering, int64_t u
   out->n = n;
   out->nnz_L = chol.symbolic().nnz_L;
 
-  const std::vector<int32_t> seq = update_sequence(n, sys.anchors, updates);
+  const std::vector<int32_t> seq = benchmark_update_sequence(n, sys.anchors, updates);
   {
     const SymbolicFactor& f = chol.symbolic();
     for (int32_t v : seq) {

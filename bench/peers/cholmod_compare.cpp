@@ -62,21 +62,6 @@ double copy_bandwidth() {
   return 2.0 * n * sizeof(double) / median(t);
 }
 
-// The benchmark update sequence (README, "The command-line tool", gab study).
-std::vector<int32_t> update_sequence(int32_t n, const std::vector<int32_t>& initial, int count) {
-  std::vector<char> anchored(n, 0);
-  for (int32_t a : initial) anchored[a] = 1;
-  std::vector<int32_t> seq;
-  for (uint64_t t = 1; static_cast<int>(seq.size()) < count; ++t) {
-    const int32_t v = static_cast<int32_t>((t * 2654435761ull) % static_cast<uint64_t>(n));
-    if (!anchored[v]) {
-      anchored[v] = 1;
-      seq.push_back(v);
-    }
-  }
-  return seq;
-}
-
 void compare(const std::string& path) {
   gab::Mesh mesh;
   if (!gab::read_off(path, &mesh).ok()) {
@@ -161,7 +146,7 @@ void compare(const std::string& path) {
   // Updates: CHOLMOD must first convert to a simplicial LDL^T (not timed),
   // then cholmod_updown with one column (single) or eight (rank-8 batch).
   // C holds w = 1 at the permuted row of each anchor.
-  const std::vector<int32_t> seq = update_sequence(n, anchors, kUpdates);
+  const std::vector<int32_t> seq = gab::benchmark_update_sequence(n, anchors, kUpdates);
   const int32_t* cperm = static_cast<int32_t*>(lf->Perm);
   std::vector<int32_t> cinv(n);
   for (int32_t k = 0; k < n; ++k) cinv[cperm[k]] = k;

@@ -41,21 +41,6 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-// The benchmark update sequence (README, "The command-line tool", gab study).
-std::vector<int32_t> update_sequence(int32_t n, const std::vector<int32_t>& initial, int count) {
-  std::vector<char> anchored(n, 0);
-  for (int32_t a : initial) anchored[a] = 1;
-  std::vector<int32_t> seq;
-  for (uint64_t t = 1; static_cast<int>(seq.size()) < count && seq.size() + initial.size() < anchored.size(); ++t) {
-    const int32_t v = static_cast<int32_t>((t * 2654435761ull) % static_cast<uint64_t>(n));
-    if (!anchored[v]) {
-      anchored[v] = 1;
-      seq.push_back(v);
-    }
-  }
-  return seq;
-}
-
 // CHOLMOD's METIS permutation of the lower triangle `a`.
 std::vector<int32_t> metis_order(const gab::CscMatrix& a, cholmod_common* c) {
   const int32_t n = a.ncols;
@@ -71,6 +56,31 @@ std::vector<int32_t> metis_order(const gab::CscMatrix& a, cholmod_common* c) {
   return perm;
 }
 
+enum class Peer { kGabAmd, kGabNestedDissection, kCholmodMetis };
+
+struct Contender {
+  Peer peer;
+  const char* name;
+};
+constexpr Contender kContenders[] = {
+    {Peer::kGabAmd, "gab amd"}, {Peer::kGabNestedDissection, "gab nd"}, {Peer::kCholmodMetis, "cholmod metis"}};
+
+std::vector<int32_t> order(const gab::CscMatrix& a, Peer peer, cholmod_common* c) {
+  std::vector<int32_t> perm;
+  switch (peer) {
+    case Peer::kGabAmd:
+      gab_bench::check(gab::amd_order(a, &perm), "ordering_compare: amd_order");
+      break;
+    case Peer::kGabNestedDissection:
+      gab_bench::check(gab::nested_dissection_order(a, &perm), "ordering_compare: nested_dissection_order");
+      break;
+    case Peer::kCholmodMetis:
+      perm = metis_order(a, c);
+      break;
+  }
+  return perm;
+}
+
 void compare(const std::string& path, cholmod_common* c) {
   gab::Mesh mesh;
   if (!gab::read_mesh(path, &mesh).ok()) {
@@ -82,20 +92,14 @@ void compare(const std::string& path, cholmod_common* c) {
   gab::CscMatrix a;
   gab_bench::check(gab::assemble_normal_matrix(g, anchors, 1.0, &a), "ordering_compare: assemble_normal_matrix");
   const int32_t n = a.ncols;
-  const std::vector<int32_t> seq = update_sequence(n, anchors, kUpdates);
+  const std::vector<int32_t> seq = gab::benchmark_update_sequence(n, anchors, kUpdates);
   const std::string name = path.substr(path.find_last_of('/') + 1);
-  for (const char* ordering : {"gab amd", "gab nd", "cholmod metis"}) {
+  for (const Contender& ordering : kContenders) {
     std::vector<int32_t> perm;
     std::vector<double> t;
     for (int r = 0; r < kRepeat; ++r) {
       const double t0 = now();
-      if (ordering[4] == 'a') {
-        gab_bench::check(gab::amd_order(a, &perm), "ordering_compare: amd_order");
-      } else if (ordering[4] == 'n') {
-        gab_bench::check(gab::nested_dissection_order(a, &perm), "ordering_compare: nested_dissection_order");
-      } else {
-        perm = metis_order(a, c);
-      }
+      perm = order(a, ordering.peer, c);
       t.push_back(now() - t0);
     }
     gab::AnalyzeOptions options;
@@ -112,7 +116,7 @@ void compare(const std::string& path, cholmod_common* c) {
       touched += static_cast<double>(st.touched);
     }
     touched /= std::max<size_t>(1, seq.size());
-    std::printf("| %s | %d | %s | %.3f | %.4g | %.4g | %.4g | %.2f |\n", name.c_str(), n, ordering, median(t),
+    std::printf("| %s | %d | %s | %.3f | %.4g | %.4g | %.4g | %.2f |\n", name.c_str(), n, ordering.name, median(t),
                 static_cast<double>(chol.symbolic().nnz_L), chol.symbolic().flops, touched, touched / n);
     std::fflush(stdout);
   }

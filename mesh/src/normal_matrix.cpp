@@ -149,6 +149,24 @@ std::vector<int32_t> benchmark_anchors(const EdgeGraph& graph, int32_t k0) {
   return anchors;
 }
 
+std::vector<int32_t> benchmark_update_sequence(int32_t n, const std::vector<int32_t>& initial, int64_t count) {
+  std::vector<char> anchored(n, 0);
+  int64_t free_vertices = n;
+  for (int32_t a : initial) {
+    free_vertices -= anchored[a] ? 0 : 1;
+    anchored[a] = 1;
+  }
+  std::vector<int32_t> seq;
+  count = std::min<int64_t>(count, free_vertices);
+  for (uint64_t t = 1; static_cast<int64_t>(seq.size()) < count; ++t) {
+    const int32_t v = static_cast<int32_t>((t * 2654435761ull) % static_cast<uint64_t>(n));
+    if (anchored[v]) continue;
+    anchored[v] = 1;
+    seq.push_back(v);
+  }
+  return seq;
+}
+
 std::vector<double> anchor_right_hand_sides(const Mesh& mesh, const std::vector<int32_t>& anchors,
                                             double weight) {
   const int32_t n = mesh.num_vertices();

@@ -87,5 +87,13 @@ TEST(BenchmarkAnchorsTest, SpreadThenOnePerUncoveredComponent) {
   EXPECT_EQ(benchmark_anchors(g, 16).size(), 8u);
 }
 
+TEST(NormalMatrixTest, BenchmarkUpdateSequenceFollowsTheRule) {
+  // n = 10: t * 2654435761 mod 10 = t mod 10 (the multiplier ends in 1), so
+  // the rule visits 1, 2, 3, ... skipping the initial anchors 0, 2 and 5.
+  EXPECT_EQ(benchmark_update_sequence(10, {0, 2, 5}, 4), (std::vector<int32_t>{1, 3, 4, 6}));
+  // Never more than the free vertices, each once.
+  EXPECT_EQ(benchmark_update_sequence(10, {0, 2, 5, 2}, 100), (std::vector<int32_t>{1, 3, 4, 6, 7, 8, 9}));
+}
+
 }  // namespace
 }  // namespace gab

@@ -27,6 +27,12 @@ Status assemble_normal_matrix(const EdgeGraph& graph, const std::vector<int32_t>
 // connected component that has none. O(V + E).
 std::vector<int32_t> benchmark_anchors(const EdgeGraph& graph, int32_t k0);
 
+// The benchmark update rule (README, "The command-line tool", gab study):
+// v_t = t * 2654435761 mod n for t = 1, 2, ..., skipping vertices in
+// `initial` or already taken; min(count, vertices not in initial) of them.
+// O(n + the steps taken).
+std::vector<int32_t> benchmark_update_sequence(int32_t n, const std::vector<int32_t>& initial, int64_t count);
+
 // Right-hand sides w^2 E^T c for x, y, z: n x 3 column-major, the anchors'
 // coordinates at their rows, zero elsewhere.
 std::vector<double> anchor_right_hand_sides(const Mesh& mesh, const std::vector<int32_t>& anchors,
