@@ -10,6 +10,7 @@
 #include "container/gab_header.h"
 #include "detail/detail_chunk.h"
 #include "gab/codec/decoder.h"
+#include "pipeline/ordering_choice.h"
 
 namespace gab {
 
@@ -35,8 +36,7 @@ Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
   info->reordered = header.reordered();
   info->versioned_valence = header.versioned_valence();
   info->detail = header.detail();
-  info->ordering = header.ordering == kGabOrderingNestedDissection ? MatrixOrdering::kNestedDissection
-                                                                   : MatrixOrdering::kAmd;
+  info->ordering = file_ordering(header.ordering);
   for (int c = 0; c < 3; ++c) info->box_min[c] = header.box_min[c];
   info->step = header.step;
   info->anchors = header.anchors;

@@ -26,9 +26,12 @@ MatrixOrdering encoder_ordering(MatrixOrdering asked, int32_t num_vertices) {
   return num_vertices >= kNestedDissectionFrom ? MatrixOrdering::kNestedDissection : MatrixOrdering::kAmd;
 }
 
-MatrixOrdering decoder_ordering(MatrixOrdering asked, uint8_t file_code) {
-  if (asked != MatrixOrdering::kAuto) return asked;
+MatrixOrdering file_ordering(uint8_t file_code) {
   return file_code == kGabOrderingNestedDissection ? MatrixOrdering::kNestedDissection : MatrixOrdering::kAmd;
+}
+
+MatrixOrdering decoder_ordering(MatrixOrdering asked, uint8_t file_code) {
+  return asked != MatrixOrdering::kAuto ? asked : file_ordering(file_code);
 }
 
 uint8_t ordering_code(MatrixOrdering ordering) {

@@ -17,11 +17,13 @@ constexpr int32_t kNestedDissectionFrom = 100000;
 // `asked` unless kAuto; for kAuto, nested dissection from
 // kNestedDissectionFrom vertices, AMD below. Never returns kAuto.
 MatrixOrdering encoder_ordering(MatrixOrdering asked, int32_t num_vertices);
-// `asked` unless kAuto; for kAuto the one the file's encoder used
-// (`file_code`, a kGabOrdering* value): the same factor, the same shapes.
-MatrixOrdering decoder_ordering(MatrixOrdering asked, uint8_t file_code);
+// The ordering a header's code (a kGabOrdering* value) names.
+MatrixOrdering file_ordering(uint8_t file_code);
 // The header's code of a concrete ordering.
 uint8_t ordering_code(MatrixOrdering ordering);
+// `asked` unless kAuto; for kAuto the one the file's encoder used
+// (file_ordering): the same factor, the same shapes.
+MatrixOrdering decoder_ordering(MatrixOrdering asked, uint8_t file_code);
 
 // One encode's orderings: the choice, and the permutation the first
 // analysis computed, which every later factorization of the same
