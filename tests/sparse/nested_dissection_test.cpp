@@ -306,6 +306,59 @@ TEST(NestedDissection, SameInputSamePermutation) {
   EXPECT_EQ(first, second);
 }
 
+// The sides of a separator dissected on other threads give the permutation
+// and tree of one thread: each piece draws from its own generator stream.
+TEST(NestedDissection, ThreadsGiveTheSamePermutationAndTree) {
+  const CscMatrix a = two_ring_grid(90, 80);
+  NestedDissectionOptions options;
+  options.leaf_size = 100;
+  options.thread_size = 300;  // fork down to pieces of a few hundred vertices
+  options.runs_from = 1000;   // and take several coarsenings per separator
+  std::vector<int32_t> serial;
+  SeparatorTree serial_tree;
+  ASSERT_TRUE(nested_dissection_order(a, &serial, options, &serial_tree).ok());
+  expect_valid_dissection(a, serial, serial_tree);
+  ASSERT_GE(serial_tree.nodes.size(), 15u);  // deep enough for 4 threads to fork twice
+  for (int32_t threads : {2, 3, 4}) {
+    options.threads = threads;
+    std::vector<int32_t> perm;
+    SeparatorTree tree;
+    ASSERT_TRUE(nested_dissection_order(a, &perm, options, &tree).ok());
+    EXPECT_EQ(perm, serial) << threads << " threads";
+    ASSERT_EQ(tree.nodes.size(), serial_tree.nodes.size()) << threads << " threads";
+    for (size_t s = 0; s < tree.nodes.size(); ++s) {
+      const SeparatorTree::Node &x = tree.nodes[s], &y = serial_tree.nodes[s];
+      EXPECT_TRUE(x.first == y.first && x.size == y.size && x.subtree_first == y.subtree_first &&
+                  x.parent == y.parent && x.leaf == y.leaf)
+          << "node " << s << ", " << threads << " threads";
+    }
+    EXPECT_EQ(tree.children, serial_tree.children);
+    EXPECT_EQ(tree.column_node, serial_tree.column_node);
+  }
+}
+
+// Every refinement scheme and the several-coarsenings search give separators
+// that separate, on meshes and on random sparse graphs.
+TEST(NestedDissection, RefinementSchemesGiveValidDissections) {
+  const CscMatrix grid = two_ring_grid(60, 55);
+  for (bool one_sided : {false, true}) {
+    for (int32_t runs : {1, 4}) {
+      NestedDissectionOptions options;
+      options.one_sided_refinement = one_sided;
+      options.runs = runs;
+      options.runs_from = 500;
+      options.leaf_size = 60;
+      const std::vector<int32_t> perm = order_checked(grid, options);
+      EXPECT_LT(solve_residual(grid, perm), 1e-10) << one_sided << " " << runs;
+      for (uint32_t seed = 1; seed <= 3; ++seed) {
+        const CscMatrix a = random_spd(700 + 100 * seed, 3.0, seed);
+        const std::vector<int32_t> random_perm = order_checked(a, options);
+        EXPECT_LT(solve_residual(a, random_perm), 1e-10) << one_sided << " " << runs << " seed " << seed;
+      }
+    }
+  }
+}
+
 // Seven vertices in a row, dissected down to single vertices: the middle one
 // (3) is the root separator, 1 and 5 the next ones, 0, 2, 4, 6 the leaves.
 TEST(SeparatorBound, SevenVertexPathByHand) {

@@ -45,8 +45,12 @@ Status fill_reducing_order(const CscMatrix& lower, const AnalyzeOptions& options
   switch (options.ordering) {
     case Ordering::kAmd:
       return amd_order(lower, order, options.amd);
-    case Ordering::kNestedDissection:
-      return nested_dissection_order(lower, order);
+    case Ordering::kNestedDissection: {
+      // The factorization's threads dissect too: the permutation is the same for any count.
+      NestedDissectionOptions nd;
+      nd.threads = options.threads;
+      return nested_dissection_order(lower, order, nd);
+    }
     case Ordering::kNatural:
       order->resize(n);
       for (int32_t i = 0; i < n; ++i) (*order)[i] = i;

@@ -13,8 +13,10 @@
 #include "gab/sparse/nested_dissection.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <string>
+#include <thread>
 
 #include "gab/sparse/amd_graph.h"
 #include "ordering/nested_dissection_graph.h"
@@ -24,79 +26,132 @@ namespace {
 
 using nd::Graph;
 
+// A subtree's generator seed, from its parent's and which child it is: every
+// piece draws from its own stream, so the permutation does not depend on the
+// order the pieces are dissected in, nor on how many threads do it.
+uint64_t child_seed(uint64_t parent, uint64_t child) {
+  SplitMix64 mix(parent ^ (0xD1B54A32D192ED03ull * (child + 1)));
+  return mix.next();
+}
+
+// The dissection of one graph into perm_; on one thread, or forking its two
+// sides onto another thread while `threads` allows.
 class Dissection {
  public:
   Dissection(const NestedDissectionOptions& options, int32_t n, std::vector<int32_t>* perm)
-      : options_(options), rng_(options.seed), perm_(*perm) {
+      : options_(options), perm_(*perm) {
     ws_.grow(n);
   }
 
   // Orders g, whose vertex v is original vertex label[v], into
-  // perm[begin .. begin + g.n); the tree nodes of its pieces' roots are
-  // appended to *roots. h holds coarsenings of g inherited from its parent
-  // (none for the whole graph). With find_components, g's connected
-  // components are ordered one by one. The sides of a separator are not
-  // searched for components: the search cost a tenth of the ordering's time
-  // and found none on the shared meshes, and find_separator copes with a
-  // disconnected graph (its separator may then be empty). Consumes g, label and h.
+  // perm[begin .. begin + g.n), with `threads` threads; the tree nodes of
+  // its pieces are appended to *nodes (children before parents), the
+  // indices of their roots in *nodes to *roots. h holds coarsenings of g
+  // inherited from its parent (none for the whole graph). With
+  // find_components, g's connected components are ordered one by one. The
+  // sides of a separator are not searched for components: the search cost a
+  // tenth of the ordering's time and found none on the shared meshes, and
+  // find_separator copes with a disconnected graph (its separator may then
+  // be empty). Consumes g, label and h.
   Status order(Graph&& g, std::vector<int32_t>&& label, nd::Hierarchy&& h, bool find_components, int32_t begin,
+               uint64_t seed, int32_t threads, std::vector<SeparatorTree::Node>* nodes,
                std::vector<int32_t>* roots) {
     if (g.n == 0) return Status::Ok();
     if (find_components) {
       std::vector<int32_t> component;
       const int32_t count = nd::connected_components(g, &ws_, &component);
-      if (count > 1) return order_components(g, label, h, component, count, begin, roots);
+      if (count > 1) return order_components(g, label, h, component, count, begin, seed, threads, nodes, roots);
     }
-    if (is_leaf(g.n)) return order_leaf(g, label, begin, roots);
+    if (is_leaf(g.n)) return order_leaf(g, label, begin, nodes, roots);
 
     std::vector<uint8_t> where;
-    nd::find_separator(g, options_, &rng_, &ws_, &h, &where);
+    nd::Rng rng(seed);
+    nd::find_separator(g, options_, &rng, &ws_, &h, &where);
     std::vector<int32_t> side[3];
     for (int32_t v = 0; v < g.n; ++v) side[where[v]].push_back(v);
     // No proper separator (a clique, say), or one so lopsided that recursing
     // on it would go deep for little gain: the piece is ordered whole.
     const size_t larger = std::max(side[nd::kLeft].size(), side[nd::kRight].size());
     if (side[nd::kLeft].empty() || side[nd::kRight].empty() || larger > 0.9 * g.n) {
-      return order_leaf(g, label, begin, roots);
+      return order_leaf(g, label, begin, nodes, roots);
     }
 
-    Graph part[2];
-    std::vector<int32_t> part_label[2];
-    nd::Hierarchy part_hierarchy[2];
-    for (int s = 0; s < 2; ++s) {
-      nd::induced_subgraph(g, side[s], &ws_, &part[s]);
-      // A part that will be a leaf needs no coarsening.
-      if (!is_leaf(part[s].n)) {
-        nd::restrict_hierarchy(g, h, side[s], options_.coarsest_size, &ws_, &part_hierarchy[s]);
-      }
-      part_label[s].reserve(side[s].size());
-      for (int32_t v : side[s]) part_label[s].push_back(label[v]);
-    }
-    const int32_t separator_first = begin + part[0].n + part[1].n;
+    const int32_t part_size[2] = {static_cast<int32_t>(side[nd::kLeft].size()),
+                                  static_cast<int32_t>(side[nd::kRight].size())};
+    const int32_t separator_first = begin + part_size[0] + part_size[1];
     for (size_t k = 0; k < side[nd::kSeparator].size(); ++k) {
       perm_[separator_first + k] = label[side[nd::kSeparator][k]];
     }
     const int32_t separator_size = static_cast<int32_t>(side[nd::kSeparator].size());
-    g = Graph();  // the parts are all the recursion needs
-    label = std::vector<int32_t>();
-    h = nd::Hierarchy();
+    const int32_t part_begin[2] = {begin, begin + part_size[0]};
+    Graph part[2];
+    std::vector<int32_t> part_label[2];
+    nd::Hierarchy part_hierarchy[2];
+    // Side s's subgraph, labels and coarsenings, read off g with workspace ws.
+    auto build_part = [&](int s, nd::Workspace* ws) {
+      nd::induced_subgraph(g, side[s], ws, &part[s]);
+      // A part that will be a leaf needs no coarsening.
+      if (!is_leaf(part[s].n)) {
+        nd::restrict_hierarchy(g, h, side[s], options_.coarsest_size, ws, &part_hierarchy[s]);
+      }
+      part_label[s].reserve(side[s].size());
+      for (int32_t v : side[s]) part_label[s].push_back(label[v]);
+    };
+    // The parts are all the recursion needs: g goes once both are built.
+    auto release_graph = [&] {
+      g = Graph();
+      label = std::vector<int32_t>();
+      h = nd::Hierarchy();
+    };
     std::vector<int32_t> children;
-    const int32_t left_size = part[0].n;
-    GAB_RETURN_IF_ERROR(
-        order(std::move(part[0]), std::move(part_label[0]), std::move(part_hierarchy[0]), false, begin, &children));
-    GAB_RETURN_IF_ERROR(order(std::move(part[1]), std::move(part_label[1]), std::move(part_hierarchy[1]), false,
-                              begin + left_size, &children));
-    roots->push_back(add_node(separator_first, separator_size, begin, /*leaf=*/false, children));
+    if (threads > 1 && std::min(part_size[0], part_size[1]) >= options_.thread_size) {
+      // The left side on a new thread with a dissection of its own (its own
+      // workspace and nodes), the right one here, each building its part
+      // (reading g, h and label, which the later of the two releases); the
+      // left's nodes go first, as on one thread.
+      const int32_t left_threads = threads / 2;
+      std::atomic<int32_t> built{0};
+      std::vector<SeparatorTree::Node> left_nodes, right_nodes;
+      std::vector<int32_t> left_roots, right_roots;
+      Status left_status = Status::Ok();
+      Dissection left(options_, g.n, &perm_);  // sized for g: build_part indexes by g's vertices
+      std::thread worker([&] {
+        build_part(0, &left.ws_);
+        if (built.fetch_add(1) == 1) release_graph();
+        left_status = left.order(std::move(part[0]), std::move(part_label[0]), std::move(part_hierarchy[0]), false,
+                                 part_begin[0], child_seed(seed, 0), left_threads, &left_nodes, &left_roots);
+      });
+      build_part(1, &ws_);
+      if (built.fetch_add(1) == 1) release_graph();
+      const Status right_status =
+          order(std::move(part[1]), std::move(part_label[1]), std::move(part_hierarchy[1]), false, part_begin[1],
+                child_seed(seed, 1), threads - left_threads, &right_nodes, &right_roots);
+      worker.join();
+      GAB_RETURN_IF_ERROR(left_status);
+      GAB_RETURN_IF_ERROR(right_status);
+      append_nodes(left_nodes, left_roots, nodes, &children);
+      append_nodes(right_nodes, right_roots, nodes, &children);
+    } else {
+      build_part(0, &ws_);
+      build_part(1, &ws_);
+      release_graph();
+      for (int s = 0; s < 2; ++s) {
+        GAB_RETURN_IF_ERROR(order(std::move(part[s]), std::move(part_label[s]), std::move(part_hierarchy[s]), false,
+                                  part_begin[s], child_seed(seed, s), 1, nodes, &children));
+      }
+    }
+    roots->push_back(add_node(separator_first, separator_size, begin, /*leaf=*/false, children, nodes));
     return Status::Ok();
   }
 
   // The dense rows, ordered last, as one root separating everything else.
-  void add_dense_root(int32_t first, int32_t size, const std::vector<int32_t>& children) {
-    add_node(first, size, 0, /*leaf=*/false, children);
+  void add_dense_root(int32_t first, int32_t size, const std::vector<int32_t>& children,
+                      std::vector<SeparatorTree::Node>* nodes) {
+    add_node(first, size, 0, /*leaf=*/false, children, nodes);
   }
 
-  void finish_tree(SeparatorTree* tree) {
-    tree->nodes = std::move(nodes_);
+  void finish_tree(std::vector<SeparatorTree::Node>&& nodes, SeparatorTree* tree) {
+    tree->nodes = std::move(nodes);
     const size_t count = tree->nodes.size();
     tree->child_ptr.assign(count + 1, 0);
     for (const SeparatorTree::Node& node : tree->nodes) {
@@ -123,8 +178,8 @@ class Dissection {
   bool is_leaf(int32_t n) const { return n <= std::max<int32_t>(options_.leaf_size, 2); }
 
   Status order_components(const Graph& g, const std::vector<int32_t>& label, const nd::Hierarchy& h,
-                          const std::vector<int32_t>& component, int32_t count, int32_t begin,
-                          std::vector<int32_t>* roots) {
+                          const std::vector<int32_t>& component, int32_t count, int32_t begin, uint64_t seed,
+                          int32_t threads, std::vector<SeparatorTree::Node>* nodes, std::vector<int32_t>* roots) {
     std::vector<std::vector<int32_t>> members(static_cast<size_t>(count));
     for (int32_t v = 0; v < g.n; ++v) members[component[v]].push_back(v);
     for (int32_t c = 0; c < count; ++c) {
@@ -135,7 +190,10 @@ class Dissection {
       std::vector<int32_t> sub_label;
       sub_label.reserve(members[c].size());
       for (int32_t v : members[c]) sub_label.push_back(label[v]);
-      GAB_RETURN_IF_ERROR(order(std::move(sub), std::move(sub_label), std::move(sub_hierarchy), false, begin, roots));
+      // Components one after another on this thread: a mesh with several
+      // large components is rare, and each still forks below.
+      GAB_RETURN_IF_ERROR(order(std::move(sub), std::move(sub_label), std::move(sub_hierarchy), false, begin,
+                                child_seed(seed, 2 + static_cast<uint64_t>(c)), threads, nodes, roots));
       begin += static_cast<int32_t>(members[c].size());
     }
     return Status::Ok();
@@ -145,7 +203,7 @@ class Dissection {
   // sorted when the original graph's are: the induced subgraphs keep the
   // order. Otherwise on a sorted copy.
   Status order_leaf(const Graph& g, const std::vector<int32_t>& label, int32_t begin,
-                    std::vector<int32_t>* roots) {
+                    std::vector<SeparatorTree::Node>* nodes, std::vector<int32_t>* roots) {
     bool sorted = true;
     for (int32_t v = 0; v < g.n && sorted; ++v) {
       for (int32_t p = g.xadj[v] + 1; p < g.xadj[v + 1]; ++p) sorted &= g.adj[p - 1] < g.adj[p];
@@ -159,28 +217,38 @@ class Dissection {
       GAB_RETURN_IF_ERROR(amd_order_graph(g.n, g.xadj.data(), adj.data(), &local));
     }
     for (int32_t k = 0; k < g.n; ++k) perm_[begin + k] = label[local[k]];
-    roots->push_back(add_node(begin, g.n, begin, /*leaf=*/true, {}));
+    roots->push_back(add_node(begin, g.n, begin, /*leaf=*/true, {}, nodes));
     return Status::Ok();
   }
 
-  int32_t add_node(int32_t first, int32_t size, int32_t subtree_first, bool leaf,
-                   const std::vector<int32_t>& children) {
-    const int32_t id = static_cast<int32_t>(nodes_.size());
+  static int32_t add_node(int32_t first, int32_t size, int32_t subtree_first, bool leaf,
+                          const std::vector<int32_t>& children, std::vector<SeparatorTree::Node>* nodes) {
+    const int32_t id = static_cast<int32_t>(nodes->size());
     SeparatorTree::Node node;
     node.first = first;
     node.size = size;
     node.subtree_first = subtree_first;
     node.leaf = leaf;
-    nodes_.push_back(node);
-    for (int32_t c : children) nodes_[c].parent = id;
+    nodes->push_back(node);
+    for (int32_t c : children) (*nodes)[c].parent = id;
     return id;
   }
 
+  // Appends a side's nodes (numbered from 0) after *nodes, renumbered, and
+  // its roots, renumbered, to *roots.
+  static void append_nodes(const std::vector<SeparatorTree::Node>& side, const std::vector<int32_t>& side_roots,
+                           std::vector<SeparatorTree::Node>* nodes, std::vector<int32_t>* roots) {
+    const int32_t offset = static_cast<int32_t>(nodes->size());
+    for (SeparatorTree::Node node : side) {
+      if (node.parent >= 0) node.parent += offset;
+      nodes->push_back(node);
+    }
+    for (int32_t r : side_roots) roots->push_back(r + offset);
+  }
+
   const NestedDissectionOptions& options_;
-  nd::Rng rng_;
   nd::Workspace ws_;
   std::vector<int32_t>& perm_;
-  std::vector<SeparatorTree::Node> nodes_;
 };
 
 Status check_lower(const CscMatrix& lower) {
@@ -230,12 +298,14 @@ Status nested_dissection_order(const CscMatrix& lower, std::vector<int32_t>* per
     nd::induced_subgraph(g, kept, &ws, &sparse_part);
     g = std::move(sparse_part);
   }
+  std::vector<SeparatorTree::Node> nodes;
   std::vector<int32_t> roots;
-  GAB_RETURN_IF_ERROR(dissection.order(std::move(g), std::move(kept), nd::Hierarchy(), true, 0, &roots));
+  GAB_RETURN_IF_ERROR(dissection.order(std::move(g), std::move(kept), nd::Hierarchy(), true, 0, options.seed,
+                                       std::max(1, options.threads), &nodes, &roots));
   const int32_t dense_first = n - static_cast<int32_t>(dense.size());
   std::copy(dense.begin(), dense.end(), perm->begin() + dense_first);
-  if (!dense.empty()) dissection.add_dense_root(dense_first, static_cast<int32_t>(dense.size()), roots);
-  if (tree) dissection.finish_tree(tree);
+  if (!dense.empty()) dissection.add_dense_root(dense_first, static_cast<int32_t>(dense.size()), roots, &nodes);
+  if (tree) dissection.finish_tree(std::move(nodes), tree);
   return Status::Ok();
 }
 

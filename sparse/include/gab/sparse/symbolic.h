@@ -41,8 +41,10 @@ struct AnalyzeOptions {
   std::vector<int32_t> given_perm;  // used when ordering == kGiven
   RelaxOptions relax;
   // Threads for numeric factorizations (Cholesky; see factor_schedule.h):
-  // independent subtrees run concurrently. The factor is bit-identical for
-  // every count; 1 runs everything on the caller's thread.
+  // independent subtrees run concurrently; and for the nested-dissection
+  // ordering, whose sides of a separator are dissected concurrently. The
+  // permutation and the factor are bit-identical for every count; 1 runs
+  // everything on the caller's thread.
   int32_t threads = 1;
   // Cholesky::analyze refuses (kResourceExhausted, "the factor would exceed N
   // entries") a factor storing more entries than this, before it reserves

@@ -34,6 +34,9 @@ struct NestedDissectionOptions {
   // FM passes per level, and moves without improvement before a pass gives up.
   int32_t refine_passes = 6;
   int32_t refine_patience = 80;
+  // One-sided FM passes (each moves vertices into one side, alternating)
+  // instead of two-sided ones; refine_passes then counts pairs.
+  bool one_sided_refinement = true;
   // Coarsest separators carried up to the finest level with at most
   // trial_size vertices, where the smallest goes on and the others are dropped.
   int32_t candidates = 3;
@@ -47,9 +50,23 @@ struct NestedDissectionOptions {
   // Where several candidates are carried, they are the best distinct
   // separators of candidate_tries tries per candidate on the coarsest graph.
   int32_t candidate_tries = 3;
-  // Seed of the (self-contained, platform-independent) generator that orders
-  // the matching's visits and picks seeds: the result depends on nothing else.
+  // Graphs of at least runs_from vertices are coarsened `runs` times below
+  // a middle level (at most runs_levels coarsenings down, stopping at
+  // 1 / runs_ratio of the vertices), each run separated and refined up to
+  // it; the smallest separator there goes on.
+  int32_t runs = 5;
+  int32_t runs_from = 5000;
+  int32_t runs_levels = 4;
+  int32_t runs_ratio = 30;
+  // Seed of the (self-contained, platform-independent) generators that order
+  // the matching's visits and pick seeds, one stream per piece derived from
+  // its parent's: the result depends on nothing else.
   uint64_t seed = 0x9E3779B97F4A7C15ull;
+  // Threads: the two sides of a separator are dissected concurrently while
+  // threads remain and both sides have at least thread_size vertices. The
+  // permutation and tree are the same for every thread count.
+  int32_t threads = 1;
+  int32_t thread_size = 20000;
 };
 
 // The dissection as a tree. Node s owns the pivots perm[first .. first + size);
