@@ -66,7 +66,7 @@ struct NestedDissectionOptions {
   // threads remain and both sides have at least thread_size vertices. The
   // permutation and tree are the same for every thread count.
   int32_t threads = 1;
-  int32_t thread_size = 20000;
+  int32_t thread_size = 4000;
 };
 
 // The dissection as a tree. Node s owns the pivots perm[first .. first + size);
