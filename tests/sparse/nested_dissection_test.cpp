@@ -313,6 +313,7 @@ TEST(NestedDissection, ThreadsGiveTheSamePermutationAndTree) {
   NestedDissectionOptions options;
   options.leaf_size = 100;
   options.thread_size = 300;  // fork down to pieces of a few hundred vertices
+  options.thread_entries = 2000;  // and contract even small coarse graphs on two threads
   options.runs_from = 1000;   // and take several coarsenings per separator
   std::vector<int32_t> serial;
   SeparatorTree serial_tree;

@@ -66,7 +66,7 @@ class Dissection {
 
     std::vector<uint8_t> where;
     nd::Rng rng(seed);
-    nd::find_separator(g, options_, &rng, &ws_, &h, &where);
+    nd::find_separator(g, options_, threads, &rng, &ws_, &h, &where);
     std::vector<int32_t> side[3];
     for (int32_t v = 0; v < g.n; ++v) side[where[v]].push_back(v);
     // No proper separator (a clique, say), or one so lopsided that recursing

@@ -67,6 +67,10 @@ struct NestedDissectionOptions {
   // permutation and tree are the same for every thread count.
   int32_t threads = 1;
   int32_t thread_size = 4000;
+  // A graph with at least this many adjacency entries, coarsened where a
+  // second thread is free (the top separators), is contracted on two
+  // (about 20 ms of work on one).
+  int64_t thread_entries = 1 << 20;
 };
 
 // The dissection as a tree. Node s owns the pivots perm[first .. first + size);
