@@ -14,10 +14,11 @@ namespace gab {
 
 struct NestedDissectionOptions {
   // Subgraphs with at most this many vertices are not dissected further but
-  // ordered by AMD (amd.h). Measured on the mesh matrices: 200 and 1200 give
-  // flops within a few percent of 600; each halving costs another level of
-  // bisections.
-  int32_t leaf_size = 600;
+  // ordered by AMD (amd.h). With one-sided refinement, 300 against 600 (and
+  // candidates 1 against 3): flops 1.084 against 1.102 of METIS's (mean of
+  // igea, horse, nefertiti, bunny over 4 seeds), 6% more instructions; 200:
+  // 1.073, +17% (bench/TUNING.md, "Nested dissection").
+  int32_t leaf_size = 300;
   // A row with more than max(16, dense * sqrt(n)) off-diagonal entries is
   // removed before dissection and ordered last, as AmdOptions::dense does.
   // Negative: no row is dense.
@@ -31,15 +32,21 @@ struct NestedDissectionOptions {
   // kept. 4 against 6 (with candidates 3 against 4), mean flops over 12
   // seeds: igea +0.7%, horse -1.1%, nefertiti +1.1%, ordering ~10% faster.
   int32_t initial_tries = 4;
-  // FM passes per level, and moves without improvement before a pass gives up.
-  int32_t refine_passes = 6;
+  // FM passes per level, and moves without improvement before a pass gives
+  // up (one-sided: min(3 x separator, refine_patience), and 3x that).
+  // One-sided, refine_passes counts pairs of passes: 2 pairs gave the flops
+  // of 6 in 10% fewer instructions, 1 pair +4% flops. Two-sided
+  // refinement measured best with 6 passes.
+  int32_t refine_passes = 2;
   int32_t refine_patience = 80;
   // One-sided FM passes (each moves vertices into one side, alternating)
-  // instead of two-sided ones; refine_passes then counts pairs.
+  // instead of two-sided ones: 10% fewer flops.
   bool one_sided_refinement = true;
   // Coarsest separators carried up to the finest level with at most
-  // trial_size vertices, where the smallest goes on and the others are dropped.
-  int32_t candidates = 3;
+  // trial_size vertices, where the smallest goes on and the others are
+  // dropped. With `runs` taking several coarsenings, 1 (the best of
+  // initial_tries) does as well as 3 below large_size, for less time.
+  int32_t candidates = 1;
   int32_t trial_size = 2000;
   // Graphs of at least large_size vertices (the top separators, which weigh
   // most in the factor) carry large_candidates instead. Measured on igea,
