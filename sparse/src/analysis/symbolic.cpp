@@ -9,6 +9,9 @@
 #include "gab/sparse/symbolic.h"
 
 #include <string>
+#if defined(__GLIBC__)  // defined once <string> has included <features.h>
+#include <malloc.h>
+#endif
 
 #include "gab/sparse/amd.h"
 #include "gab/sparse/column_counts.h"
@@ -20,6 +23,17 @@
 namespace gab {
 
 namespace {
+
+// Hands the heap's free pages back to the system. The dissection of a large
+// graph allocates and frees about half the factor's size in graphs and
+// coarsenings (2 GB at 2.4M vertices) just before the factor is allocated
+// in pages of its own (large_buffer.h): glibc keeps the freed heap, and the
+// process's peak was the two together. Only glibc has malloc_trim.
+void return_free_heap_memory() {
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
+}
 
 Status check_input(const CscMatrix& lower) {
   if (lower.nrows != lower.ncols) {
@@ -49,7 +63,9 @@ Status fill_reducing_order(const CscMatrix& lower, const AnalyzeOptions& options
       // The factorization's threads dissect too: the permutation is the same for any count.
       NestedDissectionOptions nd;
       nd.threads = options.threads;
-      return nested_dissection_order(lower, order, nd);
+      const Status status = nested_dissection_order(lower, order, nd);
+      return_free_heap_memory();
+      return status;
     }
     case Ordering::kNatural:
       order->resize(n);
