@@ -16,9 +16,10 @@
 #include <atomic>
 #include <cmath>
 #include <string>
-#include <thread>
+#include <memory>
 
 #include "gab/sparse/amd_graph.h"
+#include "ordering/fork_join.h"
 #include "ordering/nested_dissection_graph.h"
 
 namespace gab {
@@ -34,17 +35,19 @@ uint64_t child_seed(uint64_t parent, uint64_t child) {
   return mix.next();
 }
 
-// The dissection of one graph into perm_; on one thread, or forking its two
-// sides onto another thread while `threads` allows.
+// The dissection of one graph into perm_; on one thread, or with a pool
+// whose workers take the sides of large separators as tasks.
 class Dissection {
  public:
-  Dissection(const NestedDissectionOptions& options, int32_t n, std::vector<int32_t>* perm)
-      : options_(options), perm_(*perm) {
-    ws_.grow(n);
+  Dissection(const NestedDissectionOptions& options, int32_t n, std::vector<int32_t>* perm, nd::ForkJoinPool* pool)
+      : options_(options), perm_(*perm), pool_(pool), ws_(pool ? pool->size() : 1) {
+    ws_[0].grow(n);
   }
 
   // Orders g, whose vertex v is original vertex label[v], into
-  // perm[begin .. begin + g.n), with `threads` threads; the tree nodes of
+  // perm[begin .. begin + g.n) on pool worker `worker` (whose workspace it
+  // uses), `threads` a hint of the threads free for its top separator's
+  // coarsening (coarsen(): the result is the same); the tree nodes of
   // its pieces are appended to *nodes (children before parents), the
   // indices of their roots in *nodes to *roots. h holds coarsenings of g
   // inherited from its parent (none for the whole graph). With
@@ -54,19 +57,21 @@ class Dissection {
   // find_separator copes with a disconnected graph (its separator may then
   // be empty). Consumes g, label and h.
   Status order(Graph&& g, std::vector<int32_t>&& label, nd::Hierarchy&& h, bool find_components, int32_t begin,
-               uint64_t seed, int32_t threads, std::vector<SeparatorTree::Node>* nodes,
+               uint64_t seed, int32_t threads, int32_t worker, std::vector<SeparatorTree::Node>* nodes,
                std::vector<int32_t>* roots) {
     if (g.n == 0) return Status::Ok();
+    nd::Workspace& ws = ws_[worker];
+    ws.grow(g.n);
     if (find_components) {
       std::vector<int32_t> component;
-      const int32_t count = nd::connected_components(g, &ws_, &component);
-      if (count > 1) return order_components(g, label, h, component, count, begin, seed, threads, nodes, roots);
+      const int32_t count = nd::connected_components(g, &ws, &component);
+      if (count > 1) return order_components(g, label, h, component, count, begin, seed, threads, worker, nodes, roots);
     }
     if (is_leaf(g.n)) return order_leaf(g, label, begin, nodes, roots);
 
     std::vector<uint8_t> where;
     nd::Rng rng(seed);
-    nd::find_separator(g, options_, threads, &rng, &ws_, &h, &where);
+    nd::find_separator(g, options_, threads, &rng, &ws, &h, &where);
     std::vector<int32_t> side[3];
     for (int32_t v = 0; v < g.n; ++v) side[where[v]].push_back(v);
     // No proper separator (a clique, say), or one so lopsided that recursing
@@ -104,40 +109,41 @@ class Dissection {
       h = nd::Hierarchy();
     };
     std::vector<int32_t> children;
-    if (threads > 1 && std::min(part_size[0], part_size[1]) >= options_.thread_size) {
-      // The left side on a new thread with a dissection of its own (its own
-      // workspace and nodes), the right one here, each building its part
-      // (reading g, h and label, which the later of the two releases); the
-      // left's nodes go first, as on one thread.
-      const int32_t left_threads = threads / 2;
+    if (pool_ != nullptr && std::min(part_size[0], part_size[1]) >= options_.thread_size) {
+      // The left side as a task any worker may take, the right one here,
+      // each building its part (reading g, h and label, which the later of
+      // the two releases); the left's nodes go first, as on one thread.
+      const int32_t left_threads = std::max(1, threads / 2);
       std::atomic<int32_t> built{0};
       std::vector<SeparatorTree::Node> left_nodes, right_nodes;
       std::vector<int32_t> left_roots, right_roots;
       Status left_status = Status::Ok();
-      Dissection left(options_, g.n, &perm_);  // sized for g: build_part indexes by g's vertices
-      std::thread worker([&] {
-        build_part(0, &left.ws_);
+      nd::ForkJoinPool::Task left;
+      left.fn = [&](int32_t w) {
+        ws_[w].grow(g.n);  // build_part indexes the workspace by g's vertices
+        build_part(0, &ws_[w]);
         if (built.fetch_add(1) == 1) release_graph();
-        left_status = left.order(std::move(part[0]), std::move(part_label[0]), std::move(part_hierarchy[0]), false,
-                                 part_begin[0], child_seed(seed, 0), left_threads, &left_nodes, &left_roots);
-      });
-      build_part(1, &ws_);
+        left_status = order(std::move(part[0]), std::move(part_label[0]), std::move(part_hierarchy[0]), false,
+                            part_begin[0], child_seed(seed, 0), left_threads, w, &left_nodes, &left_roots);
+      };
+      pool_->fork(&left);
+      build_part(1, &ws);
       if (built.fetch_add(1) == 1) release_graph();
       const Status right_status =
           order(std::move(part[1]), std::move(part_label[1]), std::move(part_hierarchy[1]), false, part_begin[1],
-                child_seed(seed, 1), threads - left_threads, &right_nodes, &right_roots);
-      worker.join();
+                child_seed(seed, 1), std::max(1, threads - left_threads), worker, &right_nodes, &right_roots);
+      pool_->join(&left, worker);
       GAB_RETURN_IF_ERROR(left_status);
       GAB_RETURN_IF_ERROR(right_status);
       append_nodes(left_nodes, left_roots, nodes, &children);
       append_nodes(right_nodes, right_roots, nodes, &children);
     } else {
-      build_part(0, &ws_);
-      build_part(1, &ws_);
+      build_part(0, &ws);
+      build_part(1, &ws);
       release_graph();
       for (int s = 0; s < 2; ++s) {
         GAB_RETURN_IF_ERROR(order(std::move(part[s]), std::move(part_label[s]), std::move(part_hierarchy[s]), false,
-                                  part_begin[s], child_seed(seed, s), 1, nodes, &children));
+                                  part_begin[s], child_seed(seed, s), 1, worker, nodes, &children));
       }
     }
     roots->push_back(add_node(separator_first, separator_size, begin, /*leaf=*/false, children, nodes));
@@ -179,21 +185,23 @@ class Dissection {
 
   Status order_components(const Graph& g, const std::vector<int32_t>& label, const nd::Hierarchy& h,
                           const std::vector<int32_t>& component, int32_t count, int32_t begin, uint64_t seed,
-                          int32_t threads, std::vector<SeparatorTree::Node>* nodes, std::vector<int32_t>* roots) {
+                          int32_t threads, int32_t worker, std::vector<SeparatorTree::Node>* nodes,
+                          std::vector<int32_t>* roots) {
+    nd::Workspace& ws = ws_[worker];
     std::vector<std::vector<int32_t>> members(static_cast<size_t>(count));
     for (int32_t v = 0; v < g.n; ++v) members[component[v]].push_back(v);
     for (int32_t c = 0; c < count; ++c) {
       Graph sub;
-      nd::induced_subgraph(g, members[c], &ws_, &sub);
+      nd::induced_subgraph(g, members[c], &ws, &sub);
       nd::Hierarchy sub_hierarchy;
-      if (!is_leaf(sub.n)) nd::restrict_hierarchy(g, h, members[c], options_.coarsest_size, &ws_, &sub_hierarchy);
+      if (!is_leaf(sub.n)) nd::restrict_hierarchy(g, h, members[c], options_.coarsest_size, &ws, &sub_hierarchy);
       std::vector<int32_t> sub_label;
       sub_label.reserve(members[c].size());
       for (int32_t v : members[c]) sub_label.push_back(label[v]);
       // Components one after another on this thread: a mesh with several
       // large components is rare, and each still forks below.
       GAB_RETURN_IF_ERROR(order(std::move(sub), std::move(sub_label), std::move(sub_hierarchy), false, begin,
-                                child_seed(seed, 2 + static_cast<uint64_t>(c)), threads, nodes, roots));
+                                child_seed(seed, 2 + static_cast<uint64_t>(c)), threads, worker, nodes, roots));
       begin += static_cast<int32_t>(members[c].size());
     }
     return Status::Ok();
@@ -247,8 +255,9 @@ class Dissection {
   }
 
   const NestedDissectionOptions& options_;
-  nd::Workspace ws_;
   std::vector<int32_t>& perm_;
+  nd::ForkJoinPool* pool_;         // null: everything on the calling thread
+  std::vector<nd::Workspace> ws_;  // one per worker
 };
 
 Status check_lower(const CscMatrix& lower) {
@@ -290,7 +299,10 @@ Status nested_dissection_order(const CscMatrix& lower, std::vector<int32_t>* per
   // adjw stays empty: every edge of the matrix graph weighs 1.
   g.vw.assign(static_cast<size_t>(n), 1);
   g.total_weight = n;
-  Dissection dissection(options, n, perm);
+  // The pool outlives the dissection's tasks; with one thread there is none.
+  std::unique_ptr<nd::ForkJoinPool> pool;
+  if (options.threads > 1) pool.reset(new nd::ForkJoinPool(options.threads));
+  Dissection dissection(options, n, perm, pool.get());
   if (!dense.empty()) {
     Graph sparse_part;
     nd::Workspace ws;
@@ -301,7 +313,7 @@ Status nested_dissection_order(const CscMatrix& lower, std::vector<int32_t>* per
   std::vector<SeparatorTree::Node> nodes;
   std::vector<int32_t> roots;
   GAB_RETURN_IF_ERROR(dissection.order(std::move(g), std::move(kept), nd::Hierarchy(), true, 0, options.seed,
-                                       std::max(1, options.threads), &nodes, &roots));
+                                       std::max(1, options.threads), 0, &nodes, &roots));
   const int32_t dense_first = n - static_cast<int32_t>(dense.size());
   std::copy(dense.begin(), dense.end(), perm->begin() + dense_first);
   if (!dense.empty()) dissection.add_dense_root(dense_first, static_cast<int32_t>(dense.size()), roots, &nodes);

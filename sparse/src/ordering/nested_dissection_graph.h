@@ -2,6 +2,7 @@
 // weighted graph they pass around. Private to the engine.
 //
 //   nested_dissection.cpp          the recursion: components, dense rows, leaves by AMD, tree
+//   fork_join.h                    the pool whose workers take large pieces' sides as tasks
 //   nested_dissection_bisect.cpp   one vertex separator, multilevel: coarsen, separate, refine
 //   nested_dissection_coarsen.cpp  heavy-edge matching and contraction
 //   nested_dissection_restrict.cpp a part's coarsenings read off its parent's

@@ -69,8 +69,9 @@ struct NestedDissectionOptions {
   // the matching's visits and pick seeds, one stream per piece derived from
   // its parent's: the result depends on nothing else.
   uint64_t seed = 0x9E3779B97F4A7C15ull;
-  // Threads: the two sides of a separator are dissected concurrently while
-  // threads remain and both sides have at least thread_size vertices. The
+  // Threads: a pool of this many workers; a separator whose two sides both
+  // have at least thread_size vertices hands one side to the pool as a task
+  // (an idle worker takes it, or the forking one after its other side). The
   // permutation and tree are the same for every thread count.
   int32_t threads = 1;
   int32_t thread_size = 4000;

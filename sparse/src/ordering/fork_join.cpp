@@ -1,0 +1,65 @@
+#include "ordering/fork_join.h"
+
+namespace gab {
+namespace nd {
+
+ForkJoinPool::ForkJoinPool(int32_t size) : size_(size < 1 ? 1 : size) {
+  for (int32_t w = 1; w < size_; ++w) helpers_.emplace_back([this, w] { serve(w); });
+}
+
+ForkJoinPool::~ForkJoinPool() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopping_ = true;
+  }
+  changed_.notify_all();
+  for (std::thread& t : helpers_) t.join();
+}
+
+void ForkJoinPool::fork(Task* task) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    queue_.push_back(task);
+  }
+  changed_.notify_one();
+}
+
+void ForkJoinPool::run(Task* task, int32_t worker) {
+  task->fn(worker);
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    task->done = true;
+  }
+  changed_.notify_all();
+}
+
+void ForkJoinPool::join(Task* task, int32_t worker) {
+  for (;;) {
+    Task* next = nullptr;
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      changed_.wait(lock, [&] { return task->done || !queue_.empty(); });
+      if (task->done) return;
+      next = queue_.back();
+      queue_.pop_back();
+    }
+    run(next, worker);
+  }
+}
+
+void ForkJoinPool::serve(int32_t worker) {
+  for (;;) {
+    Task* next = nullptr;
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      changed_.wait(lock, [&] { return stopping_ || !queue_.empty(); });
+      if (queue_.empty()) return;  // stopping
+      next = queue_.front();
+      queue_.pop_front();
+    }
+    run(next, worker);
+  }
+}
+
+}  // namespace nd
+}  // namespace gab

@@ -1,0 +1,55 @@
+// A small fork-join pool for the nested-dissection recursion: a piece's two
+// sides are independent, and their sizes are not (a separator may split
+// 60/40, and the split below it again): a thread that forks one side and
+// works on the other, then joins, runs queued tasks while it waits, and
+// idle helpers take the oldest (largest) queued task. Which thread runs a
+// task never changes what it computes.
+#pragma once
+
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace gab {
+namespace nd {
+
+class ForkJoinPool {
+ public:
+  // A task runs fn(worker), worker being the index (0 .. size - 1) of the
+  // thread that runs it.
+  struct Task {
+    std::function<void(int32_t)> fn;
+    bool done = false;  // guarded by the pool's mutex
+  };
+
+  // `size` workers: the calling thread (worker 0) and size - 1 helpers.
+  explicit ForkJoinPool(int32_t size);
+  ~ForkJoinPool();
+  ForkJoinPool(const ForkJoinPool&) = delete;
+  ForkJoinPool& operator=(const ForkJoinPool&) = delete;
+
+  int32_t size() const { return size_; }
+  // Queues *task (which must outlive its join).
+  void fork(Task* task);
+  // Returns once *task has run, running queued tasks on this thread (as
+  // `worker`) meanwhile: the newest first, most often task itself.
+  void join(Task* task, int32_t worker);
+
+ private:
+  void run(Task* task, int32_t worker);
+  void serve(int32_t worker);
+
+  const int32_t size_;
+  std::mutex mutex_;
+  std::condition_variable changed_;  // a task queued or finished, or stopping
+  std::deque<Task*> queue_;
+  bool stopping_ = false;
+  std::vector<std::thread> helpers_;
+};
+
+}  // namespace nd
+}  // namespace gab
