@@ -53,7 +53,9 @@ int run_factor(int argc, char** argv) {
   for (int64_t r = 0; r < repeat; ++r) {
     double t0 = now_seconds();
     if (ordering_name == "amd" || ordering_name == "nd") {
-      status = ordering_name == "amd" ? amd_order(a, &perm) : nested_dissection_order(a, &perm);
+      NestedDissectionOptions nd;
+      nd.threads = static_cast<int32_t>(threads);  // the same permutation for any count
+      status = ordering_name == "amd" ? amd_order(a, &perm) : nested_dissection_order(a, &perm, nd);
       if (!status.ok()) return fail(path + ": ordering: " + status.message());
     } else {
       perm.resize(n);
