@@ -4,7 +4,8 @@
 // timed (median of 3 runs), then analyzed and factored by gab with that
 // permutation given, so nnz(L), flops and the entries an anchor update
 // touches (mean over the benchmark's 1000 updates) are counted the same way
-// for all three. Issue 19's quality, ordering-time and update targets. Built
+// for all three, and both gab's updater and cholmod_updown timed on a factor
+// in each ordering. Issue 19's quality, ordering-time and update targets. Built
 // only with -DGAB_BENCH_CHOLMOD=ON when SuiteSparse (with METIS) is there.
 //
 //   bench/peers/ordering_compare [mesh ...]   (default: ../shared/meshes' igea, horse, nefertiti, bunny)
@@ -90,6 +91,46 @@ std::vector<int32_t> order(const gab::CscMatrix& a, Peer peer, cholmod_common* c
   return perm;
 }
 
+// The same updates by cholmod_updown on CHOLMOD's factor of `a` ordered by
+// perm (converted to the simplicial LDL^T it updates, not timed): seconds in all.
+double cholmod_updown_seconds(const gab::CscMatrix& a, const std::vector<int32_t>& perm,
+                              const std::vector<int32_t>& seq, cholmod_common* c) {
+  const int32_t n = a.ncols;
+  const int saved_ordering = c->method[0].ordering, saved_nmethods = c->nmethods, saved_postorder = c->postorder;
+  c->nmethods = 1;
+  c->method[0].ordering = CHOLMOD_GIVEN;
+  c->postorder = 1;
+  cholmod_sparse* ca = cholmod_allocate_sparse(n, n, a.nnz(), 1, 1, -1, CHOLMOD_REAL, c);
+  std::copy(a.colptr.begin(), a.colptr.end(), static_cast<int32_t*>(ca->p));
+  std::copy(a.rowind.begin(), a.rowind.end(), static_cast<int32_t*>(ca->i));
+  std::copy(a.values.begin(), a.values.end(), static_cast<double*>(ca->x));
+  std::vector<int32_t> given = perm;
+  cholmod_factor* f = cholmod_analyze_p(ca, given.data(), nullptr, 0, c);
+  cholmod_factorize(ca, f, c);
+  cholmod_change_factor(CHOLMOD_REAL, 0, 0, 1, 1, f, c);
+  const int32_t* fperm = static_cast<int32_t*>(f->Perm);
+  std::vector<int32_t> inverse(n);
+  for (int32_t k = 0; k < n; ++k) inverse[fperm[k]] = k;
+  double seconds = 0;
+  for (int32_t v : seq) {
+    cholmod_sparse* cs = cholmod_allocate_sparse(n, 1, 1, 1, 1, 0, CHOLMOD_REAL, c);
+    static_cast<int32_t*>(cs->p)[0] = 0;
+    static_cast<int32_t*>(cs->p)[1] = 1;
+    static_cast<int32_t*>(cs->i)[0] = inverse[v];
+    static_cast<double*>(cs->x)[0] = 1.0;
+    const double t0 = now();
+    cholmod_updown(1, cs, f, c);
+    seconds += now() - t0;
+    cholmod_free_sparse(&cs, c);
+  }
+  cholmod_free_factor(&f, c);
+  cholmod_free_sparse(&ca, c);
+  c->nmethods = saved_nmethods;
+  c->method[0].ordering = saved_ordering;
+  c->postorder = saved_postorder;
+  return seconds;
+}
+
 void compare(const std::string& path, cholmod_common* c) {
   gab::Mesh mesh;
   if (!gab::read_mesh(path, &mesh).ok()) {
@@ -118,15 +159,20 @@ void compare(const std::string& path, cholmod_common* c) {
     gab_bench::check(chol.analyze(a, options), "ordering_compare: analyze");
     gab_bench::check(chol.factorize(a), "ordering_compare: factorize");
     gab_bench::check(chol.prepare_updates(), "ordering_compare: prepare_updates");
-    double touched = 0;
+    double touched = 0, gab_seconds = 0;
     for (int32_t v : seq) {
       gab::UpdateStats st;
+      const double t0 = now();
       gab_bench::check(chol.add_anchor(v, 1.0, &st), "ordering_compare: add_anchor");
+      gab_seconds += now() - t0;
       touched += static_cast<double>(st.touched);
     }
-    touched /= std::max<size_t>(1, seq.size());
-    std::printf("| %s | %d | %s | %.3f | %.4g | %.4g | %.4g | %.2f |\n", name.c_str(), n, ordering.name, median(t),
-                static_cast<double>(chol.symbolic().nnz_L), chol.symbolic().flops, touched, touched / n);
+    const double updates = static_cast<double>(std::max<size_t>(1, seq.size()));
+    touched /= updates;
+    const double updown_seconds = cholmod_updown_seconds(a, perm, seq, c);
+    std::printf("| %s | %d | %s | %.3f | %.4g | %.4g | %.4g | %.2f | %.3f | %.3f |\n", name.c_str(), n, ordering.name,
+                median(t), static_cast<double>(chol.symbolic().nnz_L), chol.symbolic().flops, touched, touched / n,
+                gab_seconds / updates * 1e3, updown_seconds / updates * 1e3);
     std::fflush(stdout);
   }
 }
@@ -142,11 +188,14 @@ int main(int argc, char** argv) {
   }
   cholmod_common c;
   cholmod_start(&c);
-  std::printf("| mesh | n | ordering | order s | nnz(L) | flops | touched per update | per n |\n");
-  std::printf("|---|---:|---|---:|---:|---:|---:|---:|\n");
+  std::printf("| mesh | n | ordering | order s | nnz(L) | flops | touched per update | per n | gab update ms | "
+              "cholmod_updown ms |\n");
+  std::printf("|---|---:|---|---:|---:|---:|---:|---:|---:|---:|\n");
   for (const std::string& path : inputs) compare(path, &c);
   cholmod_finish(&c);
   std::printf("\nnnz(L), flops and touched entries by gab's analysis and updater on each permutation; "
-              "order s: the ordering alone, wall time, median of %d, single thread but where said.\n", kRepeat);
+              "order s: the ordering alone, wall time, median of %d, single thread but where said; update ms: the mean of "
+              "the %d updates, gab's add_anchor and cholmod_updown (on its simplicial LDL^T) each on a factor in that "
+              "ordering, one thread.\n", kRepeat, kUpdates);
   return 0;
 }
