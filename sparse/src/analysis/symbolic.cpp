@@ -24,14 +24,21 @@ namespace gab {
 
 namespace {
 
-// Hands the heap's free pages back to the system. The dissection of a large
-// graph allocates and frees about half the factor's size in graphs and
-// coarsenings (2 GB at 2.4M vertices) just before the factor is allocated
-// in pages of its own (large_buffer.h): glibc keeps the freed heap, and the
-// process's peak was the two together. Only glibc has malloc_trim.
-void return_free_heap_memory() {
+// Hands the heap's free pages back to the system after the dissection of a
+// large matrix (lower-triangle entries, ~800k mesh vertices up), which
+// allocates and frees graphs and coarsenings (2 GB at 2.4M vertices) just
+// before the factor is allocated in pages of its own (large_buffer.h):
+// glibc keeps the freed heap, and the process's peak was the two together
+// (2.4M-vertex decode: 5.56 -> 5.31 GB). Smaller ones keep it: the
+// analysis re-faults what was returned, and on igea that cost 0.1 s of a
+// 1.2 s decode. Only glibc has malloc_trim.
+void return_free_heap_memory(int64_t matrix_entries) {
+  constexpr int64_t kTrimFromEntries = int64_t{1} << 23;
 #if defined(__GLIBC__)
-  malloc_trim(0);
+  if (matrix_entries >= kTrimFromEntries) malloc_trim(0);
+#else
+  (void)matrix_entries;
+  (void)kTrimFromEntries;
 #endif
 }
 
@@ -64,7 +71,7 @@ Status fill_reducing_order(const CscMatrix& lower, const AnalyzeOptions& options
       NestedDissectionOptions nd;
       nd.threads = options.threads;
       const Status status = nested_dissection_order(lower, order, nd);
-      return_free_heap_memory();
+      return_free_heap_memory(lower.nnz());
       return status;
     }
     case Ordering::kNatural:
