@@ -15,8 +15,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <string>
 #include <memory>
+#include <string>
 
 #include "gab/sparse/amd_graph.h"
 #include "ordering/fork_join.h"
