@@ -70,13 +70,16 @@ Status study_one(const std::string& path, const std::string& ordering, int64_t u
   AnalyzeOptions options;
   options.ordering = ordering == "natural" ? Ordering::kNatural : Ordering::kAmd;
   options.threads = static_cast<int32_t>(threads);
-  // Nested dissection is run here (as analyze would run it, default options)
-  // to keep its separator tree for the bound.
+  // Nested dissection is run here (as analyze would run it: default options,
+  // the factorization's threads, the same permutation for any count) to
+  // keep its separator tree for the bound.
   std::vector<int64_t> bound;
   if (ordering == "nd") {
     std::vector<int32_t> perm;
     SeparatorTree tree;
-    GAB_RETURN_IF_ERROR(nested_dissection_order(a, &perm, NestedDissectionOptions(), &tree));
+    NestedDissectionOptions nd;
+    nd.threads = static_cast<int32_t>(threads);
+    GAB_RETURN_IF_ERROR(nested_dissection_order(a, &perm, nd, &tree));
     GAB_RETURN_IF_ERROR(separator_update_bounds(tree, perm, &bound));
     options.ordering = Ordering::kGiven;
     options.given_perm = std::move(perm);
