@@ -39,15 +39,17 @@ uint64_t child_seed(uint64_t parent, uint64_t child) {
 // whose workers take the sides of large separators as tasks.
 class Dissection {
  public:
-  Dissection(const NestedDissectionOptions& options, int32_t n, std::vector<int32_t>* perm, nd::ForkJoinPool* pool)
+  Dissection(const NestedDissectionOptions& options, std::vector<int32_t>* perm, nd::ForkJoinPool* pool)
       : options_(options), perm_(*perm), pool_(pool), ws_(pool ? pool->size() : 1) {
-    ws_[0].grow(n);
+    for (size_t w = 0; w < ws_.size(); ++w) {
+      ws_[w].pool = pool;
+      ws_[w].worker = static_cast<int32_t>(w);
+    }
   }
 
   // Orders g, whose vertex v is original vertex label[v], into
   // perm[begin .. begin + g.n) on pool worker `worker` (whose workspace it
-  // uses), `threads` a hint of the threads free for its top separator's
-  // coarsening (coarsen(): the result is the same); the tree nodes of
+  // uses); the tree nodes of
   // its pieces are appended to *nodes (children before parents), the
   // indices of their roots in *nodes to *roots. h holds coarsenings of g
   // inherited from its parent (none for the whole graph). With
@@ -57,21 +59,20 @@ class Dissection {
   // find_separator copes with a disconnected graph (its separator may then
   // be empty). Consumes g, label and h.
   Status order(Graph&& g, std::vector<int32_t>&& label, nd::Hierarchy&& h, bool find_components, int32_t begin,
-               uint64_t seed, int32_t threads, int32_t worker, std::vector<SeparatorTree::Node>* nodes,
-               std::vector<int32_t>* roots) {
+               uint64_t seed, int32_t worker, std::vector<SeparatorTree::Node>* nodes, std::vector<int32_t>* roots) {
     if (g.n == 0) return Status::Ok();
     nd::Workspace& ws = ws_[worker];
     ws.grow(g.n);
     if (find_components) {
       std::vector<int32_t> component;
       const int32_t count = nd::connected_components(g, &ws, &component);
-      if (count > 1) return order_components(g, label, h, component, count, begin, seed, threads, worker, nodes, roots);
+      if (count > 1) return order_components(g, label, h, component, count, begin, seed, worker, nodes, roots);
     }
     if (is_leaf(g.n)) return order_leaf(g, label, begin, nodes, roots);
 
     std::vector<uint8_t> where;
     nd::Rng rng(seed);
-    nd::find_separator(g, options_, threads, &rng, &ws, &h, &where);
+    nd::find_separator(g, options_, &rng, &ws, &h, &where);
     std::vector<int32_t> side[3];
     for (int32_t v = 0; v < g.n; ++v) side[where[v]].push_back(v);
     // No proper separator (a clique, say), or one so lopsided that recursing
@@ -113,7 +114,6 @@ class Dissection {
       // The left side as a task any worker may take, the right one here,
       // each building its part (reading g, h and label, which the later of
       // the two releases); the left's nodes go first, as on one thread.
-      const int32_t left_threads = std::max(1, threads / 2);
       std::atomic<int32_t> built{0};
       std::vector<SeparatorTree::Node> left_nodes, right_nodes;
       std::vector<int32_t> left_roots, right_roots;
@@ -124,14 +124,14 @@ class Dissection {
         build_part(0, &ws_[w]);
         if (built.fetch_add(1) == 1) release_graph();
         left_status = order(std::move(part[0]), std::move(part_label[0]), std::move(part_hierarchy[0]), false,
-                            part_begin[0], child_seed(seed, 0), left_threads, w, &left_nodes, &left_roots);
+                            part_begin[0], child_seed(seed, 0), w, &left_nodes, &left_roots);
       };
       pool_->fork(&left);
       build_part(1, &ws);
       if (built.fetch_add(1) == 1) release_graph();
       const Status right_status =
           order(std::move(part[1]), std::move(part_label[1]), std::move(part_hierarchy[1]), false, part_begin[1],
-                child_seed(seed, 1), std::max(1, threads - left_threads), worker, &right_nodes, &right_roots);
+                child_seed(seed, 1), worker, &right_nodes, &right_roots);
       pool_->join(&left, worker);
       GAB_RETURN_IF_ERROR(left_status);
       GAB_RETURN_IF_ERROR(right_status);
@@ -143,7 +143,7 @@ class Dissection {
       release_graph();
       for (int s = 0; s < 2; ++s) {
         GAB_RETURN_IF_ERROR(order(std::move(part[s]), std::move(part_label[s]), std::move(part_hierarchy[s]), false,
-                                  part_begin[s], child_seed(seed, s), 1, worker, nodes, &children));
+                                  part_begin[s], child_seed(seed, s), worker, nodes, &children));
       }
     }
     roots->push_back(add_node(separator_first, separator_size, begin, /*leaf=*/false, children, nodes));
@@ -185,8 +185,7 @@ class Dissection {
 
   Status order_components(const Graph& g, const std::vector<int32_t>& label, const nd::Hierarchy& h,
                           const std::vector<int32_t>& component, int32_t count, int32_t begin, uint64_t seed,
-                          int32_t threads, int32_t worker, std::vector<SeparatorTree::Node>* nodes,
-                          std::vector<int32_t>* roots) {
+                          int32_t worker, std::vector<SeparatorTree::Node>* nodes, std::vector<int32_t>* roots) {
     nd::Workspace& ws = ws_[worker];
     std::vector<std::vector<int32_t>> members(static_cast<size_t>(count));
     for (int32_t v = 0; v < g.n; ++v) members[component[v]].push_back(v);
@@ -201,7 +200,7 @@ class Dissection {
       // Components one after another on this thread: a mesh with several
       // large components is rare, and each still forks below.
       GAB_RETURN_IF_ERROR(order(std::move(sub), std::move(sub_label), std::move(sub_hierarchy), false, begin,
-                                child_seed(seed, 2 + static_cast<uint64_t>(c)), threads, worker, nodes, roots));
+                                child_seed(seed, 2 + static_cast<uint64_t>(c)), worker, nodes, roots));
       begin += static_cast<int32_t>(members[c].size());
     }
     return Status::Ok();
@@ -302,7 +301,7 @@ Status nested_dissection_order(const CscMatrix& lower, std::vector<int32_t>* per
   // The pool outlives the dissection's tasks; with one thread there is none.
   std::unique_ptr<nd::ForkJoinPool> pool;
   if (options.threads > 1) pool.reset(new nd::ForkJoinPool(options.threads));
-  Dissection dissection(options, n, perm, pool.get());
+  Dissection dissection(options, perm, pool.get());
   if (!dense.empty()) {
     Graph sparse_part;
     nd::Workspace ws;
@@ -312,8 +311,8 @@ Status nested_dissection_order(const CscMatrix& lower, std::vector<int32_t>* per
   }
   std::vector<SeparatorTree::Node> nodes;
   std::vector<int32_t> roots;
-  GAB_RETURN_IF_ERROR(dissection.order(std::move(g), std::move(kept), nd::Hierarchy(), true, 0, options.seed,
-                                       std::max(1, options.threads), 0, &nodes, &roots));
+  GAB_RETURN_IF_ERROR(
+      dissection.order(std::move(g), std::move(kept), nd::Hierarchy(), true, 0, options.seed, 0, &nodes, &roots));
   const int32_t dense_first = n - static_cast<int32_t>(dense.size());
   std::copy(dense.begin(), dense.end(), perm->begin() + dense_first);
   if (!dense.empty()) dissection.add_dense_root(dense_first, static_cast<int32_t>(dense.size()), roots, &nodes);

@@ -21,8 +21,7 @@ namespace {
 // Coarsens g's hierarchy h further until its coarsest level has at most
 // coarsest_size vertices (or matching stalls): levels[0 .. depth) are g's
 // coarsenings, maps[k] takes level k-1 (g for k = 0) to level k.
-void build_hierarchy(const Graph& g, const NestedDissectionOptions& params, int32_t threads, Rng* rng, Workspace* ws,
-                     Hierarchy* hierarchy) {
+void build_hierarchy(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws, Hierarchy* hierarchy) {
   Hierarchy& h = *hierarchy;
   const int32_t target = std::max(2, params.coarsest_size);
   // Coarse vertices heavier than this could not sit on a side of a balanced split.
@@ -38,8 +37,8 @@ void build_hierarchy(const Graph& g, const NestedDissectionOptions& params, int3
     // emplace_back may have moved the levels: take fine again.
     const Graph& finer = h.depth == 0 ? g : h.levels[h.depth - 1];
     Graph& coarse = h.levels[h.depth];
-    coarsen(finer, max_vertex_weight, threads, static_cast<size_t>(std::max<int64_t>(0, params.thread_entries)), rng,
-            ws, &h.maps[h.depth], &coarse);
+    coarsen(finer, max_vertex_weight, static_cast<size_t>(std::max<int64_t>(0, params.thread_entries)), rng, ws,
+            &h.maps[h.depth], &coarse);
     // A matching that barely shrinks the graph (stars, heavy vertices) ends the coarsening.
     const bool stalled = coarse.n > finer.n - finer.n / 20;
     if (coarse.n == finer.n) break;
@@ -136,9 +135,9 @@ void separate_from(const Graph& g, const Hierarchy& h, size_t top, const NestedD
 
 }  // namespace
 
-void find_separator(const Graph& g, const NestedDissectionOptions& params, int32_t threads, Rng* rng, Workspace* ws,
-                    Hierarchy* hierarchy, std::vector<uint8_t>* where) {
-  build_hierarchy(g, params, threads, rng, ws, hierarchy);
+void find_separator(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws, Hierarchy* hierarchy,
+                    std::vector<uint8_t>* where) {
+  build_hierarchy(g, params, rng, ws, hierarchy);
   Hierarchy& h = *hierarchy;
   std::vector<uint8_t> scratch;
   // Large graphs: several coarsenings below a middle level, each separated
@@ -159,7 +158,7 @@ void find_separator(const Graph& g, const NestedDissectionOptions& params, int32
   std::pair<int64_t, int64_t> best_cost = cost(level(g, h, mid), params, best);
   Tail best_tail = take_tail(&h, mid);
   for (int32_t r = 1; r < params.runs; ++r) {
-    build_hierarchy(g, params, threads, rng, ws, &h);
+    build_hierarchy(g, params, rng, ws, &h);
     separate_from(g, h, mid, params, rng, ws, &run, &scratch);
     const std::pair<int64_t, int64_t> run_cost = cost(level(g, h, mid), params, run);
     if (run_cost < best_cost) {

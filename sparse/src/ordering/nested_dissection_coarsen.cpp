@@ -6,8 +6,8 @@
 // are edges no coarse separator can cut, so the coarse graph's cuts are the
 // fine graph's expensive ones.
 #include <algorithm>
-#include <thread>
 
+#include "ordering/fork_join.h"
 #include "ordering/nested_dissection_graph.h"
 
 namespace gab {
@@ -69,8 +69,8 @@ int32_t contract_rows(const Graph& fine, const int32_t* match, const int32_t* to
 
 }  // namespace
 
-void coarsen(const Graph& fine, int64_t max_vertex_weight, int32_t threads, size_t thread_entries, Rng* rng,
-             Workspace* ws, IntArray* fine_to_coarse, Graph* coarse) {
+void coarsen(const Graph& fine, int64_t max_vertex_weight, size_t thread_entries, Rng* rng, Workspace* ws,
+             IntArray* fine_to_coarse, Graph* coarse) {
   const int32_t n = fine.n;
   // Random visiting order (Fisher-Yates with our own generator: reproducible).
   std::vector<int32_t>& order = ws->queue;
@@ -108,8 +108,11 @@ void coarsen(const Graph& fine, int64_t max_vertex_weight, int32_t threads, size
     ++nc;
   }
 
-  // Contract, rows in coarse-vertex order; on two threads for a large
-  // graph, each contracting half of the rows (the result is the same).
+  // Contract, rows in coarse-vertex order; for a large graph with a pool,
+  // the second half of the rows is a task (any worker, or this one at the
+  // join) writing buffers of its own, copied after the first (the result is
+  // the same). The task touches no workspace: the join may run other tasks
+  // on this thread, with this workspace, and coarsen reads it no more.
   const size_t fine_entries = fine.adj.size();
   coarse->n = nc;
   coarse->xadj.resize(static_cast<size_t>(nc) + 1);
@@ -118,7 +121,7 @@ void coarsen(const Graph& fine, int64_t max_vertex_weight, int32_t threads, size
   coarse->vw.resize(static_cast<size_t>(nc));
   coarse->total_weight = fine.total_weight;
   coarse->xadj[0] = 0;
-  if (threads < 2 || fine_entries < thread_entries || nc < 2) {
+  if (ws->pool == nullptr || fine_entries < thread_entries || nc < 2) {
     const int32_t q = contract_rows(fine, match.data(), fine_to_coarse->data(), 0, 0, n, ws->slot.data(),
                                     coarse->adj.data(), coarse->adjw.data(), coarse->xadj.data() + 1,
                                     coarse->vw.data());
@@ -135,14 +138,18 @@ void coarsen(const Graph& fine, int64_t max_vertex_weight, int32_t threads, size
   IntArray adj2(second_bound), adjw2(second_bound), xadj2(static_cast<size_t>(nc - c_split));
   std::vector<int32_t> slot2(static_cast<size_t>(nc), -1);
   int32_t q2 = 0;
-  std::thread helper([&] {
-    q2 = contract_rows(fine, match.data(), fine_to_coarse->data(), c_split, v_split, n, slot2.data(), adj2.data(),
+  const std::vector<int32_t> pairs_copy(match.begin(), match.begin() + n);  // match is the workspace's
+  const int32_t* pairs = pairs_copy.data();
+  ForkJoinPool::Task second;
+  second.fn = [&](int32_t) {
+    q2 = contract_rows(fine, pairs, fine_to_coarse->data(), c_split, v_split, n, slot2.data(), adj2.data(),
                        adjw2.data(), xadj2.data(), coarse->vw.data() + c_split);
-  });
-  const int32_t q1 = contract_rows(fine, match.data(), fine_to_coarse->data(), 0, 0, v_split, ws->slot.data(),
+  };
+  ws->pool->fork(&second);
+  const int32_t q1 = contract_rows(fine, pairs, fine_to_coarse->data(), 0, 0, v_split, ws->slot.data(),
                                    coarse->adj.data(), coarse->adjw.data(), coarse->xadj.data() + 1,
                                    coarse->vw.data());
-  helper.join();
+  ws->pool->join(&second, ws->worker);
   std::copy(adj2.begin(), adj2.begin() + q2, coarse->adj.begin() + q1);
   std::copy(adjw2.begin(), adjw2.begin() + q2, coarse->adjw.begin() + q1);
   for (int32_t c = c_split; c < nc; ++c) coarse->xadj[c + 1] = q1 + xadj2[c - c_split];

@@ -113,9 +113,14 @@ struct Hierarchy {
   size_t depth = 0;
 };
 
+class ForkJoinPool;  // fork_join.h
+
 // Buffers reused by every call so the recursion does not allocate per
 // vertex; sized for the largest graph (grow() keeps the invariants below).
+// One per pool worker, which it names.
 struct Workspace {
+  ForkJoinPool* pool = nullptr;  // null: everything on the calling thread
+  int32_t worker = 0;            // the pool worker using this workspace
   std::vector<int32_t> local;   // vertex -> its index in a subgraph being built; -1 elsewhere
   std::vector<int32_t> slot;    // coarse vertex -> its entry in the row being built; -1 elsewhere
   std::vector<int32_t> queue;   // breadth-first searches
@@ -136,11 +141,11 @@ int32_t connected_components(const Graph& g, Workspace* ws, std::vector<int32_t>
 // One level of coarsening: a heavy-edge matching visited in a seeded random
 // order, each matched pair (or lone vertex) contracted into one coarse vertex.
 // No coarse vertex weighs more than max_vertex_weight. fine_to_coarse[v] is
-// v's coarse vertex. O(n + edges). The contraction runs on two threads
-// when `threads` allows and fine has at least thread_entries adjacency
-// entries (the same result).
-void coarsen(const Graph& fine, int64_t max_vertex_weight, int32_t threads, size_t thread_entries, Rng* rng,
-             Workspace* ws, IntArray* fine_to_coarse, Graph* coarse);
+// v's coarse vertex. O(n + edges). With ws's pool and at least
+// thread_entries adjacency entries, half the contraction is a pool task
+// (the same result).
+void coarsen(const Graph& fine, int64_t max_vertex_weight, size_t thread_entries, Rng* rng, Workspace* ws,
+             IntArray* fine_to_coarse, Graph* coarse);
 
 // Vertex separators of a small graph: regions grown breadth-first from
 // `tries` seeds to half the weight, their boundary taken as separator,
@@ -162,8 +167,8 @@ void refine_separator(const Graph& g, const NestedDissectionOptions& params, Wor
 // by level, refining at each. *h holds g's coarsenings: those it comes with
 // (restrict_hierarchy) are kept and coarsened further down to
 // coarsest_size; the caller may restrict them to the parts.
-void find_separator(const Graph& g, const NestedDissectionOptions& params, int32_t threads, Rng* rng, Workspace* ws,
-                    Hierarchy* h, std::vector<uint8_t>* where);
+void find_separator(const Graph& g, const NestedDissectionOptions& params, Rng* rng, Workspace* ws, Hierarchy* h,
+                    std::vector<uint8_t>* where);
 
 // The coarsenings of the part g[vertices] (vertices increasing) read off g's
 // coarsenings h, down to the first level with at most `target` vertices or

@@ -165,11 +165,12 @@ class SeparatorRefiner {
       // Passes in alternating directions, the first into the lighter side;
       // stop after a pair of passes that did not improve the separator.
       int to = weight_[0] <= weight_[1] ? 0 : 1;
+      bool first_improved = false;  // the first pass of the current pair
       for (int32_t pass = 0; pass < 2 * params_.refine_passes; ++pass, to = 1 - to) {
         const bool improved = one_sided_pass(to);
         if (pass % 2 == 0) {
-          pair_improved_ = improved;
-        } else if (!pair_improved_ && !improved) {
+          first_improved = improved;
+        } else if (!first_improved && !improved) {
           break;
         }
       }
@@ -381,7 +382,6 @@ class SeparatorRefiner {
   RefineWorkspace& r_;
   GainHeap heap_[2];  // separator vertices by gain of the move to side 0 / 1
   bool active_[2] = {true, true};  // which heaps the pass fills
-  bool pair_improved_ = false;     // one-sided: the first pass of the pair improved
 };
 
 }  // namespace

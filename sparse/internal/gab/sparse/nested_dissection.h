@@ -75,9 +75,8 @@ struct NestedDissectionOptions {
   // permutation and tree are the same for every thread count.
   int32_t threads = 1;
   int32_t thread_size = 4000;
-  // A graph with at least this many adjacency entries, coarsened where a
-  // second thread is free (the top separators), is contracted on two
-  // (about 20 ms of work on one).
+  // With threads > 1, a graph with at least this many adjacency entries
+  // hands half its contraction to the pool (about 20 ms of work on one).
   int64_t thread_entries = 1 << 20;
 };
 
