@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "../bench_check.h"
+#include "cholmod_updown.h"
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/normal_matrix.h"
 #include "gab/mesh/off_io.h"
@@ -147,26 +148,9 @@ void compare(const std::string& path) {
   // then cholmod_updown with one column (single) or eight (rank-8 batch).
   // C holds w = 1 at the permuted row of each anchor.
   const std::vector<int32_t> seq = gab::benchmark_update_sequence(n, anchors, kUpdates);
-  const int32_t* cperm = static_cast<int32_t*>(lf->Perm);
-  std::vector<int32_t> cinv(n);
-  for (int32_t k = 0; k < n; ++k) cinv[cperm[k]] = k;
+  const std::vector<int32_t> cinv = gab_bench::factor_inverse_perm(lf);
   auto updown = [&](cholmod_factor* f, int32_t first, int32_t width) {
-    cholmod_sparse* cs = cholmod_allocate_sparse(n, width, width, 1, 1, 0, CHOLMOD_REAL, &c);
-    int32_t* cp = static_cast<int32_t*>(cs->p);
-    int32_t* ci = static_cast<int32_t*>(cs->i);
-    double* cx = static_cast<double*>(cs->x);
-    for (int32_t q = 0; q < width; ++q) {
-      cp[q] = q;
-      ci[q] = cinv[seq[first + q]];
-      cx[q] = 1.0;
-    }
-    cp[width] = width;
-    cholmod_sort(cs, &c);
-    double t0 = now();
-    cholmod_updown(1, cs, f, &c);
-    double dt = now() - t0;
-    cholmod_free_sparse(&cs, &c);
-    return dt;
+    return gab_bench::timed_updown(f, cinv, seq.data() + first, width, &c);
   };
   cholmod_factor* lsingle = cholmod_copy_factor(lf, &c);
   cholmod_change_factor(CHOLMOD_REAL, 0, 0, 1, 1, lsingle, &c);

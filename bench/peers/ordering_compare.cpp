@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "../bench_check.h"
+#include "cholmod_updown.h"
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/mesh_io.h"
 #include "gab/mesh/normal_matrix.h"
@@ -108,21 +109,9 @@ double cholmod_updown_seconds(const gab::CscMatrix& a, const std::vector<int32_t
   cholmod_factor* f = cholmod_analyze_p(ca, given.data(), nullptr, 0, c);
   cholmod_factorize(ca, f, c);
   cholmod_change_factor(CHOLMOD_REAL, 0, 0, 1, 1, f, c);
-  const int32_t* fperm = static_cast<int32_t*>(f->Perm);
-  std::vector<int32_t> inverse(n);
-  for (int32_t k = 0; k < n; ++k) inverse[fperm[k]] = k;
+  const std::vector<int32_t> inverse = gab_bench::factor_inverse_perm(f);
   double seconds = 0;
-  for (int32_t v : seq) {
-    cholmod_sparse* cs = cholmod_allocate_sparse(n, 1, 1, 1, 1, 0, CHOLMOD_REAL, c);
-    static_cast<int32_t*>(cs->p)[0] = 0;
-    static_cast<int32_t*>(cs->p)[1] = 1;
-    static_cast<int32_t*>(cs->i)[0] = inverse[v];
-    static_cast<double*>(cs->x)[0] = 1.0;
-    const double t0 = now();
-    cholmod_updown(1, cs, f, c);
-    seconds += now() - t0;
-    cholmod_free_sparse(&cs, c);
-  }
+  for (const int32_t& v : seq) seconds += gab_bench::timed_updown(f, inverse, &v, 1, c);
   cholmod_free_factor(&f, c);
   cholmod_free_sparse(&ca, c);
   c->nmethods = saved_nmethods;
