@@ -139,6 +139,15 @@ Status analyze_structure(const CscMatrix& lower, const AnalyzeOptions& options, 
   link_supernodes(&f);
   supernode_rows(graph, &f);
   lay_out_blocks(&f);
+  // The assembly map's offsets within a block are 32-bit (symbolic.h).
+  for (int32_t s = 0; s < f.num_supernodes; ++s) {
+    if (f.value_ptr[s + 1] - f.value_ptr[s] > INT32_MAX) {
+      return Status::Error(StatusCode::kResourceExhausted,
+                           "supernode " + std::to_string(s) + " would hold " +
+                               std::to_string(f.value_ptr[s + 1] - f.value_ptr[s]) +
+                               " entries, more than 2^31 - 1");
+    }
+  }
   f.stack_peak = update_stack_size(f);
   *out = std::move(f);
   return Status::Ok();

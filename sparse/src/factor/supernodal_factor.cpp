@@ -64,7 +64,7 @@ int32_t factor_group(const FrontContext& ctx, int32_t group, int32_t* map, int32
     std::memset(block, 0, sizeof(double) * static_cast<size_t>(m) * k);
     for (int32_t t = 0; t < m; ++t) map[rows[t]] = t;
     for (int64_t q = f.a_ptr[s]; q < f.a_ptr[s + 1]; ++q) {
-      values[f.a_dest[q]] += ctx.a[f.a_order[q]];
+      block[f.a_dest[q]] += ctx.a[f.a_order[q]];
     }
 
     // Update matrices are packed lower triangles (dense_kernels.h).
