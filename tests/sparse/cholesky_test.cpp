@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -95,6 +96,79 @@ TEST(CholeskyTest, FactorMatchesSimplicialOracleOnRandomMatrices) {
   }
 }
 
+// Wide supernodes cut into chains of panels (AnalyzeOptions::panel_cols):
+// the chain's structure is its supernode's, the factor the oracle's, the
+// same bits on every thread count, in fewer stored entries.
+TEST(CholeskyTest, PanelChainsMatchTheOracleInLessStorage) {
+  std::vector<CscMatrix> matrices = {testing_util::grid_laplacian(40, 30), random_spd(300, 6.0, 11, 2, 1),
+                                     random_spd(150, 40.0, 12), random_spd(400, 4.0, 13, 3, 3)};
+  for (size_t which = 0; which < matrices.size(); ++which) {
+    const CscMatrix& a = matrices[which];
+    AnalyzeOptions uncut;
+    uncut.panel_cols = 0;
+    Cholesky whole;
+    ASSERT_TRUE(whole.analyze(a, uncut).ok());
+    for (int32_t panel_cols : {3, 16}) {
+      std::vector<double> reference;
+      for (int32_t threads = 1; threads <= 3; ++threads) {
+        AnalyzeOptions options;
+        options.panel_cols = panel_cols;
+        options.max_panels = 6;
+        options.threads = threads;
+        Cholesky chol;
+        ASSERT_TRUE(chol.analyze(a, options).ok());
+        ASSERT_TRUE(chol.factorize(a).ok());
+        const SymbolicFactor& f = chol.symbolic();
+        EXPECT_EQ(f.perm, whole.symbolic().perm);
+        EXPECT_EQ(f.nnz_L, whole.symbolic().nnz_L);
+        ASSERT_FALSE(f.continued.empty()) << which;
+        EXPECT_LT(f.value_ptr.back(), whole.symbolic().value_ptr.back()) << which;
+        for (int32_t s = 0, e = 0; s < f.num_supernodes; s = e + 1) {
+          // Chain s..e: at most max_panels of near-equal widths, no wider
+          // than panel_cols unless the cap on panels made them so.
+          for (e = s; f.continues(e); ++e) {
+          }
+          int32_t widest = 0, narrowest = INT32_MAX;
+          for (int32_t t = s; t <= e; ++t) {
+            widest = std::max(widest, f.cols(t));
+            narrowest = std::min(narrowest, f.cols(t));
+          }
+          EXPECT_LE(e - s + 1, options.max_panels);
+          EXPECT_LE(widest - narrowest, 1);
+          if (e - s + 1 < options.max_panels) {
+            EXPECT_LE(widest, panel_cols);
+          }
+        }
+        for (int32_t s = 0; s < f.num_supernodes; ++s) {
+          if (!f.continues(s)) continue;
+          ASSERT_EQ(f.supernode_parent[s], s + 1);
+          // The next panel's rows are this one's from the next panel's column on.
+          EXPECT_TRUE(std::equal(f.row_ind.begin() + f.row_ptr[s] + f.cols(s), f.row_ind.begin() + f.row_ptr[s + 1],
+                                 f.row_ind.begin() + f.row_ptr[s + 1], f.row_ind.begin() + f.row_ptr[s + 2]));
+        }
+        EXPECT_LT(factor_difference(chol, a), 1e-12) << which << " panel_cols " << panel_cols;
+        std::vector<double> values(chol.values(), chol.values() + f.value_ptr.back());
+        for (int32_t s = 0; s < f.num_supernodes; ++s) {  // the unspecified upper triangles
+          for (int32_t c = 1; c < f.cols(s); ++c) {
+            std::fill_n(values.begin() + f.value_ptr[s] + static_cast<int64_t>(c) * f.rows(s), c, 0.0);
+          }
+        }
+        if (threads == 1) {
+          reference = values;
+        } else {
+          EXPECT_TRUE(values == reference) << which << " threads " << threads;
+        }
+        const int32_t n = a.ncols;
+        std::vector<double> b(2 * static_cast<size_t>(n));
+        for (size_t i = 0; i < b.size(); ++i) b[i] = std::sin(0.7 * i) + 2.0;
+        std::vector<double> x = b;
+        ASSERT_TRUE(chol.solve(x.data(), 2, n).ok());
+        EXPECT_LT(relative_residual(a, x, b, 2), 1e-12);
+      }
+    }
+  }
+}
+
 TEST(CholeskyTest, SolveSeveralRightHandSidesToResidual1e12) {
   for (SimdLevel level : supported_levels()) {
     for (int32_t nrhs : {1, 2, 3, 4, 7}) {
@@ -163,9 +237,18 @@ TEST(CholeskyTest, IndefiniteInsideALargeSupernodeIsReported) {
   }
   CscMatrix a;
   ASSERT_TRUE(csc_from_triplets(30, 30, t, &a).ok());
-  Cholesky chol;
-  ASSERT_TRUE(chol.analyze(a).ok());
-  EXPECT_EQ(chol.factorize(a).code(), StatusCode::kNotPositiveDefinite);
+  // Whether the block is one supernode or a chain of panels, the failure
+  // is at the shifted column, whichever pivot it is.
+  for (int32_t panel_cols : {0, 4}) {
+    AnalyzeOptions options;
+    options.panel_cols = panel_cols;
+    Cholesky chol;
+    ASSERT_TRUE(chol.analyze(a, options).ok());
+    EXPECT_EQ(chol.symbolic().continued.empty(), panel_cols == 0);
+    const Status s = chol.factorize(a);
+    EXPECT_EQ(s.code(), StatusCode::kNotPositiveDefinite);
+    EXPECT_NE(s.message().find("(original row/column 29) is not positive"), std::string::npos) << s.message();
+  }
 }
 
 TEST(CholeskyTest, FactorLimitRefusesBeforeAnyStorageIsReserved) {

@@ -112,13 +112,17 @@ TEST(FactorScheduleTest, LiveUpdateMatricesNeverShareMemory) {
       std::vector<int32_t> position(ns);
       for (int32_t i = 0; i < ns; ++i) position[plan.order[i]] = i;
       // An update lives from its front's turn to its parent's (inclusive)
-      // if the parent is in the same group, else to the group's end.
+      // if the parent is in the same group, else to the group's end. A
+      // chain of panels is one front, its last panel's turn: only that
+      // panel has an update.
       std::vector<int64_t> begin(ns), end(ns);
       std::vector<int32_t> born(ns), dies(ns);
       for (int32_t s = 0; s < ns; ++s) {
         begin[s] = plan.update_offset[s];
-        end[s] = begin[s] + packed_lower_size(f.rows(s) - f.cols(s));
-        const int32_t g = owner[s], parent = f.supernode_parent[s];
+        end[s] = begin[s] + (f.continues(s) ? 0 : packed_lower_size(f.rows(s) - f.cols(s)));
+        int32_t parent = f.supernode_parent[s];
+        while (parent != -1 && f.continues(parent)) ++parent;
+        const int32_t g = owner[s];
         EXPECT_GE(begin[s], plan.stack_ptr[g]);
         EXPECT_LE(end[s], plan.stack_ptr[g + 1]);
         born[s] = position[s];

@@ -124,5 +124,19 @@ TEST(RelaxSupernodesTest, AnalysisMergesFundamentalSupernodesIntoFewerLargerOnes
   }
 }
 
+TEST(SplitWideSupernodesTest, CutsIntoNearEqualPanelsUpToTheCap) {
+  const std::vector<int32_t> first_col = {0, 2, 12, 13};  // widths 2, 10, 1
+  std::vector<uint8_t> continued;
+  EXPECT_EQ(split_wide_supernodes(first_col, 4, 8, &continued), (std::vector<int32_t>{0, 2, 6, 9, 12, 13}));
+  EXPECT_EQ(continued, (std::vector<uint8_t>{0, 1, 1, 0, 0}));
+  EXPECT_EQ(split_wide_supernodes(first_col, 4, 2, &continued), (std::vector<int32_t>{0, 2, 7, 12, 13}));
+  EXPECT_EQ(continued, (std::vector<uint8_t>{0, 1, 0, 0}));
+  EXPECT_EQ(split_wide_supernodes(first_col, 0, 8, &continued), first_col);
+  EXPECT_EQ(continued, (std::vector<uint8_t>{0, 0, 0}));
+  EXPECT_EQ(split_wide_supernodes(first_col, 10, 8, nullptr), first_col);
+  EXPECT_EQ(split_wide_supernodes({0}, 4, 8, &continued), (std::vector<int32_t>{0}));
+  EXPECT_TRUE(continued.empty());
+}
+
 }  // namespace
 }  // namespace gab

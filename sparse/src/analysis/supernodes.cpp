@@ -1,6 +1,8 @@
 // Fundamental supernodes and relaxed amalgamation.
 #include "gab/sparse/supernodes.h"
 
+#include <algorithm>
+
 #include "gab/sparse/disjoint_set.h"
 
 namespace gab {
@@ -68,6 +70,28 @@ std::vector<int32_t> relax_supernodes(const std::vector<int32_t>& first_col,
   }
   merged.push_back(n);
   return merged;
+}
+
+std::vector<int32_t> split_wide_supernodes(const std::vector<int32_t>& first_col, int32_t panel_cols,
+                                           int32_t max_panels, std::vector<uint8_t>* continued) {
+  std::vector<int32_t> cut;
+  if (continued != nullptr) continued->clear();
+  const size_t ns = first_col.empty() ? 0 : first_col.size() - 1;
+  for (size_t s = 0; s < ns; ++s) {
+    const int32_t k = first_col[s + 1] - first_col[s];
+    int32_t panels = 1;
+    if (panel_cols > 0 && k > panel_cols) {
+      panels = std::min<int32_t>((k + panel_cols - 1) / panel_cols, std::max<int32_t>(max_panels, 1));
+    }
+    // Widths k / panels, the first k % panels of them one wider.
+    for (int32_t q = 0, col = first_col[s]; q < panels; ++q) {
+      cut.push_back(col);
+      col += k / panels + (q < k % panels ? 1 : 0);
+      if (continued != nullptr) continued->push_back(q + 1 < panels ? 1 : 0);
+    }
+  }
+  cut.push_back(ns == 0 ? (first_col.empty() ? 0 : first_col[0]) : first_col[ns]);
+  return cut;
 }
 
 }  // namespace gab

@@ -8,6 +8,7 @@
 // permutation.
 #include "gab/sparse/symbolic.h"
 
+#include <algorithm>
 #include <string>
 #if defined(__GLIBC__)  // defined once <string> has included <features.h>
 #include <malloc.h>
@@ -136,6 +137,8 @@ Status analyze_structure(const CscMatrix& lower, const AnalyzeOptions& options, 
   if (options.relax.enabled) {
     f.first_col = relax_supernodes(f.first_col, f.etree.parent, f.column_counts, options.relax);
   }
+  f.first_col = split_wide_supernodes(f.first_col, options.panel_cols, options.max_panels, &f.continued);
+  if (std::find(f.continued.begin(), f.continued.end(), 1) == f.continued.end()) f.continued.clear();
   link_supernodes(&f);
   supernode_rows(graph, &f);
   lay_out_blocks(&f);

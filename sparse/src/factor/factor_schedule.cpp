@@ -91,9 +91,21 @@ FactorSchedule plan_factor_schedule(const SymbolicFactor& f, int32_t threads,
       }
       const int32_t heaviest = sorted.front();
       if (child_head[heaviest] == -1) break;
-      top += work[heaviest];
       roots.erase(std::find(roots.begin(), roots.end(), heaviest));
-      for (int32_t c = child_head[heaviest]; c != -1; c = child_next[c]) roots.push_back(c);
+      // A chain of panels is factored as one front, by one group: the
+      // panels below a split one join the top part with it.
+      for (int32_t h = heaviest; h != -1;) {
+        top += work[h];
+        int32_t panel_below = -1;
+        for (int32_t c = child_head[h]; c != -1; c = child_next[c]) {
+          if (f.continues(c)) {
+            panel_below = c;
+          } else {
+            roots.push_back(c);
+          }
+        }
+        h = panel_below;
+      }
     }
     for (size_t i = 0; i < best_sorted.size(); ++i) {
       const int32_t r = best_sorted[i];

@@ -49,31 +49,45 @@ struct FrontContext {
   double* work;
 };
 
-// Assembles and partially factors the fronts of one group, in order; map,
-// rel and run_end are this thread's. Returns the first supernode whose
-// pivot failed (its column offset in *bad_col), or -1.
-int32_t factor_group(const FrontContext& ctx, int32_t group, int32_t* map, int32_t* rel,
+// Assembles and partially factors one front: supernode s1, or the chain of
+// panels s0..s1 (SymbolicFactor::continued) cut from one supernode. A
+// chain's panels hold the front's columns in consecutive blocks, panel t
+// its columns' rows from its own first column on (ld rows(t)); the front is
+// factored by blocks, right-looking: each panel's POTRF and TRSM, then its
+// SYRK and GEMM into the later panels, and its SYRK into the front's update
+// matrix. A single supernode is the same steps with one panel. map, rel and
+// run_end are this thread's. Returns -1, or the supernode whose pivot failed
+// (its column offset in *bad_col).
+int32_t factor_front(const FrontContext& ctx, int32_t s0, int32_t s1, int32_t* map, int32_t* rel,
                      int32_t* run_end, int32_t* bad_col) {
   const SymbolicFactor& f = ctx.f;
   double* const values = ctx.values;
-  for (int32_t i = ctx.plan.group_ptr[group]; i < ctx.plan.group_ptr[group + 1]; ++i) {
-    const int32_t s = ctx.plan.order[i];
-    const int32_t k = f.cols(s), m = f.rows(s), p = m - k;
-    const int32_t* rows = f.row_ind.data() + f.row_ptr[s];
+  const int32_t first = f.first_col[s0];
+  const int32_t k = f.first_col[s1 + 1] - first, m = f.rows(s0), p = m - k;  // the front's
+  const int32_t* rows = f.row_ind.data() + f.row_ptr[s0];
+  std::memset(values + f.value_ptr[s0], 0, sizeof(double) * static_cast<size_t>(f.value_ptr[s1 + 1] - f.value_ptr[s0]));
+  for (int32_t t = 0; t < m; ++t) map[rows[t]] = t;
+  for (int32_t s = s0; s <= s1; ++s) {
     double* block = values + f.value_ptr[s];
-    std::memset(block, 0, sizeof(double) * static_cast<size_t>(m) * k);
-    for (int32_t t = 0; t < m; ++t) map[rows[t]] = t;
-    for (int64_t q = f.a_ptr[s]; q < f.a_ptr[s + 1]; ++q) {
-      block[f.a_dest[q]] += ctx.a[f.a_order[q]];
-    }
+    for (int64_t q = f.a_ptr[s]; q < f.a_ptr[s + 1]; ++q) block[f.a_dest[q]] += ctx.a[f.a_order[q]];
+  }
+  // Front column c at front row r (r >= c): in the panel holding c, which
+  // starts at front row and column `off`.
+  auto column = [&](int32_t c) {
+    const int32_t s = f.supernode_of[first + c], off = f.first_col[s] - first;
+    return values + f.value_ptr[s] + static_cast<int64_t>(c - off) * f.rows(s) - off;
+  };
 
-    // Update matrices are packed lower triangles (dense_kernels.h).
-    double* update = ctx.work + ctx.plan.update_offset[s];
-    for (int32_t j = 0; j < p; ++j) {
-      std::memset(packed_lower_column(update, p, j) + j, 0, sizeof(double) * (p - j));
-    }
-    // Children in increasing order, whichever group left their updates.
+  // Update matrices are packed lower triangles (dense_kernels.h).
+  double* update = ctx.work + ctx.plan.update_offset[s1];
+  for (int32_t j = 0; j < p; ++j) {
+    std::memset(packed_lower_column(update, p, j) + j, 0, sizeof(double) * (p - j));
+  }
+  // Children in increasing order, whichever group left their updates; a
+  // panel's previous panel is part of this front, not a child.
+  for (int32_t s = s0; s <= s1; ++s) {
     for (int32_t c = ctx.plan.child_head[s]; c != -1; c = ctx.plan.child_next[c]) {
+      if (f.continues(c)) continue;
       const int32_t kc = f.cols(c), pc = f.rows(c) - kc;
       const double* cu = ctx.work + ctx.plan.update_offset[c];
       const int32_t* crows = f.row_ind.data() + f.row_ptr[c] + kc;
@@ -86,7 +100,7 @@ int32_t factor_group(const FrontContext& ctx, int32_t group, int32_t* map, int32
       for (int32_t t = 0; t < pc; ++t) {
         const double* src = packed_lower_column(cu, pc, t);
         const int32_t col = rel[t];
-        double* dst = col < k ? block + static_cast<int64_t>(col) * m : packed_lower_column(update, p, col - k) - k;
+        double* dst = col < k ? column(col) : packed_lower_column(update, p, col - k) - k;
         for (int32_t u = t; u < pc;) {
           const int32_t end = run_end[u];
           double* d = dst + rel[u] - u;
@@ -95,16 +109,43 @@ int32_t factor_group(const FrontContext& ctx, int32_t group, int32_t* map, int32
         }
       }
     }
+  }
 
-    const int32_t bad = ctx.kern.potrf(k, block, m);
+  for (int32_t s = s0; s <= s1; ++s) {
+    const int32_t ks = f.cols(s), ms = f.rows(s), off = f.first_col[s] - first;
+    double* block = values + f.value_ptr[s];
+    const int32_t bad = ctx.kern.potrf(ks, block, ms);
     if (bad >= 0) {
       *bad_col = bad;
       return s;
     }
-    if (p > 0) {
-      ctx.kern.trsm_right_lower_trans(p, k, block, m, block + k, m);
-      ctx.kern.syrk_lower_sub_packed(p, k, block + k, m, update);
+    if (ms == ks) continue;
+    ctx.kern.trsm_right_lower_trans(ms - ks, ks, block, ms, block + ks, ms);
+    for (int32_t t = s + 1; t <= s1; ++t) {
+      const int32_t kt = f.cols(t), mt = f.rows(t);
+      const double* l = block + (f.first_col[t] - first - off);  // this panel's rows from t's first
+      double* target = values + f.value_ptr[t];
+      ctx.kern.syrk_lower_sub(kt, ks, l, ms, target, mt);
+      if (mt > kt) ctx.kern.gemm_nt_sub(mt - kt, kt, ks, l + kt, ms, l, ms, target + kt, mt);
     }
+    if (p > 0) ctx.kern.syrk_lower_sub_packed(p, ks, block + (k - off), ms, update);
+  }
+  return -1;
+}
+
+// Assembles and partially factors the fronts of one group, in order.
+// Returns the first supernode whose pivot failed (its column offset in
+// *bad_col), or -1.
+int32_t factor_group(const FrontContext& ctx, int32_t group, int32_t* map, int32_t* rel,
+                     int32_t* run_end, int32_t* bad_col) {
+  const SymbolicFactor& f = ctx.f;
+  for (int32_t i = ctx.plan.group_ptr[group]; i < ctx.plan.group_ptr[group + 1]; ++i) {
+    const int32_t s = ctx.plan.order[i];
+    if (f.continues(s)) continue;  // factored with the rest of its chain
+    int32_t s0 = s;
+    while (s0 > 0 && f.continues(s0 - 1)) --s0;
+    const int32_t fail = factor_front(ctx, s0, s, map, rel, run_end, bad_col);
+    if (fail != -1) return fail;
   }
   return -1;
 }

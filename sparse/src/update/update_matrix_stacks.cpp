@@ -25,7 +25,16 @@ void lay_out_update_stacks(const SymbolicFactor& f, const std::vector<int32_t>& 
                            std::vector<int64_t>* update_offset) {
   const int32_t ns = f.num_supernodes;
   const int32_t groups = static_cast<int32_t>(group_ptr.size()) - 1;
-  const std::vector<int32_t> depth = tree_depths(f.supernode_parent);
+  // A chain of panels is one front (supernodal_factor.cpp): its last panel
+  // alone has an update matrix, and the children of all its panels are the
+  // front's children. front[s]: the last panel of s's chain (s if none).
+  std::vector<int32_t> front(ns);
+  for (int32_t s = ns - 1; s >= 0; --s) front[s] = f.continues(s) ? front[s + 1] : s;
+  std::vector<int32_t> front_parent(ns);
+  for (int32_t s = 0; s < ns; ++s) {
+    front_parent[s] = f.supernode_parent[s] == -1 ? -1 : front[f.supernode_parent[s]];
+  }
+  const std::vector<int32_t> depth = tree_depths(front_parent);
   std::vector<int32_t> group_of(ns, -1);
   for (int32_t g = 0; g < groups; ++g) {
     for (int32_t i = group_ptr[g]; i < group_ptr[g + 1]; ++i) group_of[order[i]] = g;
@@ -40,6 +49,7 @@ void lay_out_update_stacks(const SymbolicFactor& f, const std::vector<int32_t>& 
     int64_t top[2] = {0, 0}, peak = 0;
     for (int32_t i = group_ptr[g]; i < group_ptr[g + 1]; ++i) {
       const int32_t s = order[i];
+      if (f.continues(s)) continue;  // no update matrix of its own
       const int64_t size = packed_lower_size(f.rows(s) - f.cols(s));
       const int side = depth[s] & 1;
       // The high end is known only with the peak: until then an odd-depth
@@ -48,7 +58,7 @@ void lay_out_update_stacks(const SymbolicFactor& f, const std::vector<int32_t>& 
       top[side] += size;
       peak = std::max(peak, top[0] + top[1]);
       top[1 - side] -= pending[s];
-      const int32_t parent = f.supernode_parent[s];
+      const int32_t parent = front_parent[s];
       if (parent != -1 && group_of[parent] == g) pending[parent] += size;
     }
     (*stack_ptr)[g + 1] = base + peak;
@@ -56,6 +66,10 @@ void lay_out_update_stacks(const SymbolicFactor& f, const std::vector<int32_t>& 
     for (int32_t i = group_ptr[g]; i < group_ptr[g + 1]; ++i) {
       const int32_t s = order[i];
       int64_t& offset = (*update_offset)[s];
+      if (f.continues(s)) {  // an empty update, in the group's buffer
+        offset = base;
+        continue;
+      }
       offset = (depth[s] & 1) == 0 ? base + offset : base + peak - offset;
     }
   }

@@ -9,13 +9,15 @@
 namespace gab {
 
 // The supernode tree: num_supernodes, supernode_of and supernode_parent
-// (the supernode holding the etree parent of each one's last column), from
-// first_col and etree. O(n).
+// (the supernode holding the etree parent of each one's last column; for a
+// panel that continues, the next panel), from first_col, continued and
+// etree. O(n).
 void link_supernodes(SymbolicFactor* f);
 
 // Rows of every supernode (row_ptr, row_ind): its own columns, then the
 // union of the rows below them from A's columns and from its children's
-// structures, sorted. `graph` is A's symmetric pattern (both triangles) in
+// structures, sorted; a chain of panels takes its supernode's rows, each
+// panel from its own columns on. `graph` is A's symmetric pattern (both triangles) in
 // the original numbering, read through f->perm. O(sum of rows * log).
 void supernode_rows(const CscMatrix& graph, SymbolicFactor* f);
 

@@ -33,4 +33,12 @@ std::vector<int32_t> relax_supernodes(const std::vector<int32_t>& first_col,
                                       const std::vector<int32_t>& counts,
                                       const RelaxOptions& options);
 
+// Cuts every supernode of a partition (first columns plus n) wider than
+// panel_cols into ceil(k / panel_cols) panels, at most max_panels, of
+// near-equal widths (the wider first). Returns the new partition; when
+// `continued` is given, (*continued)[s] = 1 for each panel s but the last of
+// its supernode. panel_cols <= 0 cuts nothing. O(number of supernodes).
+std::vector<int32_t> split_wide_supernodes(const std::vector<int32_t>& first_col, int32_t panel_cols,
+                                           int32_t max_panels, std::vector<uint8_t>* continued);
+
 }  // namespace gab

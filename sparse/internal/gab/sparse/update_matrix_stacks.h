@@ -6,7 +6,9 @@
 // updates of even-depth supernodes grow up from the low end, odd-depth ones
 // down from the high end. A front's children then sit on top of the stack
 // its own update does not use, so it writes its update while still reading
-// theirs, pops them after, and nothing is ever moved.
+// theirs, pops them after, and nothing is ever moved. A chain of panels
+// (SymbolicFactor::continued) is one front: only its last panel has an
+// update matrix, and the children of all its panels are that front's.
 #pragma once
 
 #include <cstdint>
