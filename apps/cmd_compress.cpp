@@ -2,6 +2,7 @@
 // quantized and range coded. Without a stopping rule: --error 0.001.
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <unistd.h>
 
 #include "cli.h"
@@ -89,7 +90,7 @@ int run_compress(int argc, char** argv) {
   }
   std::vector<uint8_t> file;
   EncodeStats stats;
-  status = encode_mesh(mesh, options, &file, &stats);
+  status = encode_mesh(std::move(mesh), options, &file, &stats);  // not read again here
   if (tty) std::fprintf(stderr, "\n");
   if (!status.ok()) return fail(in + ": " + status.message());
   status = write_file_atomically(out, std::string_view(reinterpret_cast<const char*>(file.data()), file.size()));

@@ -35,8 +35,7 @@ Status RelaxedReconstruction::check_new(const std::vector<int32_t>& anchors,
 }
 
 void RelaxedReconstruction::add_to_matrix(const std::vector<int32_t>& anchors) {
-  // The diagonal entry leads each column of the lower triangle (assemble_normal_matrix keeps it).
-  for (int32_t a : anchors) matrix_.values[matrix_.colptr[a]] += weight_ * weight_;
+  for (int32_t a : anchors) values_[diagonal_[a]] += weight_ * weight_;
 }
 
 void RelaxedReconstruction::record(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients) {
@@ -71,14 +70,21 @@ Status RelaxedReconstruction::init(const EdgeGraph& graph, double weight,
                                " has no anchor (every component needs one)");
     }
   }
-  GAB_RETURN_IF_ERROR(assemble_normal_matrix(graph, anchors, weight, &matrix_, threads_));
+  CscMatrix matrix;
+  GAB_RETURN_IF_ERROR(assemble_normal_matrix(graph, anchors, weight, &matrix, threads_));
   AnalyzeOptions options;
   options.ordering = ordering_;
   options.given_perm = given_perm_;
   options.threads = threads_;
   options.max_factor_entries = max_factor_entries_;
-  GAB_RETURN_IF_ERROR(chol_.analyze(matrix_, options));
-  GAB_RETURN_IF_ERROR(chol_.factorize(matrix_));
+  GAB_RETURN_IF_ERROR(chol_.analyze(matrix, options));
+  // The diagonal entry leads each column of the lower triangle
+  // (assemble_normal_matrix keeps it). The pattern goes before the factor
+  // is formed: the factorization's peak is the whole job's.
+  diagonal_.assign(matrix.colptr.begin(), matrix.colptr.begin() + n_);
+  values_ = std::move(matrix.values);
+  matrix = CscMatrix();
+  GAB_RETURN_IF_ERROR(chol_.factorize_values(values_.data(), static_cast<int64_t>(values_.size())));
   record(anchors, coefficients);
   return Status::Ok();
 }
@@ -98,11 +104,11 @@ Status RelaxedReconstruction::add_anchors_refactoring(const std::vector<int32_t>
   if (!chol_.factorized()) return Status::Error(StatusCode::kInvalidArgument, "add_anchors before init");
   GAB_RETURN_IF_ERROR(check_new(anchors, coefficients));
   add_to_matrix(anchors);
-  const Status s = chol_.factorize(matrix_);
+  const Status s = chol_.factorize_values(values_.data(), static_cast<int64_t>(values_.size()));
   if (!s.ok()) {
     // Leave the object as it was: the matrix without these anchors (the
     // factor is lost; a later refactorization restores it).
-    for (int32_t a : anchors) matrix_.values[matrix_.colptr[a]] -= weight_ * weight_;
+    for (int32_t a : anchors) values_[diagonal_[a]] -= weight_ * weight_;
     return s;
   }
   record(anchors, coefficients);

@@ -187,6 +187,34 @@ TEST(CholeskyTest, SolveSeveralRightHandSidesToResidual1e12) {
   }
 }
 
+// B is permuted in place column by column: a leading dimension beyond n
+// leaves the rows between the columns as they were.
+TEST(CholeskyTest, SolveWithALeadingDimensionBeyondN) {
+  const CscMatrix a = random_spd(300, 4.0, 31, 1, 2);
+  const int32_t n = a.ncols, ld = n + 5, nrhs = 3;
+  for (int32_t threads : {1, 2}) {
+    AnalyzeOptions options;
+    options.threads = threads;
+    Cholesky chol;
+    ASSERT_TRUE(chol.analyze(a, options).ok());
+    ASSERT_TRUE(chol.factorize(a).ok());
+    std::vector<double> padded(static_cast<size_t>(ld) * nrhs, -7.0), b(static_cast<size_t>(n) * nrhs);
+    for (int32_t r = 0; r < nrhs; ++r) {
+      for (int32_t i = 0; i < n; ++i) {
+        b[i + static_cast<size_t>(r) * n] = std::cos(0.1 * i + r);
+        padded[i + static_cast<size_t>(r) * ld] = b[i + static_cast<size_t>(r) * n];
+      }
+    }
+    ASSERT_TRUE(chol.solve(padded.data(), nrhs, ld).ok());
+    std::vector<double> x(static_cast<size_t>(n) * nrhs);
+    for (int32_t r = 0; r < nrhs; ++r) {
+      for (int32_t i = 0; i < n; ++i) x[i + static_cast<size_t>(r) * n] = padded[i + static_cast<size_t>(r) * ld];
+      for (int32_t i = n; i < ld; ++i) EXPECT_EQ(padded[i + static_cast<size_t>(r) * ld], -7.0);
+    }
+    EXPECT_LT(relative_residual(a, x, b, nrhs), 1e-12) << threads;
+  }
+}
+
 TEST(CholeskyTest, GridLaplacianResidual) {
   const CscMatrix a = testing_util::grid_laplacian(60, 50);
   const int32_t n = a.ncols;
@@ -278,6 +306,24 @@ TEST(CholeskyTest, FactorizeRejectsAnotherPattern) {
   Cholesky chol;
   ASSERT_TRUE(chol.analyze(a).ok());
   EXPECT_EQ(chol.factorize(b).code(), StatusCode::kInvalidArgument);
+}
+
+TEST(CholeskyTest, FactorizeValuesIsFactorizeWithoutThePattern) {
+  const CscMatrix a = random_spd(120, 3.0, 21, 1, 2);
+  Cholesky by_matrix, by_values;
+  EXPECT_EQ(by_values.factorize_values(a.values.data(), a.nnz()).message(), "factorize before analyze");
+  ASSERT_TRUE(by_matrix.analyze(a).ok());
+  ASSERT_TRUE(by_values.analyze(a).ok());
+  ASSERT_TRUE(by_matrix.factorize(a).ok());
+  const Status short_count = by_values.factorize_values(a.values.data(), a.nnz() - 1);
+  EXPECT_EQ(short_count.code(), StatusCode::kInvalidArgument);
+  EXPECT_EQ(short_count.message(), "factorize_values needs the analyzed matrix's " + std::to_string(a.nnz()) +
+                                       " values, got " + std::to_string(a.nnz() - 1));
+  EXPECT_FALSE(by_values.factorized());
+  const std::vector<double> values = a.values;  // the pattern is not needed
+  ASSERT_TRUE(by_values.factorize_values(values.data(), static_cast<int64_t>(values.size())).ok());
+  const int64_t size = by_matrix.symbolic().value_ptr.back();
+  EXPECT_TRUE(std::equal(by_matrix.values(), by_matrix.values() + size, by_values.values()));
 }
 
 TEST(CholeskyTest, EmptyMatrix) {

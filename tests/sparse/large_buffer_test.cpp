@@ -4,6 +4,10 @@
 
 #include <cstring>
 
+#if defined(__linux__)
+#include <unistd.h>
+#endif
+
 #include "gab/sparse/cholesky.h"
 #include "test_matrices.h"
 
@@ -20,6 +24,36 @@ bool has_pattern(const double* p, int64_t n) {
     if (p[i] != static_cast<double>(i % 1000003) + 0.25) return false;
   }
   return true;
+}
+
+TEST(LargeBufferTest, ReleasedPagesReadAsZerosAndTakeWritesAgain) {
+  constexpr int64_t kCount = int64_t{1} << 20;  // 8 MiB: huge-page aligned
+  LargeBuffer<double> a;
+  ASSERT_TRUE(a.reserve(kCount));
+  double* const data = a.data();
+  fill_pattern(data, kCount);
+  a.release_pages();
+  EXPECT_EQ(a.data(), data);
+  EXPECT_EQ(a.capacity(), kCount);
+#if defined(__linux__)
+  for (int64_t i = 0; i < kCount; i += 511) ASSERT_EQ(data[i], 0.0) << i;
+#endif
+  fill_pattern(data, kCount);
+  EXPECT_TRUE(has_pattern(data, kCount));
+  // Only whole pages inside a ragged range go (doubles 512 .. 4607 of
+  // [100, 5100) on 4 KiB pages): the bytes around them stay.
+  fill_pattern(data, kCount);
+  release_pages(data + 100, sizeof(double) * 5000);
+#if defined(__linux__)
+  const int64_t page = sysconf(_SC_PAGESIZE) / static_cast<int64_t>(sizeof(double));
+  const int64_t first = (100 + page - 1) / page * page, last = 5100 / page * page;
+#else
+  const int64_t first = 0, last = 0;
+#endif
+  for (int64_t i = 0; i < kCount; ++i) {
+    const double expected = i >= first && i < last ? 0.0 : static_cast<double>(i % 1000003) + 0.25;
+    ASSERT_EQ(data[i], expected) << i;
+  }
 }
 
 TEST(PagePopulatorTest, KeepsWhatTheRangesHold) {

@@ -110,6 +110,25 @@ TEST(UpdateTest, UpdatesOnPanelChainsMatchFreshFactorization) {
   }
 }
 
+// The updaters' workspace shares its buffer with the factorization's
+// stacks: an update after a refactorization must not see what the stacks
+// left there.
+TEST(UpdateTest, UpdatesAfterARefactorizationMatchFreshFactorization) {
+  CscMatrix a = testing_util::grid_laplacian(30, 25);
+  Cholesky chol;
+  ASSERT_TRUE(chol.analyze(a).ok());
+  ASSERT_TRUE(chol.factorize(a).ok());
+  ASSERT_TRUE(chol.add_anchor(7, 2.0).ok());
+  for (double& v : a.values) v *= 1.5;  // new values, same pattern
+  ASSERT_TRUE(chol.factorize(a).ok());
+  const int32_t anchors[] = {3, 400, 701};
+  ASSERT_TRUE(chol.add_anchors(anchors, 3, 1.5).ok());
+  ASSERT_TRUE(chol.add_anchor(100, 2.5).ok());
+  for (int32_t j : anchors) add_to_diagonal(&a, j, 2.25);
+  add_to_diagonal(&a, 100, 6.25);
+  EXPECT_LT(difference_from_fresh(chol, a), 1e-12);
+}
+
 TEST(UpdateTest, PathStatisticsFollowTheEliminationTree) {
   const CscMatrix a = testing_util::grid_laplacian(30, 30);
   Cholesky chol;

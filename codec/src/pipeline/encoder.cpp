@@ -398,7 +398,12 @@ Status encode_numbered(const Mesh& mesh, const EncodeOptions& options, const Cod
 
 }  // namespace
 
-Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* file, EncodeStats* stats) {
+namespace {
+
+// Both encode_mesh: `owned`, when given, is `mesh` itself, whose arrays
+// the encoder may take instead of copying.
+Status encode_mesh_from(const Mesh& mesh, Mesh* owned, const EncodeOptions& options, std::vector<uint8_t>* file,
+                        EncodeStats* stats) {
   const auto start = std::chrono::steady_clock::now();
   GAB_RETURN_IF_ERROR(check_options(options));
   GAB_RETURN_IF_ERROR(validate_mesh(mesh, "mesh"));
@@ -414,15 +419,28 @@ Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<u
     Mesh numbered;
     if (options.reorder) {
       numbered = renumber_vertices(mesh, coded.new_index);
+    } else if (owned != nullptr) {
+      numbered.positions = std::move(owned->positions);
     } else {
       numbered.positions = mesh.positions;
     }
+    if (owned != nullptr) *owned = Mesh();  // nothing of the input is read again
     numbered.triangles = std::move(coded.triangles);
     GAB_RETURN_IF_ERROR(encode_numbered(numbered, options, coded, file, stats));
     if (options.reorder) stats->new_index = std::move(coded.new_index);
   }
   stats->encode_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return Status::Ok();
+}
+
+}  // namespace
+
+Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* file, EncodeStats* stats) {
+  return encode_mesh_from(mesh, nullptr, options, file, stats);
+}
+
+Status encode_mesh(Mesh&& mesh, const EncodeOptions& options, std::vector<uint8_t>* file, EncodeStats* stats) {
+  return encode_mesh_from(mesh, &mesh, options, file, stats);
 }
 
 }  // namespace gab

@@ -1,7 +1,9 @@
 // The Cholesky object: buffers and permutations around the supernodal kernels.
 #include "gab/sparse/cholesky.h"
 
+#include <algorithm>
 #include <string>
+#include <vector>
 
 #include "gab/sparse/dense_kernels.h"
 #include "gab/sparse/factor_schedule.h"
@@ -10,6 +12,33 @@
 #include "gab/sparse/update.h"
 
 namespace gab {
+namespace {
+
+// Update stacks at least this large are released after each factorization.
+constexpr size_t kReleasedStackBytes = size_t{128} << 20;
+
+// x[k] := x[from[k]] for k = 0 .. n-1, in place along the permutation's
+// cycles; *seen holds n bits, clear on entry and on return.
+void gather_in_place(double* x, const int32_t* from, int32_t n, std::vector<uint64_t>* seen) {
+  uint64_t* bits = seen->data();
+  for (int32_t start = 0; start < n; ++start) {
+    if (bits[start >> 6] >> (start & 63) & 1) continue;
+    const double first = x[start];
+    for (int32_t k = start;;) {
+      bits[k >> 6] |= uint64_t{1} << (k & 63);
+      const int32_t next = from[k];
+      if (next == start) {
+        x[k] = first;
+        break;
+      }
+      x[k] = x[next];
+      k = next;
+    }
+  }
+  std::fill(seen->begin(), seen->end(), 0);
+}
+
+}  // namespace
 
 struct Cholesky::State {
   SymbolicFactor symbolic;
@@ -19,11 +48,14 @@ struct Cholesky::State {
   bool analyzed = false;
   bool factorized = false;
   LargeBuffer<double> values;
-  LargeBuffer<double> work;  // multifrontal update stacks
+  // The multifrontal update stacks during factorize(), the updaters'
+  // workspace between factorizations (see update_workspace_doubles): an
+  // encoder that factors and then adds anchors needs the two in turn, and
+  // at 2.4M vertices each is 0.2 GB.
+  LargeBuffer<double> work;
   LargeBuffer<int32_t> iwork;
-  LargeBuffer<double> solve_rhs;  // permuted right-hand sides
+  std::vector<uint64_t> solve_seen;  // a bit per row: gather_in_place's marks
   LargeBuffer<double> solve_work;
-  LargeBuffer<double> update_work;  // see update_workspace_doubles
   LargeBuffer<int32_t> update_iwork;
   PagePopulator populator;  // after the buffers: stops before they are freed
   bool update_ready = false;
@@ -59,7 +91,8 @@ Status Cholesky::analyze(const CscMatrix& lower, const AnalyzeOptions& options) 
   // flops' split leaves the solves' groups unbalanced.
   s.solve_schedule = plan_factor_schedule(s.symbolic, options.threads, ScheduleBalance::kSolveEntries);
   const int64_t work = factor_workspace_doubles(s.schedule);
-  if (!s.values.reserve(values) || !s.work.reserve(work) ||
+  // Only the stacks' part is faulted in below; the rest waits for updates.
+  if (!s.values.reserve(values) || !s.work.reserve(std::max(work, update_workspace_doubles(s.symbolic))) ||
       !s.iwork.reserve(factor_workspace_ints(s.symbolic, s.schedule))) {
     return Status::Error(StatusCode::kOutOfMemory,
                          "cannot allocate " + std::to_string((values + work) * 8 >> 20) +
@@ -73,21 +106,46 @@ Status Cholesky::analyze(const CscMatrix& lower, const AnalyzeOptions& options) 
   }
   map_assembly(lower, &s.symbolic);
   // The updater's workspace waits for the first update (prepare_updates):
-  // a caller that only factors and solves (a decoder that refactors) would
-  // otherwise fault in ~11 n doubles it never uses.
+  // a caller that only factors and solves (a decoder that refactors) never
+  // faults in the ~11 n doubles it would take beyond the stacks.
   s.update_ready = false;
   s.analyzed = true;
   return Status::Ok();
 }
 
 Status Cholesky::factorize(const CscMatrix& lower) {
+  const SymbolicFactor& f = state_->symbolic;
+  if (state_->analyzed &&
+      (lower.ncols != f.n || lower.nnz() != f.nnz_A || lower.values.size() != lower.rowind.size())) {
+    return Status::Error(StatusCode::kInvalidArgument,
+                         "matrix does not have the analyzed pattern (or has no values)");
+  }
+  return factorize_values(lower.values.data(), static_cast<int64_t>(lower.values.size()));
+}
+
+Status Cholesky::factorize_values(const double* a, int64_t count) {
   State& s = *state_;
   if (!s.analyzed) return Status::Error(StatusCode::kInvalidArgument, "factorize before analyze");
+  if (count != s.symbolic.nnz_A || (a == nullptr && count > 0)) {
+    return Status::Error(StatusCode::kInvalidArgument,
+                         "factorize_values needs the analyzed matrix's " + std::to_string(s.symbolic.nnz_A) +
+                             " values, got " + std::to_string(count));
+  }
   s.factorized = false;
+  s.update_ready = false;  // the stacks overwrite the updaters' workspace
   s.populator.finish();
   if (s.kernels == nullptr) s.kernels = &dense_kernels();
-  GAB_RETURN_IF_ERROR(factorize_supernodal(s.symbolic, s.schedule, lower, *s.kernels, s.values.data(),
-                                           s.work.data(), s.iwork.data()));
+  const Status status = factorize_supernodal(s.symbolic, s.schedule, a, *s.kernels, s.values.data(), s.work.data(),
+                                             s.iwork.data());
+  // Large stacks go back to the OS until the next factorization or update
+  // needs them: problems this large refactor rarely, and what limits them
+  // is memory (a 2.4M-vertex encoder's peak comes after its factorization,
+  // 0.25 GB of stacks lower). Re-faulting them costs a few percent of a
+  // factorization.
+  if (static_cast<size_t>(factor_workspace_doubles(s.schedule)) * sizeof(double) >= kReleasedStackBytes) {
+    s.work.release_pages();
+  }
+  GAB_RETURN_IF_ERROR(status);
   s.factorized = true;
   return Status::Ok();
 }
@@ -100,36 +158,34 @@ Status Cholesky::solve(double* b, int32_t nrhs, int32_t ldb) {
     return Status::Error(StatusCode::kInvalidArgument,
                          "solve needs nrhs >= 0 and ldb >= n (" + std::to_string(n) + ")");
   }
-  if (!s.solve_rhs.reserve(static_cast<int64_t>(n) * nrhs) ||
-      !s.solve_work.reserve(solve_scheduled_work(s.symbolic, s.solve_schedule, nrhs))) {
+  if (!s.solve_work.reserve(solve_scheduled_work(s.symbolic, s.solve_schedule, nrhs))) {
     return Status::Error(StatusCode::kOutOfMemory, "cannot allocate the solve's workspace");
   }
-  const int32_t* perm = s.symbolic.perm.data();
+  // B is permuted in place: a copy would be n * nrhs doubles more at a
+  // large problem's peak (60 MB at 2.4M vertices).
+  s.solve_seen.resize((static_cast<size_t>(n) + 63) / 64);
   for (int32_t r = 0; r < nrhs; ++r) {
-    const double* src = b + static_cast<int64_t>(r) * ldb;
-    double* dst = s.solve_rhs.data() + static_cast<int64_t>(r) * n;
-    for (int32_t k = 0; k < n; ++k) dst[k] = src[perm[k]];
+    gather_in_place(b + static_cast<int64_t>(r) * ldb, s.symbolic.perm.data(), n, &s.solve_seen);
   }
-  solve_lower_scheduled(s.symbolic, s.solve_schedule, s.values.data(), s.solve_rhs.data(), nrhs, n,
-                        s.solve_work.data(), s.kernels->level);
-  solve_upper_scheduled(s.symbolic, s.solve_schedule, s.values.data(), s.solve_rhs.data(), nrhs, n,
-                        s.solve_work.data(), s.kernels->level);
+  solve_lower_scheduled(s.symbolic, s.solve_schedule, s.values.data(), b, nrhs, ldb, s.solve_work.data(),
+                        s.kernels->level);
+  solve_upper_scheduled(s.symbolic, s.solve_schedule, s.values.data(), b, nrhs, ldb, s.solve_work.data(),
+                        s.kernels->level);
   for (int32_t r = 0; r < nrhs; ++r) {
-    const double* src = s.solve_rhs.data() + static_cast<int64_t>(r) * n;
-    double* dst = b + static_cast<int64_t>(r) * ldb;
-    for (int32_t k = 0; k < n; ++k) dst[perm[k]] = src[k];
+    gather_in_place(b + static_cast<int64_t>(r) * ldb, s.symbolic.inverse_perm.data(), n, &s.solve_seen);
   }
   return Status::Ok();
 }
 
 Status Cholesky::State::prepare_update_workspace() {
-  if (!update_work.reserve(update_workspace_doubles(symbolic)) ||
-      !update_iwork.reserve(update_workspace_ints(symbolic))) {
+  // work (reserved by analyze) is large enough for the doubles.
+  if (!update_iwork.reserve(update_workspace_ints(symbolic))) {
     return Status::Error(StatusCode::kOutOfMemory, "cannot allocate the updater's workspace");
   }
-  // The updates keep these invariants (see update.h).
+  // The updates keep these invariants (see update.h); a factorization
+  // breaks them.
   const int64_t zeros = update_workspace_zero_prefix(symbolic);
-  for (int64_t i = 0; i < zeros; ++i) update_work.data()[i] = 0.0;
+  std::fill_n(work.data(), zeros, 0.0);
   const int64_t ints = update_workspace_ints(symbolic);
   for (int64_t i = 0; i < ints; ++i) update_iwork.data()[i] = -1;
   update_ready = true;
@@ -145,21 +201,21 @@ Status Cholesky::add_anchor(int32_t j, double weight, UpdateStats* stats) {
   State& s = *state_;
   GAB_RETURN_IF_ERROR(s.prepare_update());
   return add_anchor_supernodal(s.symbolic, s.values.data(), j, weight, s.kernels->level,
-                               s.update_work.data(), stats);
+                               s.work.data(), stats);
 }
 
 Status Cholesky::add_anchors(const int32_t* j, int32_t count, double weight, UpdateStats* stats) {
   State& s = *state_;
   GAB_RETURN_IF_ERROR(s.prepare_update());
   return add_anchors_supernodal(s.symbolic, s.values.data(), j, count, weight, s.kernels->level,
-                                s.update_work.data(), s.update_iwork.data(), stats);
+                                s.work.data(), s.update_iwork.data(), stats);
 }
 
 Status Cholesky::remove_anchor(int32_t j, double weight, UpdateStats* stats) {
   State& s = *state_;
   GAB_RETURN_IF_ERROR(s.prepare_update());
   return remove_anchor_supernodal(s.symbolic, s.values.data(), j, weight, s.kernels->level,
-                                  s.update_work.data(), s.update_iwork.data(), stats);
+                                  s.work.data(), s.update_iwork.data(), stats);
 }
 
 }  // namespace gab

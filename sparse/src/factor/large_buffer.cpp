@@ -7,6 +7,7 @@
 
 #if defined(__linux__)
 #include <sys/mman.h>
+#include <unistd.h>
 #endif
 
 namespace gab {
@@ -27,6 +28,18 @@ void* allocate_large(size_t bytes) {
 }
 
 void free_large(void* p) { std::free(p); }
+
+void release_pages(void* p, size_t bytes) {
+#if defined(__linux__)
+  const uintptr_t kPage = static_cast<uintptr_t>(sysconf(_SC_PAGESIZE));
+  const uintptr_t begin = reinterpret_cast<uintptr_t>(p);
+  const uintptr_t first = (begin + kPage - 1) / kPage * kPage, last = (begin + bytes) / kPage * kPage;
+  if (p != nullptr && last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_DONTNEED);
+#else
+  (void)p;
+  (void)bytes;
+#endif
+}
 
 // The ranges cut into pieces that both threads take in turn.
 struct PagePopulator::Work {

@@ -7,7 +7,9 @@
 // update matrices of its children (extend-add through relative indices),
 // then partially factored: POTRF on the diagonal block, TRSM below it, and
 // one SYRK that forms its own update matrix, a lower triangle packed in
-// column panels (half the room of a square). Update matrices live on two
+// column panels (half the room of a square). A wide supernode stored as a
+// chain of panels (SymbolicFactor::continued) is one front whose columns
+// lie in several blocks; it is factored by blocks (factor_front). Update matrices live on two
 // stacks sharing one buffer, at offsets the schedule fixed
 // (factor_schedule.h), so nothing is allocated here: even-depth supernodes
 // push at the low end, odd-depth ones at the high end. A parent's children
@@ -152,16 +154,11 @@ int32_t factor_group(const FrontContext& ctx, int32_t group, int32_t* map, int32
 
 }  // namespace
 
-Status factorize_supernodal(const SymbolicFactor& f, const FactorSchedule& plan,
-                            const CscMatrix& lower, const DenseKernels& kern, double* values,
-                            double* work, int32_t* iwork) {
-  if (lower.ncols != f.n || lower.nnz() != f.nnz_A || lower.values.size() != lower.rowind.size()) {
-    return Status::Error(StatusCode::kInvalidArgument,
-                         "matrix does not have the analyzed pattern (or has no values)");
-  }
+Status factorize_supernodal(const SymbolicFactor& f, const FactorSchedule& plan, const double* a,
+                            const DenseKernels& kern, double* values, double* work, int32_t* iwork) {
   const int32_t threads = plan.threads;
   const int64_t per_thread = static_cast<int64_t>(f.n) + 2 * static_cast<int64_t>(f.max_front_rows);
-  const FrontContext ctx{f, plan, lower.values.data(), kern, values, work};
+  const FrontContext ctx{f, plan, a, kern, values, work};
   auto run = [&](int32_t group, int32_t thread, int32_t* bad_col) {
     int32_t* map = iwork + thread * per_thread;
     return factor_group(ctx, group, map, map + f.n, map + f.n + f.max_front_rows, bad_col);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "common/gab_files.h"
 #include "gab/codec/decoder.h"
@@ -50,6 +51,26 @@ TEST(EncodeDecode, RoundTripKeepsConnectivityAndMatchesTheEncodersShape) {
   EXPECT_EQ(info.connectivity_bytes, es.connectivity_bytes);
   EXPECT_EQ(info.order_bytes, es.order_bytes);
   EXPECT_EQ(info.chunks_present, es.chunks);
+}
+
+// encode_mesh on a mesh given up takes its arrays: the same file, the mesh
+// left empty; with every numbering and the geometry-only form.
+TEST(EncodeDecode, EncodingAMeshGivenUpWritesTheSameFile) {
+  const Mesh mesh = bumpy_torus(30, 16);
+  for (int variant = 0; variant < 3; ++variant) {
+    EncodeOptions options;
+    options.max_anchors = 40;
+    options.reorder = variant == 1;
+    options.geometry_only = variant == 2;
+    std::vector<uint8_t> copied, moved;
+    EncodeStats copied_stats, moved_stats;
+    ASSERT_TRUE(encode_mesh(mesh, options, &copied, &copied_stats).ok());
+    Mesh given = mesh;
+    ASSERT_TRUE(encode_mesh(std::move(given), options, &moved, &moved_stats).ok());
+    EXPECT_EQ(moved, copied) << variant;
+    EXPECT_EQ(moved_stats.new_index, copied_stats.new_index);
+    EXPECT_EQ(given.num_vertices(), variant == 2 ? mesh.num_vertices() : 0) << variant;
+  }
 }
 
 TEST(EncodeDecode, FilesAndShapesDoNotDependOnTheThreadCount) {

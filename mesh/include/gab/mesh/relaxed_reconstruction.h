@@ -111,7 +111,12 @@ class RelaxedReconstruction {
   std::vector<int32_t> given_perm_;  // for Ordering::kGiven
   int64_t max_factor_entries_ = INT64_MAX;
   Cholesky chol_;
-  CscMatrix matrix_;  // lower triangle of L^T L + w^2 E^T E for the anchors so far
+  // Values of the lower triangle of L^T L + w^2 E^T E for the anchors so
+  // far, in the order of the analyzed matrix's entries; its pattern is not
+  // kept (only the place of each column's diagonal): refactorizations need
+  // the values alone (Cholesky::factorize_values).
+  std::vector<double> values_;
+  std::vector<int32_t> diagonal_;
   std::vector<int32_t> anchors_;
   std::vector<double> coefficients_;  // 3 per anchor
   std::vector<char> anchored_;

@@ -43,14 +43,22 @@ class Cholesky {
   // Numeric factorization of a matrix with the analyzed pattern. Uses the
   // dense kernels of the best SIMD level unless set_kernels() chose others.
   Status factorize(const CscMatrix& lower);
+  // The same with only the values: the count values of the analyzed
+  // matrix's lower triangle, in the order of its entries (its values
+  // array). For a caller that refactors with new values and need not keep
+  // the pattern (at a 2.4M-vertex mesh, 0.1 GB of row indices).
+  Status factorize_values(const double* values, int64_t count);
   // Solves A X = B in place: b is n x nrhs column-major, leading dimension
   // ldb >= n, in the original numbering. Requires a successful factorize().
-  // The first call with a given nrhs reserves nrhs * n doubles of workspace.
+  // b is permuted in place (no copy of it is made); the first call with a
+  // given nrhs reserves nrhs times the tallest supernode's rows per thread
+  // (plus, on several threads, the rows the top part shares) of workspace.
   Status solve(double* b, int32_t nrhs, int32_t ldb);
 
   // In place, the factor of A + w^2 e_j e_j^T (j in the original
   // numbering): Givens rotations along the elimination-tree path, no change
-  // of structure, no allocation after the first update (prepare_updates).
+  // of structure, no allocation (the first update after a factorize()
+  // prepares its workspace: prepare_updates).
   // Cost: the entries of L on the path (reported in *stats when given).
   // Solves afterwards see the updated matrix.
   Status add_anchor(int32_t j, double weight, UpdateStats* stats = nullptr);
@@ -60,9 +68,10 @@ class Cholesky {
   // The factor of A - w^2 e_j e_j^T; if that matrix would not be positive
   // definite, kNotPositiveDefinite and the factor is unchanged.
   Status remove_anchor(int32_t j, double weight, UpdateStats* stats = nullptr);
-  // Sets up the updaters' workspace (about 11 n doubles) now; otherwise
-  // the first update after analyze() does, so a caller timing updates calls
-  // this first. Requires a successful factorize().
+  // Sets up the updaters' workspace (about 11 n doubles, in the buffer of
+  // the factorization's stacks) now; otherwise the first update after a
+  // factorize() does (9 n zeros), so a caller timing updates calls this
+  // first. Requires a successful factorize().
   Status prepare_updates();
 
   // The kernels of another SIMD level than the best one (tests compare them).

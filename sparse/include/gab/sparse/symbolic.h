@@ -55,11 +55,14 @@ struct AnalyzeOptions {
   // widths, each a supernode of its own (the next panel its parent) whose
   // block is its columns' rows only. A k-column block stores k (k - 1) / 2
   // unused entries above its diagonal; a chain of P panels about 1 / P of
-  // them (0.25 GB of a 2.4M-vertex mesh's 3.9 GB factor). The numeric
-  // factorization factors a chain as one front (no update matrix between
-  // its panels). 0: no chains.
+  // them. The numeric factorization factors a chain as one front (no update
+  // matrix between its panels), each panel adding its part of the front's
+  // update matrix in turn. At the 2.4M-vertex mesh (bench/TUNING.md,
+  // "Factor storage"): 3.94 -> 3.72 GB of factor with 4 panels, 3.69 GB
+  // with 8, whose extra passes over large update matrices made the
+  // factorization ~15% slower; 4 was as fast as no chains. 0: no chains.
   int32_t panel_cols = 64;
-  int32_t max_panels = 8;
+  int32_t max_panels = 4;
 };
 
 // The analysis of one pattern. Columns are numbered in pivot order

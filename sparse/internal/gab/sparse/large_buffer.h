@@ -20,6 +20,10 @@ namespace gab {
 void* allocate_large(size_t bytes);
 // Releases storage from allocate_large (nullptr is fine).
 void free_large(void* p);
+// Gives the whole pages inside [p, p + bytes) back to the OS but keeps them
+// allocated: on Linux they read as zeros and fault in again when touched;
+// elsewhere nothing happens.
+void release_pages(void* p, size_t bytes);
 
 // A typed grow-only array on top of allocate_large. Not copyable.
 template <typename T>
@@ -55,6 +59,9 @@ class LargeBuffer {
   }
   T* data() const { return data_; }
   int64_t capacity() const { return capacity_; }
+  // release_pages() over the whole buffer: its contents are lost, its
+  // capacity stays.
+  void release_pages() { gab::release_pages(data_, static_cast<size_t>(capacity_) * sizeof(T)); }
 
  private:
   T* data_ = nullptr;

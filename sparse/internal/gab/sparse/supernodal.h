@@ -19,8 +19,9 @@ int64_t factor_workspace_doubles(const FactorSchedule& plan);  // the update sta
 int64_t factor_workspace_ints(const SymbolicFactor& f,
                               const FactorSchedule& plan);  // maps and child lists
 
-// Numeric factorization P A P^T = L L^T. `lower` must have the pattern that
-// was analyzed (values may differ). `values` receives the supernode blocks
+// Numeric factorization P A P^T = L L^T. `a` holds the f.nnz_A values of
+// A's lower triangle in the order of the analyzed matrix's entries (its
+// values array; the pattern itself is not read). `values` receives the supernode blocks
 // (f.value_ptr[f.num_supernodes] doubles); the strict upper triangle of each
 // diagonal block is left unspecified. A non-positive pivot gives
 // kNotPositiveDefinite naming the column in the original numbering (the
@@ -28,10 +29,8 @@ int64_t factor_workspace_ints(const SymbolicFactor& f,
 // plan_factor_schedule(f, ...)) says which threads do what; the values are
 // bit-identical for every plan. Time: the factorization's flops, run in the
 // dense kernels `k`, spread over plan.threads threads.
-Status factorize_supernodal(const SymbolicFactor& f, const FactorSchedule& plan,
-                            const CscMatrix& lower,
-                            const DenseKernels& k, double* values, double* work,
-                            int32_t* iwork);
+Status factorize_supernodal(const SymbolicFactor& f, const FactorSchedule& plan, const double* a,
+                            const DenseKernels& k, double* values, double* work, int32_t* iwork);
 
 // Solves L Y = B (lower) or L^T X = Y (upper) in place, in the permuted
 // numbering: x is n x nrhs column-major with leading dimension ldx. `work`
