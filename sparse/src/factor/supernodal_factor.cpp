@@ -9,8 +9,8 @@
 // one SYRK that forms its own update matrix, a lower triangle packed in
 // column panels (half the room of a square). A wide supernode stored as a
 // chain of panels (SymbolicFactor::continued) is one front whose columns
-// lie in several blocks; it is factored by blocks (factor_front). Update matrices live on two
-// stacks sharing one buffer, at offsets the schedule fixed
+// lie in several blocks; it is factored by blocks (factor_front). Update
+// matrices live on two stacks sharing one buffer, at offsets the schedule fixed
 // (factor_schedule.h), so nothing is allocated here: even-depth supernodes
 // push at the low end, odd-depth ones at the high end. A parent's children
 // therefore sit on top of the other stack than the one its own update goes
