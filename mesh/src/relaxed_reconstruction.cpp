@@ -127,9 +127,13 @@ double RelaxedReconstruction::update_cost_ratio(const std::vector<int32_t>& anch
   for (int32_t j : anchors) {
     if (j < 0 || j >= n_) continue;
     for (int32_t c = f.inverse_perm[j]; c != -1;) {
-      const int32_t s = f.supernode_of[c];
-      const int32_t last = f.first_col[s + 1] - 1;
-      entries += static_cast<double>(last - c + 1) * f.rows(s);
+      // A chain of panels counts as the supernode it was cut from, as the
+      // calibration below measured it.
+      int32_t first = f.supernode_of[c], last_panel = first;
+      while (first > 0 && f.continues(first - 1)) --first;
+      while (f.continues(last_panel)) ++last_panel;
+      const int32_t last = f.first_col[last_panel + 1] - 1;
+      entries += static_cast<double>(last - c + 1) * f.rows(first);
       c = f.etree.parent[last];
     }
   }

@@ -187,8 +187,8 @@ TEST(CholeskyTest, SolveSeveralRightHandSidesToResidual1e12) {
   }
 }
 
-// B is permuted in place column by column: a leading dimension beyond n
-// leaves the rows between the columns as they were.
+// A leading dimension beyond n leaves the rows between the columns as they
+// were.
 TEST(CholeskyTest, SolveWithALeadingDimensionBeyondN) {
   const CscMatrix a = random_spd(300, 4.0, 31, 1, 2);
   const int32_t n = a.ncols, ld = n + 5, nrhs = 3;

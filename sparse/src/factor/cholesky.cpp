@@ -17,27 +17,6 @@ namespace {
 // Update stacks at least this large are released after each factorization.
 constexpr size_t kReleasedStackBytes = size_t{128} << 20;
 
-// x[k] := x[from[k]] for k = 0 .. n-1, in place along the permutation's
-// cycles; *seen holds n bits, clear on entry and on return.
-void gather_in_place(double* x, const int32_t* from, int32_t n, std::vector<uint64_t>* seen) {
-  uint64_t* bits = seen->data();
-  for (int32_t start = 0; start < n; ++start) {
-    if (bits[start >> 6] >> (start & 63) & 1) continue;
-    const double first = x[start];
-    for (int32_t k = start;;) {
-      bits[k >> 6] |= uint64_t{1} << (k & 63);
-      const int32_t next = from[k];
-      if (next == start) {
-        x[k] = first;
-        break;
-      }
-      x[k] = x[next];
-      k = next;
-    }
-  }
-  std::fill(seen->begin(), seen->end(), 0);
-}
-
 }  // namespace
 
 struct Cholesky::State {
@@ -54,7 +33,7 @@ struct Cholesky::State {
   // at 2.4M vertices each is 0.2 GB.
   LargeBuffer<double> work;
   LargeBuffer<int32_t> iwork;
-  std::vector<uint64_t> solve_seen;  // a bit per row: gather_in_place's marks
+  LargeBuffer<double> solve_rhs;  // permuted right-hand sides
   LargeBuffer<double> solve_work;
   LargeBuffer<int32_t> update_iwork;
   PagePopulator populator;  // after the buffers: stops before they are freed
@@ -161,18 +140,24 @@ Status Cholesky::solve(double* b, int32_t nrhs, int32_t ldb) {
   if (!s.solve_work.reserve(solve_scheduled_work(s.symbolic, s.solve_schedule, nrhs))) {
     return Status::Error(StatusCode::kOutOfMemory, "cannot allocate the solve's workspace");
   }
-  // B is permuted in place: a copy would be n * nrhs doubles more at a
-  // large problem's peak (60 MB at 2.4M vertices).
-  s.solve_seen.resize((static_cast<size_t>(n) + 63) / 64);
-  for (int32_t r = 0; r < nrhs; ++r) {
-    gather_in_place(b + static_cast<int64_t>(r) * ldb, s.symbolic.perm.data(), n, &s.solve_seen);
+  if (!s.solve_rhs.reserve(static_cast<int64_t>(n) * nrhs) ||
+      !s.solve_work.reserve(solve_scheduled_work(s.symbolic, s.solve_schedule, nrhs))) {
+    return Status::Error(StatusCode::kOutOfMemory, "cannot allocate the solve's workspace");
   }
-  solve_lower_scheduled(s.symbolic, s.solve_schedule, s.values.data(), b, nrhs, ldb, s.solve_work.data(),
-                        s.kernels->level);
-  solve_upper_scheduled(s.symbolic, s.solve_schedule, s.values.data(), b, nrhs, ldb, s.solve_work.data(),
-                        s.kernels->level);
+  const int32_t* perm = s.symbolic.perm.data();
   for (int32_t r = 0; r < nrhs; ++r) {
-    gather_in_place(b + static_cast<int64_t>(r) * ldb, s.symbolic.inverse_perm.data(), n, &s.solve_seen);
+    const double* src = b + static_cast<int64_t>(r) * ldb;
+    double* dst = s.solve_rhs.data() + static_cast<int64_t>(r) * n;
+    for (int32_t k = 0; k < n; ++k) dst[k] = src[perm[k]];
+  }
+  solve_lower_scheduled(s.symbolic, s.solve_schedule, s.values.data(), s.solve_rhs.data(), nrhs, n,
+                        s.solve_work.data(), s.kernels->level);
+  solve_upper_scheduled(s.symbolic, s.solve_schedule, s.values.data(), s.solve_rhs.data(), nrhs, n,
+                        s.solve_work.data(), s.kernels->level);
+  for (int32_t r = 0; r < nrhs; ++r) {
+    const double* src = s.solve_rhs.data() + static_cast<int64_t>(r) * n;
+    double* dst = b + static_cast<int64_t>(r) * ldb;
+    for (int32_t k = 0; k < n; ++k) dst[perm[k]] = src[k];
   }
   return Status::Ok();
 }

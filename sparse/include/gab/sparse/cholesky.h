@@ -50,9 +50,7 @@ class Cholesky {
   Status factorize_values(const double* values, int64_t count);
   // Solves A X = B in place: b is n x nrhs column-major, leading dimension
   // ldb >= n, in the original numbering. Requires a successful factorize().
-  // b is permuted in place (no copy of it is made); the first call with a
-  // given nrhs reserves nrhs times the tallest supernode's rows per thread
-  // (plus, on several threads, the rows the top part shares) of workspace.
+  // The first call with a given nrhs reserves nrhs * n doubles of workspace.
   Status solve(double* b, int32_t nrhs, int32_t ldb);
 
   // In place, the factor of A + w^2 e_j e_j^T (j in the original
