@@ -129,10 +129,8 @@ double RelaxedReconstruction::update_cost_ratio(const std::vector<int32_t>& anch
     for (int32_t c = f.inverse_perm[j]; c != -1;) {
       // A chain of panels counts as the supernode it was cut from, as the
       // calibration below measured it.
-      int32_t first = f.supernode_of[c], last_panel = first;
-      while (first > 0 && f.continues(first - 1)) --first;
-      while (f.continues(last_panel)) ++last_panel;
-      const int32_t last = f.first_col[last_panel + 1] - 1;
+      const int32_t first = f.chain_first(f.supernode_of[c]);
+      const int32_t last = f.first_col[f.chain_last(f.supernode_of[c]) + 1] - 1;
       entries += static_cast<double>(last - c + 1) * f.rows(first);
       c = f.etree.parent[last];
     }

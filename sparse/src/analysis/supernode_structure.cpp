@@ -41,8 +41,7 @@ void supernode_rows(const CscMatrix& graph, SymbolicFactor* f) {
     // panel t holds the chain's columns from its own on, then the rows below
     // the chain (a superset of its own structure where the supernode was
     // amalgamated; the same rows its block had before the cut).
-    int32_t e = s;
-    while (f->continues(e)) ++e;
+    const int32_t e = f->chain_last(s);
     const int32_t first = f->first_col[s], last = f->first_col[e + 1] - 1;
     below.clear();
     for (int32_t j = first; j <= last; ++j) {

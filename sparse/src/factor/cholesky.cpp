@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <string>
-#include <vector>
 
 #include "gab/sparse/dense_kernels.h"
 #include "gab/sparse/factor_schedule.h"

@@ -144,9 +144,7 @@ int32_t factor_group(const FrontContext& ctx, int32_t group, int32_t* map, int32
   for (int32_t i = ctx.plan.group_ptr[group]; i < ctx.plan.group_ptr[group + 1]; ++i) {
     const int32_t s = ctx.plan.order[i];
     if (f.continues(s)) continue;  // factored with the rest of its chain
-    int32_t s0 = s;
-    while (s0 > 0 && f.continues(s0 - 1)) --s0;
-    const int32_t fail = factor_front(ctx, s0, s, map, rel, run_end, bad_col);
+    const int32_t fail = factor_front(ctx, f.chain_first(s), s, map, rel, run_end, bad_col);
     if (fail != -1) return fail;
   }
   return -1;

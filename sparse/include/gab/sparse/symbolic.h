@@ -108,6 +108,15 @@ struct SymbolicFactor {
   int32_t rows(int32_t s) const { return static_cast<int32_t>(row_ptr[s + 1] - row_ptr[s]); }
   int32_t cols(int32_t s) const { return first_col[s + 1] - first_col[s]; }
   bool continues(int32_t s) const { return !continued.empty() && continued[s] != 0; }
+  // The first and last panels of s's chain (s itself when it is in none).
+  int32_t chain_first(int32_t s) const {
+    while (s > 0 && continues(s - 1)) --s;
+    return s;
+  }
+  int32_t chain_last(int32_t s) const {
+    while (continues(s)) ++s;
+    return s;
+  }
 };
 
 // Analyzes the symmetric matrix whose lower triangle is `lower` (pattern
