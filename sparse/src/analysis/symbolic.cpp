@@ -61,7 +61,8 @@ Status check_input(const CscMatrix& lower) {
   return Status::Ok();
 }
 
-Status fill_reducing_order(const CscMatrix& lower, const AnalyzeOptions& options,
+// `graph` is symmetric_graph(lower).
+Status fill_reducing_order(const CscMatrix& lower, const CscMatrix& graph, const AnalyzeOptions& options,
                            std::vector<int32_t>* order) {
   const int32_t n = lower.ncols;
   switch (options.ordering) {
@@ -71,7 +72,7 @@ Status fill_reducing_order(const CscMatrix& lower, const AnalyzeOptions& options
       // The factorization's threads dissect too: the permutation is the same for any count.
       NestedDissectionOptions nd;
       nd.threads = options.threads;
-      const Status status = nested_dissection_order(lower, order, nd);
+      const Status status = nested_dissection_order_of_graph(graph, order, nd);
       return_free_heap_memory(lower.nnz());
       return status;
     }
@@ -128,8 +129,8 @@ Status analyze_structure(const CscMatrix& lower, const AnalyzeOptions& options, 
   f.n = lower.ncols;
   f.nnz_A = lower.nnz();
   std::vector<int32_t> order;
-  GAB_RETURN_IF_ERROR(fill_reducing_order(lower, options, &order));
   const CscMatrix graph = symmetric_graph(lower);
+  GAB_RETURN_IF_ERROR(fill_reducing_order(lower, graph, options, &order));
   postorder_pivots(graph, order, &f);
   f.column_counts = column_counts_of_graph(graph, f.perm.data(), f.inverse_perm.data(), f.etree);
   total_counts(&f);

@@ -86,8 +86,9 @@ class AmdOrdering {
   };
 
   // `nodes` has n entries, `heads` 3 n words.
-  AmdOrdering(int32_t n, Node* nodes, int32_t* heads, const AmdOptions& options)
-      : n_(n), aggressive_(options.aggressive), nd_(nodes) {
+  // Vertices from `inner` on (inner <= n) are a halo: in the graph, never pivots.
+  AmdOrdering(int32_t n, Node* nodes, int32_t* heads, const AmdOptions& options, int32_t inner = -1)
+      : n_(n), inner_(inner < 0 ? n : inner), aggressive_(options.aggressive), nd_(nodes) {
     head_ = heads;
     hhead_ = heads + n;
     link_ = heads + 2 * static_cast<size_t>(n);
@@ -121,6 +122,7 @@ class AmdOrdering {
   void init_lists(const AmdOptions& options);
 
   const int32_t n_;
+  const int32_t inner_;  // vertices [inner_, n_) are the halo
   const bool aggressive_;
   int32_t iwlen_ = 0;
 
@@ -270,7 +272,7 @@ void AmdOrdering::init_lists(const AmdOptions& options) {
   // Step 5 of a pivot uses tags up to tag_ + lemax + 1 + |L_p| <= tag_ + 2n + 1.
   tag_limit_ = static_cast<int32_t>(std::numeric_limits<int32_t>::max() - 2 * int64_t{n} - 2);
 
-  if (options.dense >= 0.0) {
+  if (options.dense >= 0.0 && inner_ == n_) {
     const double threshold = std::max(16.0, options.dense * std::sqrt(static_cast<double>(n)));
     for (int32_t i = 0; i < n; ++i) {
       if (static_cast<double>(nd_[i].len) > threshold) {
@@ -292,7 +294,7 @@ void AmdOrdering::init_lists(const AmdOptions& options) {
     }
   }
   nel_ = ndense_;
-  for (int32_t i = 0; i < n; ++i) {
+  for (int32_t i = 0; i < inner_; ++i) {
     if (nd_[i].elen != kDense) insert_in_degree_list(i, nd_[i].degree);
   }
   mindeg_ = 0;
@@ -359,7 +361,7 @@ void AmdOrdering::build_element(int32_t me) {
       degme += nvj;
       nd_[j].nv = -nvj;
       iw[dst++] = j;
-      remove_from_degree_list(j);
+      if (j < inner_) remove_from_degree_list(j);
     }
     pme2_ = dst;
   } else {
@@ -416,7 +418,7 @@ void AmdOrdering::build_element(int32_t me) {
         degme += nvj;
         nd_[j].nv = -nvj;
         iw[dst++] = j;
-        remove_from_degree_list(j);
+        if (j < inner_) remove_from_degree_list(j);
       }
       if (e != me) {
         // e ⊆ L_p: absorbed.
@@ -502,7 +504,7 @@ void AmdOrdering::update_degrees(int32_t me) {
       deg += nvj & keep;
       hash += static_cast<uint32_t>(j & keep);
     }
-    if (kept_elements == 0 && pn == p3) {
+    if (kept_elements == 0 && pn == p3 && i < inner_) {
       // Only p is left next to i: i's row equals p's, eliminate it with p.
       const int32_t nvi = -nd_[i].nv;
       link_[i] = me;
@@ -523,6 +525,7 @@ void AmdOrdering::update_degrees(int32_t me) {
       iw[p1] = me;
       nd_[i].len = pn - p1 + 1;
       nd_[i].elen = kept_elements + 1;
+      if (i >= inner_) continue;  // a halo vertex is never merged: not hashed
       const int32_t h = static_cast<int32_t>(hash % n);
       nd_[i].prev = h;
       nd_[i].next = hhead_[h];
@@ -537,7 +540,7 @@ void AmdOrdering::merge_supervariables() {
   const int32_t* const iw = iw_;
   for (int32_t p = pme1_; p < pme2_; ++p) {
     const int32_t i = iw[p];
-    if (nd_[i].nv >= 0) continue;  // mass-eliminated or merged
+    if (nd_[i].nv >= 0 || i >= inner_) continue;  // mass-eliminated, merged or halo
     const int32_t h = nd_[i].prev;
     int32_t a = hhead_[h];
     if (a == kNone) continue;
@@ -584,8 +587,10 @@ void AmdOrdering::finalize_degrees(int32_t me) {
     const int32_t nvi = -nd_[i].nv;
     if (nvi <= 0) continue;
     const int32_t deg = std::min(nd_[i].degree + degme_ - nvi, nleft - nvi);
-    insert_in_degree_list(i, deg);
-    if (deg < mindeg_) mindeg_ = deg;
+    if (i < inner_) {
+      insert_in_degree_list(i, deg);
+      if (deg < mindeg_) mindeg_ = deg;
+    }
     nd_[i].degree = deg;
     nd_[i].nv = nvi;
     iw[dst++] = i;
@@ -601,7 +606,7 @@ void AmdOrdering::finalize_degrees(int32_t me) {
 }
 
 void AmdOrdering::eliminate() {
-  while (nel_ < n_) {
+  while (nel_ < inner_) {
     if (tag_ >= tag_limit_) reset_tags();
     const int32_t me = select_pivot();
     nvpiv_ = nd_[me].nv;
@@ -713,7 +718,7 @@ void AmdOrdering::order(int32_t* perm) {
   // nd_[e].degree for the mass-eliminated ones, which start nv(e) - #mass-eliminated
   // positions into the block.
   for (int32_t e = 0; e < n; ++e) nd_[e].degree = 0;
-  for (int32_t v = 0; v < n; ++v) {
+  for (int32_t v = 0; v < inner_; ++v) {
     if (nd_[v].elen == kDense) continue;
     const int32_t root = nd_[v].elen == kMerged ? link_[v] : v;
     if (nd_[root].elen == kMassElim) ++nd_[link_[root]].degree;
@@ -721,7 +726,7 @@ void AmdOrdering::order(int32_t* perm) {
   for (int32_t e = 0; e < n; ++e) {
     if (nd_[e].elen == kElement) nd_[e].degree = nd_[e].w + nd_[e].nv - nd_[e].degree;
   }
-  for (int32_t v = 0; v < n; ++v) {
+  for (int32_t v = 0; v < inner_; ++v) {
     if (nd_[v].elen == kDense) continue;
     const int32_t root = nd_[v].elen == kMerged ? link_[v] : v;
     if (nd_[root].elen == kMassElim) {
@@ -763,14 +768,22 @@ Status workspace_length(int32_t n, int64_t nzfull, int32_t* iwlen) {
 
 Status amd_order_graph(int32_t n, const int32_t* xadj, const int32_t* adj, std::vector<int32_t>* perm,
                        const AmdOptions& options) {
+  return amd_order_graph_with_halo(n, n, xadj, adj, perm, options);
+}
+
+Status amd_order_graph_with_halo(int32_t n, int32_t inner, const int32_t* xadj, const int32_t* adj,
+                                 std::vector<int32_t>* perm, const AmdOptions& options) {
   if (n < 0 || n >= (int32_t{1} << 30)) {
     return Status::Error(StatusCode::kInvalidArgument, "amd_order_graph: n must be in [0, 2^30)");
   }
-  perm->resize(static_cast<size_t>(n));
-  if (n == 0) return Status::Ok();
+  if (inner < 0 || inner > n) {
+    return Status::Error(StatusCode::kInvalidArgument, "amd_order_graph: inner must be in [0, n]");
+  }
+  perm->resize(static_cast<size_t>(inner));
+  if (inner == 0) return Status::Ok();
   std::unique_ptr<AmdOrdering::Node[]> nodes(new AmdOrdering::Node[static_cast<size_t>(n)]);
   std::unique_ptr<int32_t[]> heads(new int32_t[3 * static_cast<size_t>(n)]);
-  AmdOrdering amd(n, nodes.get(), heads.get(), options);
+  AmdOrdering amd(n, nodes.get(), heads.get(), options, inner);
   int32_t iwlen = 0;
   GAB_RETURN_IF_ERROR(workspace_length(n, xadj[n], &iwlen));
   std::unique_ptr<int32_t[]> iw(new int32_t[static_cast<size_t>(iwlen)]);

@@ -4,9 +4,11 @@
 // B, then S confines the fill of A's and B's columns to themselves and S, and
 // the same is done to A and B recursively. Separators come from the
 // multilevel scheme (nested_dissection_bisect.cpp); pieces below leaf_size
-// are ordered by AMD, as METIS's ND hands its small pieces to minimum degree
-// (Karypis & Kumar 1998, sec. 6); rows denser than AMD's threshold are taken
-// out first and ordered last (they would sit in every separator anyway).
+// are ordered by minimum degree, as METIS's ND hands its small pieces to
+// minimum degree (Karypis & Kumar 1998, sec. 6), here with the piece's halo
+// (the separators around it) in the graph, as Scotch does (Pellegrini,
+// Roman & Amestoy 2000); rows denser than AMD's threshold are taken out
+// first and ordered last (they would sit in every separator anyway).
 //
 // The recursion records the separator tree: a node per separator (and per
 // AMD leaf), its columns, its subtree's columns and its parent.
@@ -39,8 +41,12 @@ uint64_t child_seed(uint64_t parent, uint64_t child) {
 // whose workers take the sides of large separators as tasks.
 class Dissection {
  public:
-  Dissection(const NestedDissectionOptions& options, std::vector<int32_t>* perm, nd::ForkJoinPool* pool)
-      : options_(options), perm_(*perm), pool_(pool), ws_(pool ? pool->size() : 1) {
+  // `full` is the whole graph (both triangles, sorted lists), whose
+  // vertices with halo_ok[v] == 0 (the dense rows) are out of the dissection.
+  Dissection(const NestedDissectionOptions& options, const CscMatrix& full, const std::vector<uint8_t>& halo_ok,
+             std::vector<int32_t>* perm, nd::ForkJoinPool* pool)
+      : options_(options), full_(full), halo_ok_(halo_ok), perm_(*perm), pool_(pool), ws_(pool ? pool->size() : 1),
+        leaf_ws_(ws_.size()) {
     for (size_t w = 0; w < ws_.size(); ++w) {
       ws_[w].pool = pool;
       ws_[w].worker = static_cast<int32_t>(w);
@@ -68,7 +74,7 @@ class Dissection {
       const int32_t count = nd::connected_components(g, &ws, &component);
       if (count > 1) return order_components(g, label, h, component, count, begin, seed, worker, nodes, roots);
     }
-    if (is_leaf(g.n)) return order_leaf(g, label, begin, nodes, roots);
+    if (is_leaf(g.n)) return order_leaf(g, label, begin, worker, nodes, roots);
 
     std::vector<uint8_t> where;
     nd::Rng rng(seed);
@@ -79,7 +85,7 @@ class Dissection {
     // on it would go deep for little gain: the piece is ordered whole.
     const size_t larger = std::max(side[nd::kLeft].size(), side[nd::kRight].size());
     if (side[nd::kLeft].empty() || side[nd::kRight].empty() || larger > 0.9 * g.n) {
-      return order_leaf(g, label, begin, nodes, roots);
+      return order_leaf(g, label, begin, worker, nodes, roots);
     }
 
     const int32_t part_size[2] = {static_cast<int32_t>(side[nd::kLeft].size()),
@@ -95,9 +101,12 @@ class Dissection {
     nd::Hierarchy part_hierarchy[2];
     // Side s's subgraph, labels and coarsenings, read off g with workspace ws.
     auto build_part = [&](int s, nd::Workspace* ws) {
-      nd::induced_subgraph(g, side[s], ws, &part[s]);
-      // A part that will be a leaf needs no coarsening.
-      if (!is_leaf(part[s].n)) {
+      // A part that will be a leaf needs only its vertices (order_leaf reads
+      // the whole graph); the others their subgraph and coarsenings.
+      if (is_leaf(static_cast<int32_t>(side[s].size()))) {
+        part[s].n = static_cast<int32_t>(side[s].size());
+      } else {
+        nd::induced_subgraph(g, side[s], ws, &part[s]);
         nd::restrict_hierarchy(g, h, side[s], options_.coarsest_size, ws, &part_hierarchy[s]);
       }
       part_label[s].reserve(side[s].size());
@@ -206,25 +215,59 @@ class Dissection {
     return Status::Ok();
   }
 
-  // A small piece ordered by AMD on its own lists (amd_graph.h), which are
-  // sorted when the original graph's are: the induced subgraphs keep the
-  // order. Otherwise on a sorted copy.
-  Status order_leaf(const Graph& g, const std::vector<int32_t>& label, int32_t begin,
+  // A piece ordered by minimum degree with its halo (amd_graph.h): the
+  // piece's vertices and, never pivots, their neighbours outside it in the
+  // whole graph, which are the separators around the piece (all ordered
+  // after it). Measured against AMD on the piece alone: bench/TUNING.md.
+  Status order_leaf(const Graph& g, const std::vector<int32_t>& label, int32_t begin, int32_t worker,
                     std::vector<SeparatorTree::Node>* nodes, std::vector<int32_t>* roots) {
-    bool sorted = true;
-    for (int32_t v = 0; v < g.n && sorted; ++v) {
-      for (int32_t p = g.xadj[v] + 1; p < g.xadj[v + 1]; ++p) sorted &= g.adj[p - 1] < g.adj[p];
+    LeafWorkspace& lw = leaf_ws_[worker];
+    if (lw.local.empty()) lw.local.assign(perm_.size(), -1);
+    const int32_t m = g.n;
+    for (int32_t k = 0; k < m; ++k) lw.local[label[k]] = k;
+    // The halo, numbered from m in order of first sight.
+    lw.halo.clear();
+    for (int32_t k = 0; k < m; ++k) {
+      const int32_t v = label[k];
+      for (int32_t p = full_.colptr[v]; p < full_.colptr[v + 1]; ++p) {
+        const int32_t u = full_.rowind[p];
+        if (lw.local[u] >= 0 || !halo_ok_[u]) continue;
+        lw.local[u] = m + static_cast<int32_t>(lw.halo.size());
+        lw.halo.push_back(u);
+      }
     }
-    std::vector<int32_t> local;
-    if (sorted) {
-      GAB_RETURN_IF_ERROR(amd_order_graph(g.n, g.xadj.data(), g.adj.data(), &local));
-    } else {
-      std::vector<int32_t> adj(g.adj.begin(), g.adj.end());
-      for (int32_t v = 0; v < g.n; ++v) std::sort(adj.begin() + g.xadj[v], adj.begin() + g.xadj[v + 1]);
-      GAB_RETURN_IF_ERROR(amd_order_graph(g.n, g.xadj.data(), adj.data(), &local));
+    const int32_t total = m + static_cast<int32_t>(lw.halo.size());
+    // Lists: a piece vertex's neighbours (piece and halo), a halo vertex's
+    // piece neighbours, each list sorted.
+    lw.xadj.assign(static_cast<size_t>(total) + 1, 0);
+    for (int32_t k = 0; k < m; ++k) {
+      const int32_t v = label[k];
+      for (int32_t p = full_.colptr[v]; p < full_.colptr[v + 1]; ++p) {
+        const int32_t x = lw.local[full_.rowind[p]];
+        if (x < 0) continue;
+        ++lw.xadj[k + 1];
+        if (x >= m) ++lw.xadj[x + 1];
+      }
     }
-    for (int32_t k = 0; k < g.n; ++k) perm_[begin + k] = label[local[k]];
-    roots->push_back(add_node(begin, g.n, begin, /*leaf=*/true, {}, nodes));
+    for (int32_t x = 0; x < total; ++x) lw.xadj[x + 1] += lw.xadj[x];
+    lw.adj.resize(static_cast<size_t>(lw.xadj[total]));
+    lw.cursor.assign(lw.xadj.begin(), lw.xadj.end() - 1);
+    for (int32_t k = 0; k < m; ++k) {
+      const int32_t v = label[k];
+      for (int32_t p = full_.colptr[v]; p < full_.colptr[v + 1]; ++p) {
+        const int32_t x = lw.local[full_.rowind[p]];
+        if (x < 0) continue;
+        lw.adj[lw.cursor[k]++] = x;
+        if (x >= m) lw.adj[lw.cursor[x]++] = k;  // k increasing: halo lists come out sorted
+      }
+      std::sort(lw.adj.begin() + lw.xadj[k], lw.adj.begin() + lw.xadj[k + 1]);
+    }
+    for (int32_t k = 0; k < m; ++k) lw.local[label[k]] = -1;
+    for (int32_t u : lw.halo) lw.local[u] = -1;
+    std::vector<int32_t> order;
+    GAB_RETURN_IF_ERROR(amd_order_graph_with_halo(total, m, lw.xadj.data(), lw.adj.data(), &order));
+    for (int32_t k = 0; k < m; ++k) perm_[begin + k] = label[order[k]];
+    roots->push_back(add_node(begin, m, begin, /*leaf=*/true, {}, nodes));
     return Status::Ok();
   }
 
@@ -253,10 +296,19 @@ class Dissection {
     for (int32_t r : side_roots) roots->push_back(r + offset);
   }
 
+  // A leaf's lists with its halo, built per worker.
+  struct LeafWorkspace {
+    std::vector<int32_t> local;  // whole-graph vertex -> its number in the leaf's graph; -1 elsewhere
+    std::vector<int32_t> halo, xadj, adj, cursor;
+  };
+
   const NestedDissectionOptions& options_;
+  const CscMatrix& full_;
+  const std::vector<uint8_t>& halo_ok_;
   std::vector<int32_t>& perm_;
   nd::ForkJoinPool* pool_;         // null: everything on the calling thread
   std::vector<nd::Workspace> ws_;  // one per worker
+  std::vector<LeafWorkspace> leaf_ws_;  // one per worker
 };
 
 Status check_lower(const CscMatrix& lower) {
@@ -279,16 +331,23 @@ Status check_lower(const CscMatrix& lower) {
 Status nested_dissection_order(const CscMatrix& lower, std::vector<int32_t>* perm,
                                const NestedDissectionOptions& options, SeparatorTree* tree) {
   GAB_RETURN_IF_ERROR(check_lower(lower));
-  const int32_t n = lower.ncols;
-  const CscMatrix full = symmetric_graph(lower);
+  return nested_dissection_order_of_graph(symmetric_graph(lower), perm, options, tree);
+}
+
+Status nested_dissection_order_of_graph(const CscMatrix& full, std::vector<int32_t>* perm,
+                                        const NestedDissectionOptions& options, SeparatorTree* tree) {
+  const int32_t n = full.ncols;
   perm->assign(static_cast<size_t>(n), -1);
 
   // Dense rows (AMD's rule): out of the graph, ordered last.
   const int32_t dense_limit =
       options.dense < 0 ? n : std::max(16, static_cast<int32_t>(options.dense * std::sqrt(double(n))));
   std::vector<int32_t> kept, dense;
+  std::vector<uint8_t> halo_ok(static_cast<size_t>(n), 1);
   for (int32_t v = 0; v < n; ++v) {
-    (full.colptr[v + 1] - full.colptr[v] > dense_limit ? dense : kept).push_back(v);
+    const bool is_dense = full.colptr[v + 1] - full.colptr[v] > dense_limit;
+    (is_dense ? dense : kept).push_back(v);
+    halo_ok[v] = is_dense ? 0 : 1;
   }
 
   Graph g;
@@ -301,7 +360,7 @@ Status nested_dissection_order(const CscMatrix& lower, std::vector<int32_t>* per
   // The pool outlives the dissection's tasks; with one thread there is none.
   std::unique_ptr<nd::ForkJoinPool> pool;
   if (options.threads > 1) pool.reset(new nd::ForkJoinPool(options.threads));
-  Dissection dissection(options, perm, pool.get());
+  Dissection dissection(options, full, halo_ok, perm, pool.get());
   if (!dense.empty()) {
     Graph sparse_part;
     nd::Workspace ws;

@@ -1,7 +1,7 @@
 // The pieces of the nested-dissection ordering (nested_dissection.h) and the
 // weighted graph they pass around. Private to the engine.
 //
-//   nested_dissection.cpp          the recursion: components, dense rows, leaves by AMD, tree
+//   nested_dissection.cpp          the recursion: components, dense rows, leaves (halo AMD), tree
 //   fork_join.h                    the pool whose workers take large pieces' sides as tasks
 //   nested_dissection_bisect.cpp   one vertex separator, multilevel: coarsen, separate, refine
 //   nested_dissection_coarsen.cpp  heavy-edge matching and contraction

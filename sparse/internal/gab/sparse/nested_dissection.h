@@ -14,11 +14,12 @@ namespace gab {
 
 struct NestedDissectionOptions {
   // Subgraphs with at most this many vertices are not dissected further but
-  // ordered by AMD (amd.h). With one-sided refinement, 300 against 600 (and
-  // candidates 1 against 3): flops 1.084 against 1.102 of METIS's (mean of
-  // igea, horse, nefertiti, bunny over 4 seeds), 6% more instructions; 200:
-  // 1.073, +17% (bench/TUNING.md, "Nested dissection").
-  int32_t leaf_size = 300;
+  // ordered by minimum degree with their halo (amd_graph.h). Mean flops over
+  // igea, horse, nefertiti and bunny, 4 seeds, against 300 with plain AMD on
+  // the leaves: 300 with the halo -1.6% (+13% ordering time), 450 -1.0%
+  // (+3%), 600 -0.3% (-5%), 1200 +1.9% (-15%) (bench/TUNING.md, "Nested
+  // dissection").
+  int32_t leaf_size = 600;
   // A row with more than max(16, dense * sqrt(n)) off-diagonal entries is
   // removed before dissection and ordered last, as AmdOptions::dense does.
   // Negative: no row is dense.
@@ -104,13 +105,21 @@ struct SeparatorTree {
 // read; the diagonal is optional; entries above the diagonal are an error) by
 // nested dissection of its graph symmetric_graph(lower): each connected
 // component separately; a separator is ordered after both sides, recursively;
-// small pieces by AMD; dense rows last. On success perm[k] is the original
+// small pieces by minimum degree with the separators around them in view;
+// dense rows last. On success perm[k] is the original
 // index of the k-th pivot (as amd_order) and *tree, when given, holds the
 // dissection. Deterministic: the same input and options give the same perm
 // on every machine. Time about O(nnz(A) log n); memory O(nnz(A) + n).
 Status nested_dissection_order(const CscMatrix& lower, std::vector<int32_t>* perm,
                                const NestedDissectionOptions& options = {},
                                SeparatorTree* tree = nullptr);
+
+// The same from the graph itself, symmetric_graph(lower) (both triangles,
+// no diagonal, sorted lists; not checked), for a caller that needs that
+// graph anyway (the symbolic analysis).
+Status nested_dissection_order_of_graph(const CscMatrix& graph, std::vector<int32_t>* perm,
+                                        const NestedDissectionOptions& options = {},
+                                        SeparatorTree* tree = nullptr);
 
 // The separator bound on the cost of an update (issue 19), for every
 // original index j: an upper bound on the entries of L that adding a row with
