@@ -6,7 +6,7 @@
 
 #include "cli.h"
 #include "commands.h"
-#include "huge_page_malloc.h"
+#include "malloc_tuning.h"
 
 namespace {
 
@@ -42,7 +42,7 @@ std::string help_text() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  gab::cli::use_huge_page_malloc(argv);
+  gab::cli::tune_malloc(argv);
   if (argc < 2) {
     std::fputs(help_text().c_str(), stderr);
     return gab::cli::kExitUsage;

@@ -211,7 +211,8 @@ TEST(CodecCliTest, DetailFilesDecodeToTheSameBitsAtEverySimdLevel) {
 TEST(CodecCliTest, ThreadCountChangesNeitherTheFileNorTheShape) {
   // --threads only spreads the factorizations; the bytes and the decoded
   // coordinates are the same (the encoder and decoder compute
-  // bit-identical shapes), here also with huge-page malloc turned off.
+  // bit-identical shapes), here also with the CLI's malloc settings
+  // (malloc_tuning.h) overridden.
   const std::string in = write_scratch_file("thr.off", torus_off(80, 40));
   const std::string one = write_scratch_file("thr-1.gab", ""), three = write_scratch_file("thr-3.gab", "");
   const std::string a = write_scratch_file("thr-a.off", ""), b = write_scratch_file("thr-b.off", "");
@@ -221,6 +222,10 @@ TEST(CodecCliTest, ThreadCountChangesNeitherTheFileNorTheShape) {
   ASSERT_EQ(run_gab("decompress -i " + one + " -o " + a + " --threads 3").exit_code, 0);
   ASSERT_EQ(run_gab("decompress -i " + three + " -o " + b + " --threads 1",
                     "GLIBC_TUNABLES=glibc.malloc.hugetlb=0").exit_code, 0);
+  EXPECT_EQ(read_all(a), read_all(b));
+  // A malloc setting of the user's own is kept (and the tool restarts once, not forever).
+  ASSERT_EQ(run_gab("decompress -i " + one + " -o " + b, "GLIBC_TUNABLES=glibc.malloc.mmap_threshold=131072").exit_code,
+            0);
   EXPECT_EQ(read_all(a), read_all(b));
   CommandResult r = run_gab("decompress -i " + one + " -o " + a + " --threads 0");
   EXPECT_EQ(r.exit_code, 2);
