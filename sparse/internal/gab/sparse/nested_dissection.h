@@ -50,10 +50,12 @@ struct NestedDissectionOptions {
   int32_t candidates = 1;
   int32_t trial_size = 2000;
   // Graphs of at least large_size vertices (the top separators, which weigh
-  // most in the factor) carry large_candidates instead. Measured on igea,
-  // horse and nefertiti, mean flops over 8 seeds with 8 against 4:
-  // -0.4%, -1.5%, -2.8%, for a few percent more ordering time.
-  int32_t large_candidates = 8;
+  // most in the factor) carry large_candidates instead. With 5 runs and
+  // AMD leaves, 8 against 4 measured -0.4%, -1.5%, -2.8% flops on igea,
+  // horse and nefertiti (8 seeds); with 3 runs and halo leaves, 2 against 8
+  // measured +0.45% flops (within the seeds' noise) for 14% less ordering
+  // time (bench/TUNING.md, "Nested dissection").
+  int32_t large_candidates = 2;
   int32_t large_size = 30000;
   // Where several candidates are carried, they are the best distinct
   // separators of candidate_tries tries per candidate on the coarsest graph.
@@ -61,8 +63,9 @@ struct NestedDissectionOptions {
   // Graphs of at least runs_from vertices are coarsened `runs` times below
   // a middle level (at most runs_levels coarsenings down, stopping at
   // 1 / runs_ratio of the vertices), each run separated and refined up to
-  // it; the smallest separator there goes on.
-  int32_t runs = 5;
+  // it; the smallest separator there goes on. 3 (was 5): see
+  // large_candidates.
+  int32_t runs = 3;
   int32_t runs_from = 5000;
   int32_t runs_levels = 4;
   int32_t runs_ratio = 30;
