@@ -13,7 +13,7 @@
 namespace gab {
 
 namespace {
-constexpr size_t kHugePage = size_t{2} << 20;
+constexpr size_t kHugePage = kLargeAlignment;
 }  // namespace
 
 void* allocate_large(size_t bytes) {
@@ -21,10 +21,19 @@ void* allocate_large(size_t bytes) {
   const size_t align = bytes >= kHugePage ? kHugePage : 64;
   const size_t rounded = (bytes + align - 1) / align * align;  // aligned_alloc's rule
   void* p = std::aligned_alloc(align, rounded);
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-  if (p != nullptr && align == kHugePage) madvise(p, rounded, MADV_HUGEPAGE);  // advisory only
-#endif
+  if (p != nullptr && align == kHugePage) advise_huge_pages(p, rounded);
   return p;
+}
+
+void advise_huge_pages(void* p, size_t bytes) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  const uintptr_t begin = reinterpret_cast<uintptr_t>(p);
+  const uintptr_t first = (begin + kHugePage - 1) / kHugePage * kHugePage, last = (begin + bytes) / kHugePage * kHugePage;
+  if (p != nullptr && last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
+#else
+  (void)p;
+  (void)bytes;
+#endif
 }
 
 void free_large(void* p) { std::free(p); }

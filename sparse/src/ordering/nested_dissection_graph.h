@@ -39,6 +39,7 @@
 #include <utility>
 #include <vector>
 
+#include "gab/sparse/large_buffer.h"
 #include "gab/sparse/nested_dissection.h"
 #include "gab/sparse/splitmix64.h"
 
@@ -65,6 +66,26 @@ struct UninitializedAllocator : std::allocator<T> {
   template <typename U, typename... Args>
   void construct(U* p, Args&&... args) {
     ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+  // Arrays of a huge page or more (the large graphs' and their coarsenings')
+  // are aligned to one and advised for huge pages (large_buffer.h), as the
+  // CLI's malloc does for everything (malloc_tuning.h) but a library caller's
+  // may not: each 4 KiB fault costs tens of microseconds on the virtual
+  // machines we measure on, and the dissection faults in its arrays afresh
+  // at every level (the 603k-vertex mesh on two threads: see TUNING).
+  T* allocate(size_t count) {
+    const size_t bytes = count * sizeof(T);
+    if (bytes < kLargeAlignment) return std::allocator<T>::allocate(count);
+    void* p = ::operator new(bytes, std::align_val_t(kLargeAlignment));
+    advise_huge_pages(p, bytes);
+    return static_cast<T*>(p);
+  }
+  void deallocate(T* p, size_t count) {
+    if (count * sizeof(T) < kLargeAlignment) {
+      std::allocator<T>::deallocate(p, count);
+    } else {
+      ::operator delete(p, std::align_val_t(kLargeAlignment));
+    }
   }
 };
 using IntArray = std::vector<int32_t, UninitializedAllocator<int32_t>>;

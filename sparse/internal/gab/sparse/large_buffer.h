@@ -20,6 +20,11 @@ namespace gab {
 void* allocate_large(size_t bytes);
 // Releases storage from allocate_large (nullptr is fine).
 void free_large(void* p);
+// The alignment of large blocks, the huge-page size.
+constexpr size_t kLargeAlignment = size_t{2} << 20;
+// Advises the whole huge pages inside [p, p + bytes) for transparent huge
+// pages where the system offers them (advisory; nothing happens elsewhere).
+void advise_huge_pages(void* p, size_t bytes);
 // Gives the whole pages inside [p, p + bytes) back to the OS but keeps them
 // allocated: on Linux they read as zeros and fault in again when touched;
 // elsewhere nothing happens.
