@@ -4,7 +4,7 @@
 // factor's nnz(L) and flops from the symbolic analysis, and one numeric
 // factorization's time. Usage: bench_ordering [mesh names...] (default: all).
 // Environment variables ND_LEAF, ND_IMBALANCE, ND_COARSEST, ND_TRIES, ND_PASSES
-// ND_PATIENCE, ND_CANDIDATES, ND_TRIAL_SIZE, ND_LARGE_CANDIDATES and ND_LARGE_SIZE override the nested-dissection options (for tuning);
+// ND_PATIENCE, ND_POLISH_FROM, ND_CANDIDATES, ND_TRIAL_SIZE, ND_LARGE_CANDIDATES and ND_LARGE_SIZE override the nested-dissection options (for tuning);
 // ND_SEED the generator's seed; ND_RUNS sets how many runs the best time is taken of (3), ND_ONLY skips AMD,
 // ND_NO_FACTOR skips the numeric factorization, ND_HASH prints a hash of the ND permutation to stderr (to check that a
 // change keeps the ordering).
@@ -98,6 +98,7 @@ gab::NestedDissectionOptions nd_options() {
   o.runs_levels = static_cast<int32_t>(read("ND_RUNS_LEVELS", o.runs_levels));
   o.runs_ratio = static_cast<int32_t>(read("ND_RUNS_RATIO", o.runs_ratio));
   o.one_sided_refinement = read("ND_ONE_SIDED", o.one_sided_refinement) != 0;
+  o.polish_from = static_cast<int32_t>(read("ND_POLISH_FROM", o.polish_from));
   if (const char* seed = std::getenv("ND_SEED")) o.seed = std::strtoull(seed, nullptr, 0);
   return o;
 }

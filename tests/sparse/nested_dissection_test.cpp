@@ -344,17 +344,22 @@ TEST(NestedDissection, RefinementSchemesGiveValidDissections) {
   const CscMatrix grid = two_ring_grid(60, 55);
   for (bool one_sided : {false, true}) {
     for (int32_t runs : {1, 4}) {
-      NestedDissectionOptions options;
-      options.one_sided_refinement = one_sided;
-      options.runs = runs;
-      options.runs_from = 500;
-      options.leaf_size = 60;
-      const std::vector<int32_t> perm = order_checked(grid, options);
-      EXPECT_LT(solve_residual(grid, perm), 1e-10) << one_sided << " " << runs;
-      for (uint32_t seed = 1; seed <= 3; ++seed) {
-        const CscMatrix a = random_spd(700 + 100 * seed, 3.0, seed);
-        const std::vector<int32_t> random_perm = order_checked(a, options);
-        EXPECT_LT(solve_residual(a, random_perm), 1e-10) << one_sided << " " << runs << " seed " << seed;
+      // The one-sided passes with and without the closing two-sided pass.
+      for (int32_t polish_from : one_sided ? std::vector<int32_t>{0, 1 << 30} : std::vector<int32_t>{1 << 30}) {
+        NestedDissectionOptions options;
+        options.one_sided_refinement = one_sided;
+        options.polish_from = polish_from;
+        options.runs = runs;
+        options.runs_from = 500;
+        options.leaf_size = 60;
+        const std::vector<int32_t> perm = order_checked(grid, options);
+        EXPECT_LT(solve_residual(grid, perm), 1e-10) << one_sided << " " << runs << " " << polish_from;
+        for (uint32_t seed = 1; seed <= 3; ++seed) {
+          const CscMatrix a = random_spd(700 + 100 * seed, 3.0, seed);
+          const std::vector<int32_t> random_perm = order_checked(a, options);
+          EXPECT_LT(solve_residual(a, random_perm), 1e-10)
+              << one_sided << " " << runs << " " << polish_from << " seed " << seed;
+        }
       }
     }
   }

@@ -174,6 +174,12 @@ class SeparatorRefiner {
           break;
         }
       }
+      // A last two-sided pass, free to move each vertex to either side,
+      // trims what the alternating one-sided passes leave (NestedDissectionOptions::polish_from).
+      if (g_.n >= params_.polish_from) {
+        active_[0] = active_[1] = true;
+        one_pass();
+      }
       return;
     }
     active_[0] = active_[1] = true;
