@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cstdint>
 #include <cstdlib>
+#include <utility>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -14,6 +15,13 @@ namespace gab {
 
 namespace {
 constexpr size_t kHugePage = kLargeAlignment;
+
+// The whole `page`-byte pages inside [p, p + bytes): [first, last), empty
+// when last <= first.
+[[maybe_unused]] std::pair<uintptr_t, uintptr_t> whole_pages(const void* p, size_t bytes, uintptr_t page) {
+  const uintptr_t begin = reinterpret_cast<uintptr_t>(p);
+  return {(begin + page - 1) / page * page, (begin + bytes) / page * page};
+}
 }  // namespace
 
 void* allocate_large(size_t bytes) {
@@ -27,9 +35,10 @@ void* allocate_large(size_t bytes) {
 
 void advise_huge_pages(void* p, size_t bytes) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-  const uintptr_t begin = reinterpret_cast<uintptr_t>(p);
-  const uintptr_t first = (begin + kHugePage - 1) / kHugePage * kHugePage, last = (begin + bytes) / kHugePage * kHugePage;
-  if (p != nullptr && last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
+  const auto pages = whole_pages(p, bytes, kHugePage);
+  if (p != nullptr && pages.second > pages.first) {
+    madvise(reinterpret_cast<void*>(pages.first), pages.second - pages.first, MADV_HUGEPAGE);
+  }
 #else
   (void)p;
   (void)bytes;
@@ -40,10 +49,10 @@ void free_large(void* p) { std::free(p); }
 
 void release_pages(void* p, size_t bytes) {
 #if defined(__linux__)
-  const uintptr_t kPage = static_cast<uintptr_t>(sysconf(_SC_PAGESIZE));
-  const uintptr_t begin = reinterpret_cast<uintptr_t>(p);
-  const uintptr_t first = (begin + kPage - 1) / kPage * kPage, last = (begin + bytes) / kPage * kPage;
-  if (p != nullptr && last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_DONTNEED);
+  const auto pages = whole_pages(p, bytes, static_cast<uintptr_t>(sysconf(_SC_PAGESIZE)));
+  if (p != nullptr && pages.second > pages.first) {
+    madvise(reinterpret_cast<void*>(pages.first), pages.second - pages.first, MADV_DONTNEED);
+  }
 #else
   (void)p;
   (void)bytes;
@@ -76,9 +85,9 @@ void PagePopulator::start(const std::vector<std::pair<void*, size_t>>& ranges) {
   auto work = std::make_unique<Work>();
   size_t total = 0;
   for (const auto& range : ranges) {
-    const uintptr_t begin = reinterpret_cast<uintptr_t>(range.first);
-    const uintptr_t first = (begin + kPage - 1) / kPage * kPage, last = (begin + range.second) / kPage * kPage;
-    for (uintptr_t p = first; p < last; p += kPiece) {
+    const auto pages = whole_pages(range.first, range.second, kPage);
+    const uintptr_t last = pages.second;
+    for (uintptr_t p = pages.first; p < last; p += kPiece) {
       const size_t size = static_cast<size_t>(std::min<uintptr_t>(kPiece, last - p));
       work->pieces.emplace_back(reinterpret_cast<char*>(p), size);
       total += size;

@@ -74,7 +74,7 @@ class Dissection {
       const int32_t count = nd::connected_components(g, &ws, &component);
       if (count > 1) return order_components(g, label, h, component, count, begin, seed, worker, nodes, roots);
     }
-    if (is_leaf(g.n)) return order_leaf(g, label, begin, worker, nodes, roots);
+    if (is_leaf(g.n)) return order_leaf(g.n, label, begin, worker, nodes, roots);
 
     std::vector<uint8_t> where;
     nd::Rng rng(seed);
@@ -85,7 +85,7 @@ class Dissection {
     // on it would go deep for little gain: the piece is ordered whole.
     const size_t larger = std::max(side[nd::kLeft].size(), side[nd::kRight].size());
     if (side[nd::kLeft].empty() || side[nd::kRight].empty() || larger > 0.9 * g.n) {
-      return order_leaf(g, label, begin, worker, nodes, roots);
+      return order_leaf(g.n, label, begin, worker, nodes, roots);
     }
 
     const int32_t part_size[2] = {static_cast<int32_t>(side[nd::kLeft].size()),
@@ -219,11 +219,11 @@ class Dissection {
   // piece's vertices and, never pivots, their neighbours outside it in the
   // whole graph, which are the separators around the piece (all ordered
   // after it). Measured against AMD on the piece alone: bench/TUNING.md.
-  Status order_leaf(const Graph& g, const std::vector<int32_t>& label, int32_t begin, int32_t worker,
+  // The piece is label[0 .. m).
+  Status order_leaf(int32_t m, const std::vector<int32_t>& label, int32_t begin, int32_t worker,
                     std::vector<SeparatorTree::Node>* nodes, std::vector<int32_t>* roots) {
     LeafWorkspace& lw = leaf_ws_[worker];
     if (lw.local.empty()) lw.local.assign(perm_.size(), -1);
-    const int32_t m = g.n;
     for (int32_t k = 0; k < m; ++k) lw.local[label[k]] = k;
     // The halo, numbered from m in order of first sight.
     lw.halo.clear();
