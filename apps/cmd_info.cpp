@@ -53,6 +53,8 @@ int run_info(int argc, char** argv) {
     o.add_bool("levels", info.levels);
     o.add_bool("reordered", info.reordered);
     o.add("ordering", std::string(matrix_ordering_name(info.ordering)));
+    o.add("reconstruction", static_cast<int64_t>(info.reconstruction));
+    o.add("sections", static_cast<int64_t>(info.sections));
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }
@@ -65,10 +67,7 @@ int run_info(int argc, char** argv) {
               info.ordering == MatrixOrdering::kNestedDissection ? "nested dissection" : "AMD");
   std::printf("%zu bytes: geometry %zu (%.3f bits/vertex), connectivity %zu (%s)", info.bytes, info.geometry_bytes,
               bpv, info.connectivity_bytes,
-              info.geometry_only       ? "a hash"
-              : info.versioned_valence ? "valence coded"
-              : info.reordered         ? "valence coded, version 1"
-                                       : "triangle list, order kept");
+              info.geometry_only ? "a hash" : "valence coded");
   if (info.order_bytes > 0) {
     std::printf(", vertex order %zu\n", info.order_bytes);
   } else {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "connectivity/connectivity_coder.h"
+#include "connectivity/valence_section.h"
 #include "entropy/range_coder.h"
 #include "gab/mesh/mesh_io.h"
 
@@ -64,9 +64,9 @@ void BM_ConnectivityEncodeIgea(benchmark::State& state) {
   if (!load_igea(&mesh, state)) return;
   size_t bytes = 0;
   for (auto _ : state) {
-    const std::vector<uint8_t> out = gab::encode_connectivity(mesh.num_vertices(), mesh.triangles);
-    bytes = out.size();
-    benchmark::DoNotOptimize(out.data());
+    const gab::ValenceSection out = gab::encode_valence_section(mesh.num_vertices(), mesh.triangles);
+    bytes = out.bytes.size();
+    benchmark::DoNotOptimize(out.bytes.data());
   }
   state.counters["bits/triangle"] = 8.0 * bytes / mesh.num_triangles();
   state.SetItemsProcessed(state.iterations() * mesh.num_triangles());
@@ -76,10 +76,11 @@ BENCHMARK(BM_ConnectivityEncodeIgea)->Unit(benchmark::kMillisecond);
 void BM_ConnectivityDecodeIgea(benchmark::State& state) {
   gab::Mesh mesh;
   if (!load_igea(&mesh, state)) return;
-  const std::vector<uint8_t> bytes = gab::encode_connectivity(mesh.num_vertices(), mesh.triangles);
+  const std::vector<uint8_t> bytes = gab::encode_valence_section(mesh.num_vertices(), mesh.triangles).bytes;
   for (auto _ : state) {
     std::vector<int32_t> triangles;
-    if (!gab::decode_connectivity(bytes.data(), bytes.size(), mesh.num_vertices(), mesh.num_triangles(), &triangles)
+    if (!gab::decode_valence_section(bytes.data(), bytes.size(), mesh.num_vertices(), mesh.num_triangles(),
+                                     &triangles)
              .ok()) {
       state.SkipWithError("decode failed");
     }

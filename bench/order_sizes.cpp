@@ -35,8 +35,7 @@ Cost order_cost(int32_t n, const std::vector<int32_t>& triangles) {
   const gab::ValenceSection section = gab::encode_valence_section(n, triangles);
   std::vector<int32_t> decoded;
   gab_bench::check(gab::decode_valence_section(section.bytes.data(), section.bytes.size(), n,
-                                               static_cast<int32_t>(triangles.size() / 3), &decoded,
-                                               gab::kValenceVersionLatest),
+                                               static_cast<int32_t>(triangles.size() / 3), &decoded),
                    "valence section");
   std::vector<int32_t> original(static_cast<size_t>(n));
   for (int32_t v = 0; v < n; ++v) original[section.new_index[v]] = v;

@@ -3,7 +3,7 @@
 //
 // The page receives a .gab file as a stream. It copies the bytes into the
 // buffer gab_web_buffer() hands out, asks gab_web_frames() how many chunks
-// are complete (the framing of gab_format.h: a 72-byte header, the
+// are complete (the framing of gab_format.h: a header of 63-83 bytes, the
 // connectivity section, then one frame per chunk, u32 length + u32 CRC-32 +
 // payload), and calls gab_web_decode() on a prefix each time another chunk
 // has arrived. Each call decodes that prefix from the start: the decoder
@@ -87,7 +87,9 @@ GAB_WEB_EXPORT int32_t gab_web_frames(size_t size) {
   WebState& s = state();
   s.chunk_ends.clear();
   if (size > s.input.size()) size = s.input.size();
-  if (size < gab::kGabHeaderBytes) return -1;
+  // The header's counts are varints: wait for the longest header (a whole
+  // file is always longer: the connectivity and chunk 0 follow it).
+  if (size < gab::kGabMaxHeaderBytes) return -1;
   gab::ByteReader in(s.input.data(), size);
   gab::GabHeader header;
   const gab::Status status = gab::read_gab_header(&in, size, &header);

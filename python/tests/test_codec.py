@@ -99,7 +99,7 @@ class CodecTest(unittest.TestCase):
         self.assertEqual(e.exception.name, "GAB_E_PARSE")
         self.assertTrue(str(e.exception).startswith("gab_decompress: "))
         data = bytearray(gab.compress(V, F))
-        data[len(data) // 2] ^= 0x55
+        data[-1] ^= 0x55  # inside the last chunk's payload: its checksum fails
         with self.assertRaises(gab.GabError) as e:
             gab.decompress(bytes(data))
         self.assertEqual(e.exception.code, 3)

@@ -88,7 +88,9 @@ TEST(CodecCliTest, CompressDecompressInfoRoundTrip) {
   EXPECT_EQ(json_number(i.out, "bytes"), json_number(c.out, "bytes"));
   EXPECT_EQ(json_number(i.out, "connectivity_bytes"), json_number(c.out, "connectivity_bytes"));
   EXPECT_EQ(json_number(i.out, "order_bytes"), json_number(c.out, "order_bytes"));
-  EXPECT_EQ(json_number(i.out, "version"), 1);
+  EXPECT_EQ(json_number(i.out, "version"), 2);
+  EXPECT_EQ(json_number(i.out, "reconstruction"), 0);
+  EXPECT_EQ(json_number(i.out, "sections"), 0);
 }
 
 TEST(CodecCliTest, ReorderDropsTheVertexOrderAndSaysSo) {

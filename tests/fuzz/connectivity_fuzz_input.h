@@ -1,6 +1,6 @@
 // The connectivity fuzzer's input format (connectivity_fuzzer.cpp), shared
-// with the test that replays its regressions: flags u8 (the header's bits 3
-// and 4 as bits 0 and 1), vertex count - 1 u16, triangle count u16, valence
+// with the test that replays its regressions: flags u8 (bit 0: the
+// header's kGabFlagReordered; the other bits are ignored), vertex count - 1 u16, triangle count u16, valence
 // block length u16, the valence block, then the vertex order block.
 #pragma once
 
@@ -19,8 +19,7 @@ inline bool parse_connectivity_input(const uint8_t* data, size_t size, gab::GabH
   if (size < 7) return false;
   auto u16 = [&](size_t at) { return static_cast<int32_t>(data[at] | (data[at + 1] << 8)); };
   *header = gab::GabHeader();
-  header->flags = static_cast<uint8_t>(((data[0] & 1) ? gab::kGabFlagReordered : 0) |
-                                       ((data[0] & 2) ? gab::kGabFlagVersionedValence : 0));
+  header->flags = (data[0] & 1) ? gab::kGabFlagReordered : 0;
   header->num_vertices = u16(1) + 1;
   header->num_triangles = u16(3);
   const size_t valence = std::min<size_t>(static_cast<size_t>(u16(5)), size - 7);

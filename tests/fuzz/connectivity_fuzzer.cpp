@@ -1,5 +1,5 @@
 // libFuzzer target: the connectivity section's decoders (valence section,
-// vertex order, the first triangle list) on untrusted bytes, without the
+// vertex order) on untrusted bytes, without the
 // checksums that stop most mutations of a whole .gab file before they
 // reach them (input format: connectivity_fuzz_input.h; an input that ever
 // broke it goes to regressions/connectivity-<what>, replayed by

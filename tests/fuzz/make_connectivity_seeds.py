@@ -10,7 +10,26 @@ import struct
 HERE = os.path.dirname(os.path.abspath(__file__))
 GAB = os.path.join(HERE, "corpus", "gab")
 OUT = os.path.join(HERE, "corpus", "connectivity")
-HEADER = 72
+
+
+def varint(data, at):
+    value, shift = 0, 0
+    while True:
+        byte = data[at]
+        value |= (byte & 0x7F) << shift
+        at, shift = at + 1, shift + 7
+        if not byte & 0x80:
+            return value, at
+
+
+def header(data):
+    """n, t and the offset just past the header (gab_format.h)."""
+    n, at = varint(data, 14)
+    t, at = varint(data, at)
+    at += 40  # weight, box_min, step
+    for _ in range(3):  # anchors, chunks, sections
+        _, at = varint(data, at)
+    return n, t, at + 4  # the header's CRC-32
 
 
 def frame(data, at):
@@ -25,12 +44,12 @@ for name in sorted(os.listdir(GAB)):
     flags = data[9]
     if flags & 1:
         continue  # geometry only: a hash, no blocks
-    n, t = struct.unpack_from("<II", data, 12)
-    valence, at = frame(data, HEADER)
+    n, t, at = header(data)
+    valence, at = frame(data, at)
     order = b""
-    if flags & 16 and not flags & 8:
+    if not flags & 8:
         order, at = frame(data, at)
-    bits = (1 if flags & 8 else 0) | (2 if flags & 16 else 0)
+    bits = 1 if flags & 8 else 0
     seed = struct.pack("<BHHH", bits, n - 1, t, len(valence)) + valence + order
     if seed in seen:
         continue  # the same torus's triangles, cut from another seed

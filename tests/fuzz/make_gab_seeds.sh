@@ -3,16 +3,10 @@
 # files of tests/codec/pipeline/golden_file_test.cpp) with the gab binary given as $1:
 #   bash tests/fuzz/make_gab_seeds.sh build/apps/gab
 # Each seed is one options byte (see gab_fuzzer.cpp) then a file made from
-# the 10 x 6 torus of gab_fuzz_mesh.h. Only for a deliberate format change
-# (bump kGabVersion too) — then update the pinned numbers in the golden test.
-# (torus-refined was added later, with format flag bit 1, and the
-# torus-levels seeds later still, with flag bit 2, torus-reordered with
-# flag bit 3, torus-reordered-v1 with flag bit 4 (its valence section
-# version 1), torus-*ordered-v2 with its version 2, torus-detail* with flag
-# bit 5 (the detail chunk, version 1), torus-nd with header byte 11
-# (the ordering: nested dissection), by running just their lines: the older seeds pin what the first encoder wrote; torus-coarse,
-# made before the greedy batches ranked by error mass, no longer comes out
-# byte for byte, so keep the committed one.)
+# the 10 x 6 torus of gab_fuzz_mesh.h: one per variant of format version 2.
+# The seeds are golden files (their bytes are pinned): regenerate them only
+# for a new format version, then update the pinned figures in the golden
+# test. A new variant adds its line and seed beside the others.
 set -euo pipefail
 gab="$1"
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -35,30 +29,30 @@ with open(sys.argv[1], "w") as f:
             c, d = ((i + 1) % n) * m + (j + 1) % m, i * m + (j + 1) % m
             f.write("3 %d %d %d\n3 %d %d %d\n" % (a, b, c, a, c, d))
 PY
-"$gab" compress -i "$tmp/torus.off" -o "$tmp/full.gab" --anchors 20 --chunk-growth 1.5 --layout selection
-"$gab" compress -i "$tmp/torus.off" -o "$tmp/geo.gab" --anchors 12 --geometry-only --bits 8 --chunk-growth 2 --layout selection
-"$gab" compress -i "$tmp/torus.off" -o "$tmp/coarse.gab" --error 0.01 --bits 6 --chunk-growth 2 --layout selection
-"$gab" compress -i "$tmp/torus.off" -o "$tmp/refined.gab" --anchors 16 --refine --chunk-growth 2 --layout selection
-"$gab" compress -i "$tmp/torus.off" -o "$tmp/levels.gab" --anchors 40 --initial 4 --layout levels --chunk-growth 1.5
-"$gab" compress -i "$tmp/torus.off" -o "$tmp/levels-refined.gab" --anchors 24 --initial 3 --layout levels --refine
-"$gab" compress -i "$tmp/torus.off" -o "$tmp/reordered.gab" --anchors 20 --chunk-growth 1.5 --reorder
-"$gab" compress -i "$tmp/torus.off" -o "$tmp/ordered-v2.gab" --anchors 20 --chunk-growth 1.5
-"$gab" compress -i "$tmp/torus.off" -o "$tmp/reordered-v2.gab" --anchors 20 --chunk-growth 1.5 --reorder
-"$gab" compress -i "$tmp/torus.off" -o "$tmp/detail.gab" --error 1e-4 --detail on
-"$gab" compress -i "$tmp/torus.off" -o "$tmp/detail-geo.gab" --error 1e-4 --detail on --geometry-only
-"$gab" compress -i "$tmp/torus.off" -o "$tmp/nd.gab" --anchors 20 --chunk-growth 1.5 --ordering nd
+c() { "$gab" compress -i "$tmp/torus.off" "$@" 2>/dev/null; }
+c -o "$tmp/full.gab" --anchors 20 --chunk-growth 1.5 --layout selection
+c -o "$tmp/geo.gab" --anchors 12 --geometry-only --bits 8 --chunk-growth 2 --layout selection
+c -o "$tmp/coarse.gab" --error 0.01 --bits 6 --chunk-growth 2 --layout selection
+c -o "$tmp/refined.gab" --anchors 16 --refine --chunk-growth 2 --layout selection
+c -o "$tmp/levels.gab" --anchors 40 --initial 4 --layout levels --chunk-growth 1.5
+c -o "$tmp/levels-refined.gab" --anchors 24 --initial 3 --layout levels --refine
+c -o "$tmp/ordered.gab" --anchors 20 --chunk-growth 1.5
+c -o "$tmp/reordered.gab" --anchors 20 --chunk-growth 1.5 --reorder
+c -o "$tmp/nd.gab" --anchors 20 --chunk-growth 1.5 --ordering nd
+c -o "$tmp/detail.gab" --error 1e-4 --detail on
+c -o "$tmp/detail-geo.gab" --error 1e-4 --detail on --geometry-only
+rm -f "$out"/torus-*
 mkdir -p "$out"
 { printf '\x00'; cat "$tmp/full.gab"; } > "$out/torus-full"
-{ printf '\x01'; cat "$tmp/geo.gab"; } > "$out/torus-geometry-only"
 { printf '\x16'; cat "$tmp/full.gab"; } > "$out/torus-prefix-5"
+{ printf '\x01'; cat "$tmp/geo.gab"; } > "$out/torus-geometry-only"
 { printf '\x00'; cat "$tmp/coarse.gab"; } > "$out/torus-coarse"
 { printf '\x00'; cat "$tmp/refined.gab"; } > "$out/torus-refined"
 { printf '\x00'; cat "$tmp/levels.gab"; } > "$out/torus-levels"
 { printf '\x2a'; cat "$tmp/levels.gab"; } > "$out/torus-levels-prefix-10"
 { printf '\x00'; cat "$tmp/levels-refined.gab"; } > "$out/torus-levels-refined"
+{ printf '\x00'; cat "$tmp/ordered.gab"; } > "$out/torus-ordered"
 { printf '\x00'; cat "$tmp/reordered.gab"; } > "$out/torus-reordered"
-{ printf '\x00'; cat "$tmp/ordered-v2.gab"; } > "$out/torus-ordered-v2"
-{ printf '\x00'; cat "$tmp/reordered-v2.gab"; } > "$out/torus-reordered-v2"
+{ printf '\x00'; cat "$tmp/nd.gab"; } > "$out/torus-nd"
 { printf '\x00'; cat "$tmp/detail.gab"; } > "$out/torus-detail"
 { printf '\x01'; cat "$tmp/detail-geo.gab"; } > "$out/torus-detail-geometry-only"
-{ printf '\x00'; cat "$tmp/nd.gab"; } > "$out/torus-nd"

@@ -35,7 +35,6 @@ import threading
 import time
 
 SKIP = 77
-HEADER_BYTES = 72  # codec/include/gab/codec/gab_format.h
 FRAME_DELAY_S = 0.15  # the throttled stream's pause between frames
 
 
@@ -51,11 +50,25 @@ def find_chromium():
     return None
 
 
+def header_bytes(data):
+    """The header's size (docs/format.md 2.1): 14 fixed bytes, the varints n
+    and faces, 40 bytes of f64, the varints anchors, chunks and sections,
+    and the CRC-32."""
+    at = 14
+    for count in range(5):
+        while data[at] & 0x80:
+            at += 1
+        at += 1
+        if count == 1:
+            at += 40
+    return at + 4
+
+
 def frame_ends(data):
     """Byte offsets after the header and after each frame (u32 length, u32
     CRC-32, payload); the file must not be geometry-only (no unframed hash)."""
-    ends = [HEADER_BYTES]
-    at = HEADER_BYTES
+    ends = [header_bytes(data)]
+    at = ends[0]
     while at + 8 <= len(data):
         (length,) = struct.unpack_from("<I", data, at)
         at += 8 + length

@@ -1,5 +1,5 @@
 // The active lists of a valence-driven traversal (Touma & Gotsman 1998),
-// shared by every version of the valence coder (valence_coder.h): the
+// on which the valence coder (valence_coder.h) conquers a mesh: the
 // boundary of the conquered region as cycles of vertex occurrences, and the
 // operations that grow it. Both sides apply the same calls, so the lists
 // (node numbers included) are the same in the encoder and the decoder.
@@ -15,8 +15,8 @@ namespace gab {
 // `max_triangles` triangles may take: 2^20 plus 16 per triangle (a valence
 // section allows 4 per triangle of the file, dummies' included: 64 per
 // file triangle), far above any real mesh's (the shared meshes and
-// libcgal-demo's walk at most 13.3 per file triangle with coder version 1,
-// 1.9 with version 2), so that a forged stream cannot make a decoder
+// libcgal-demo's walk at most 1.9 per file triangle), so that a forged
+// stream cannot make a decoder
 // quadratic.
 inline int64_t walk_budget(int64_t max_triangles) { return (int64_t{1} << 20) + 16 * max_triangles; }
 

@@ -3,7 +3,7 @@
 #include <string>
 
 #include "connectivity/active_lists.h"
-#include "connectivity/connectivity_coder.h"
+#include "connectivity/connectivity_hash.h"
 #include "connectivity/order_coder.h"
 #include "connectivity/valence_section.h"
 #include "container/framing.h"
@@ -14,28 +14,20 @@ namespace {
 
 Status corrupt(const std::string& what) { return Status::Error(StatusCode::kParseError, what); }
 
-// The version byte: the valence coder's (valence_section.h), which names
-// the vertex order coder's too. This build writes kValenceVersionLatest and
-// reads 1 to it; version 1 is also what a file with the reordered flag
-// alone holds, without the byte.
-constexpr uint8_t kValenceVersionWritten = kValenceVersionLatest;
-
 }  // namespace
 
 Status code_connectivity(int32_t n, const std::vector<int32_t>& triangles, bool reorder, CodedConnectivity* coded) {
   const int32_t t = static_cast<int32_t>(triangles.size() / 3);
-  ValenceSection section = encode_valence_section(n, triangles, kValenceVersionWritten);
+  ValenceSection section = encode_valence_section(n, triangles);
   if (section.walked > walk_budget(4 * static_cast<int64_t>(t))) {
     return Status::Error(StatusCode::kResourceExhausted,
                          "connectivity: the valence coder's traversal would walk " + std::to_string(section.walked) +
                              " list steps, more than a decoder accepts (" +
                              std::to_string(walk_budget(4 * static_cast<int64_t>(t))) + ")");
   }
-  coded->valence.assign(1, kValenceVersionWritten);
-  coded->valence.insert(coded->valence.end(), section.bytes.begin(), section.bytes.end());
+  coded->valence = section.bytes;
   std::vector<int32_t> traversal;  // the triangles in traversal numbering
-  GAB_RETURN_IF_ERROR(
-      decode_valence_section(section.bytes.data(), section.bytes.size(), n, t, &traversal, kValenceVersionWritten));
+  GAB_RETURN_IF_ERROR(decode_valence_section(section.bytes.data(), section.bytes.size(), n, t, &traversal));
   coded->order.clear();
   if (reorder) {
     coded->triangles = std::move(traversal);
@@ -104,21 +96,8 @@ Status decode_connectivity_section(const ConnectivitySection& section, const Gab
     return Status::Ok();
   }
   const int32_t n = header.num_vertices, t = header.num_triangles;
-  if (!header.versioned_valence()) {
-    const Status s = header.reordered() ? decode_valence_section(section.block, section.size, n, t, triangles, 1)
-                                        : decode_connectivity(section.block, section.size, n, t, triangles);
-    if (!s.ok()) return corrupt("connectivity block: " + s.message());
-    return Status::Ok();
-  }
-  if (section.size < 1) return corrupt("connectivity block: empty");
-  const int version = section.block[0];
-  if (version == 0) return corrupt("connectivity block: valence coder version 0");
-  if (version > kValenceVersionWritten) {
-    return Status::Error(StatusCode::kUnsupported, "connectivity block: valence coder version " +
-                                                       std::to_string(version) + " is newer than this build reads");
-  }
   std::vector<int32_t> traversal;
-  const Status s = decode_valence_section(section.block + 1, section.size - 1, n, t, &traversal, version);
+  const Status s = decode_valence_section(section.block, section.size, n, t, &traversal);
   if (!s.ok()) return corrupt("connectivity block: " + s.message());
   if (!header.keeps_coded_order()) {
     *triangles = std::move(traversal);

@@ -1,14 +1,11 @@
 // The connectivity section of a .gab file (gab/codec/gab_format.h), written
 // and read as twins. By the header's flags it is:
 //   geometry only          the hash of the mesh the decoder must be given
-//   versioned valence      a framed block: a version byte, then the valence
-//                          section (valence_section.h); unless reordered, a
-//                          second framed block: the input's vertex order
-//                          (order_coder.h). What the encoder writes.
-//   reordered alone        the framed valence section, version 1 (files of
-//                          the first --reorder)
-//   none of these          the framed triangle list (connectivity_coder.h,
-//                          files of the first version)
+//                          (connectivity_hash.h)
+//   otherwise              a framed block: the valence section
+//                          (valence_section.h); unless reordered, a second
+//                          framed block: the input's vertex order
+//                          (order_coder.h)
 #pragma once
 
 #include <cstddef>
@@ -27,7 +24,7 @@ namespace gab {
 // decoder's order and corner order; numbered in traversal order when
 // reordered).
 struct CodedConnectivity {
-  std::vector<uint8_t> valence;  // version byte and valence section
+  std::vector<uint8_t> valence;  // the valence section
   std::vector<uint8_t> order;    // the vertex order (empty when reordered)
   std::vector<int32_t> triangles;
   // Reordered: new_index[v] is the decoded mesh's number for input vertex
@@ -41,8 +38,7 @@ struct CodedConnectivity {
 Status code_connectivity(int32_t n, const std::vector<int32_t>& triangles, bool reorder, CodedConnectivity* coded);
 
 // Writes the section: the hash of `mesh` when geometry only, otherwise the
-// blocks of `coded` as the flags say (versioned valence; the legacy
-// variants are read, never written). O(T).
+// blocks of `coded` as the flags say. O(T).
 void write_connectivity_section(const Mesh& mesh, const GabHeader& header, const CodedConnectivity& coded,
                                 ByteWriter* out);
 

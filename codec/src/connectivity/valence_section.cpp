@@ -19,19 +19,23 @@ struct SectionModels {
   UIntCoder stitch_count, stitch_gap, stitch_back, degenerate_count, index;
 };
 
+// A closed region's triangles are at most twice its vertices plus four per
+// handle, and each vertex and handle costs a coded decision at least: so at
+// most 6 triangles a decision (the dummies' triangles included).
+constexpr uint64_t kMaxTrianglesPerDecision = 6;
+// A UIntCoder value is its bit length, 6 decisions at least (int_coder.h).
+constexpr uint64_t kMinDecisionsPerIndex = 6;
+
 }  // namespace
 
-static_assert(kValenceVersionLatest == kValenceCoderLatest, "the section codes every coder version");
-
-ValenceSection encode_valence_section(int32_t n, const std::vector<int32_t>& triangles, int version) {
-  version = std::min(std::max(version, 1), kValenceVersionLatest);
+ValenceSection encode_valence_section(int32_t n, const std::vector<int32_t>& triangles) {
   ManifoldCut cut = cut_to_manifold(n, triangles);
   // The cut's copies and degenerate triangles are read below; its triangles
   // and opposites become the closed mesh's.
   const ClosedMesh closed = close_boundaries(&cut);
   RangeEncoder enc;
   std::vector<int32_t> order;
-  const int64_t walked = encode_valences(closed, &enc, &order, version);
+  const int64_t walked = encode_valences(closed, &enc, &order);
 
   // The decoder numbers each input vertex where it first meets it (or one
   // of its copies); a later copy is a stitch back to that first meeting.
@@ -70,21 +74,23 @@ ValenceSection encode_valence_section(int32_t n, const std::vector<int32_t>& tri
 }
 
 Status decode_valence_section(const uint8_t* data, size_t size, int32_t n, int32_t t,
-                              std::vector<int32_t>* triangles, int version) {
+                              std::vector<int32_t>* triangles) {
   auto corrupt = [](const std::string& what) {
     return Status::Error(StatusCode::kParseError, "connectivity: " + what);
   };
-  if (version < 1 || version > kValenceVersionLatest) {
-    return corrupt("unknown valence coder version " + std::to_string(version));
-  }
   if (n < 1 || t < 0) return Status::Error(StatusCode::kInvalidArgument, "connectivity: bad counts");
+  // Each triangle costs a sixth of a decision at least (valence_section.h).
+  if (static_cast<uint64_t>(t) > kMaxTrianglesPerDecision * max_decisions(size)) {
+    return corrupt("the header's " + std::to_string(t) + " triangles are more than a block of " +
+                   std::to_string(size) + " bytes can describe");
+  }
   // The closed mesh has at most the cut's vertices (n + 3t copies) plus a
   // dummy per boundary loop (<= t), and t + 3t triangles with the dummies'.
   const int64_t max_vertices = std::min<int64_t>(static_cast<int64_t>(n) + 4 * static_cast<int64_t>(t), INT32_MAX);
   RangeDecoder dec(data, size);
   DecodedConnectivity decoded;
   GAB_RETURN_IF_ERROR(
-      decode_valences(&dec, static_cast<int32_t>(max_vertices), 4 * static_cast<int64_t>(t), &decoded, version));
+      decode_valences(&dec, static_cast<int32_t>(max_vertices), 4 * static_cast<int64_t>(t), &decoded));
 
   SectionModels models;
   const uint32_t stitches = models.stitch_count.decode(&dec);
@@ -95,6 +101,7 @@ Status decode_valence_section(const uint8_t* data, size_t size, int32_t n, int32
   std::vector<int32_t> stitched_to(static_cast<size_t>(decoded.num_vertices), -1);
   int64_t at = 0;
   for (uint32_t i = 0; i < stitches; ++i) {
+    if (dec.overrun()) return corrupt("stream truncated");
     const uint32_t gap = models.stitch_gap.decode(&dec);
     if (i > 0 && gap == 0) return corrupt("stitches out of order");
     at += gap;
@@ -126,10 +133,19 @@ Status decode_valence_section(const uint8_t* data, size_t size, int32_t n, int32
     triangles->insert(triangles->end(), {a, b, c});
   }
   const uint32_t degenerate = models.degenerate_count.decode(&dec);
+  if (dec.overrun()) return corrupt("stream truncated");
   if (static_cast<uint64_t>(degenerate) + triangles->size() / 3 != static_cast<uint64_t>(t)) {
     return corrupt("triangle count disagrees with the header");
   }
+  // Each index is at least kMinDecisionsPerIndex decisions: a count the
+  // rest of the stream cannot hold is refused before the loop, and the loop
+  // stops where the stream ends.
+  if (3 * static_cast<uint64_t>(degenerate) * kMinDecisionsPerIndex > max_decisions(size - dec.bytes_consumed())) {
+    return corrupt(std::to_string(degenerate) + " degenerate triangles are more than the stream's last " +
+                   std::to_string(size - dec.bytes_consumed()) + " bytes can describe");
+  }
   for (uint32_t i = 0; i < 3 * degenerate; ++i) {
+    if (dec.overrun()) return corrupt("stream truncated");
     const uint32_t v = models.index.decode(&dec);
     if (v >= static_cast<uint32_t>(n)) return corrupt("degenerate triangle's vertex out of range");
     triangles->push_back(static_cast<int32_t>(v));

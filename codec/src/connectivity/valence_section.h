@@ -16,11 +16,6 @@
 
 namespace gab {
 
-// Versions of the stream (valence_coder.h says what each codes). A file
-// written by version k decodes only as version k: the version travels
-// outside the section (the caller's format stores it).
-constexpr int kValenceVersionLatest = 2;
-
 struct ValenceSection {
   std::vector<uint8_t> bytes;
   // new_index[v]: the decoder's number for input vertex v (a permutation).
@@ -30,17 +25,19 @@ struct ValenceSection {
   int64_t walked = 0;
 };
 
-// Codes `triangles` over n vertices (indices in [0, n), n >= 1) with coder
-// `version` (1..kValenceVersionLatest; a value outside is clamped into it).
+// Codes `triangles` over n vertices (indices in [0, n), n >= 1).
 // O(n + T), plus the traversal's splits (see valence_coder.h).
-ValenceSection encode_valence_section(int32_t n, const std::vector<int32_t>& triangles,
-                                      int version = kValenceVersionLatest);
+ValenceSection encode_valence_section(int32_t n, const std::vector<int32_t>& triangles);
 
 // Decodes a section coded for n vertices and t triangles. Untrusted input:
 // any inconsistency (counts that disagree with n and t, an index out of
 // range, a stream cut short or with trailing bytes) is a kParseError naming
-// it; a version this build does not know is a kParseError too. O(n + T).
+// it. A count is checked against what `size` bytes can describe before it
+// is looped over: t (a closed region's triangles number at most twice its
+// vertices plus four per handle, each vertex and handle a coded decision;
+// a degenerate triangle is three coded indices) and the stitches and
+// degenerate triangles the stream declares. O(n + T).
 Status decode_valence_section(const uint8_t* data, size_t size, int32_t n, int32_t t,
-                              std::vector<int32_t>* triangles, int version);
+                              std::vector<int32_t>* triangles);
 
 }  // namespace gab

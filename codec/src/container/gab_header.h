@@ -22,8 +22,7 @@ constexpr GabFlagRow kGabFlagTable[] = {
     {kGabFlagRefined, "refined"},             // a refinement chunk follows the anchor chunks
     {kGabFlagLevels, "levels"},               // the anchor chunks are in the level layout
     {kGabFlagReordered, "reordered"},         // traversal numbering: no vertex order block
-    {kGabFlagVersionedValence, "versioned-valence"},  // a version byte before the valence section
-    {kGabFlagDetail, "detail"},                       // a detail chunk ends the file
+    {kGabFlagDetail, "detail"},               // a detail chunk ends the geometry
 };
 
 // The bits of kGabFlagTable together. O(rows).
@@ -33,14 +32,17 @@ constexpr uint8_t known_gab_flags() {
   return known;
 }
 
-// The 72 bytes, the CRC-32 of the first 68 last. O(1).
+// The header (kGabMinHeaderBytes..kGabMaxHeaderBytes), its CRC-32 last. O(1).
 void write_gab_header(const GabHeader& header, ByteWriter* out);
 
 // Reads and checks the header: magic, version, CRC, flags, every field's
 // range, and that the counts are plausible for a file of `file_size` bytes
-// (so a forged header cannot make a decoder allocate without bound).
-// kParseError with a message naming the field otherwise; kUnsupported for a
-// newer version or an unknown flag. O(1).
+// (so a forged header cannot make a decoder allocate without bound; the
+// triangle count is checked against the connectivity block's size when it
+// is decoded). kParseError with a message naming the field otherwise;
+// kUnsupported for another version, an unknown flag, ordering or
+// reconstruction operator, or the reserved byte in use. On success `in` is
+// just past the header. O(1).
 Status read_gab_header(ByteReader* in, size_t file_size, GabHeader* header);
 
 }  // namespace gab

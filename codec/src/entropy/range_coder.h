@@ -74,6 +74,14 @@ class RangeEncoder {
   std::vector<uint8_t> out_;
 };
 
+// The most decisions (coded bits) a stream of `bytes` bytes can hold: a
+// decision narrows the range by at least -log2(kMax / 2^16) = 0.000704 bit
+// and the decoder reads a byte per 8 bits of narrowing, so at most 11,354
+// decisions a byte, the 4 bytes read first included. What bounds the work a
+// forged count can ask of a decoder before its stream overruns.
+constexpr uint64_t kMaxDecisionsPerByte = 11354;
+inline uint64_t max_decisions(size_t bytes) { return (static_cast<uint64_t>(bytes) + 1) * kMaxDecisionsPerByte; }
+
 class RangeDecoder {
  public:
   // Reads the first 4 bytes. `data` must outlive the decoder.
@@ -90,6 +98,8 @@ class RangeDecoder {
   // Bytes of the input read so far. After the last symbol of a complete
   // stream this equals the stream's size; a smaller value means trailing data.
   size_t bytes_consumed() const { return pos_; }
+  // The input's size in bytes.
+  size_t size() const { return size_; }
 
  private:
   uint8_t next_byte();

@@ -4,7 +4,8 @@
 //   -> the anchor chunks of the file's layout (anchors/anchor_chunk.h, anchor_levels.h),
 //      each joining the reconstruction as it arrives
 //   -> the refinement chunk (anchors/refinement_chunk.h) -> the anchors' shape
-//   -> the detail chunk (detail/detail_chunk.h), predicted from that shape.
+//   -> the detail chunk (detail/detail_chunk.h), predicted from that shape
+//   -> the trailing sections (container/trailing_sections.h), none known yet.
 #include "gab/codec/decoder.h"
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 #include "connectivity/connectivity_section.h"
 #include "container/framing.h"
 #include "container/gab_header.h"
+#include "container/trailing_sections.h"
 #include "detail/detail_chunk.h"
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/relaxed_reconstruction.h"
@@ -294,8 +296,9 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
     if (stats->detail) out.positions.swap(detailed);
   }
   const bool read_all = whole && (!header.detail() || detail);
-  if (!stats->truncated && read_all && in.remaining() != 0) {
-    return corrupt("trailing bytes after the last chunk");
+  if (!stats->truncated && read_all) {
+    GAB_RETURN_IF_ERROR(skip_trailing_sections(&in, header.sections, &stats->skipped_sections, &stats->truncated));
+    if (!stats->truncated && in.remaining() != 0) return corrupt(header.sections > 0 ? "trailing bytes after the last section" : "trailing bytes after the last chunk");
   }
   *mesh = std::move(out);
   stats->anchors = state.decoded;

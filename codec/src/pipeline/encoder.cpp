@@ -267,7 +267,6 @@ Status encode_on_grid(const Mesh& mesh, const EncodeOptions& options, const Box&
   header.flags = static_cast<uint8_t>((options.geometry_only ? kGabFlagGeometryOnly : 0) |
                                       (selection.refined ? kGabFlagRefined : 0) | (levels ? kGabFlagLevels : 0) |
                                       (options.reorder ? kGabFlagReordered : 0) |
-                                      (options.geometry_only ? 0 : kGabFlagVersionedValence) |
                                       (stats->detail ? kGabFlagDetail : 0));
   header.num_vertices = mesh.num_vertices();
   header.num_triangles = mesh.num_triangles();

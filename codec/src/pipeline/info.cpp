@@ -8,6 +8,7 @@
 #include "connectivity/connectivity_section.h"
 #include "container/framing.h"
 #include "container/gab_header.h"
+#include "container/trailing_sections.h"
 #include "detail/detail_chunk.h"
 #include "gab/codec/decoder.h"
 #include "pipeline/ordering_choice.h"
@@ -34,7 +35,8 @@ Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
   info->refined = header.refined();
   info->levels = header.levels();
   info->reordered = header.reordered();
-  info->versioned_valence = header.versioned_valence();
+  info->reconstruction = header.reconstruction;
+  info->sections = header.sections;
   info->detail = header.detail();
   info->ordering = file_ordering(header.ordering);
   for (int c = 0; c < 3; ++c) info->box_min[c] = header.box_min[c];
@@ -42,6 +44,7 @@ Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
   info->anchors = header.anchors;
   info->chunks = header.chunks;
   info->bytes = size;
+  info->header_bytes = in.offset();
   const size_t before = in.offset();
   ConnectivitySection connectivity;
   GAB_RETURN_IF_ERROR(read_connectivity_section(&in, header, &connectivity));
@@ -98,7 +101,11 @@ Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
     info->chunk_anchors.push_back(static_cast<int32_t>(count));
     info->chunks_present = chunk + 1;
   }
-  if (!info->truncated && in.remaining() != 0) return corrupt("trailing bytes after the last chunk");
+  if (!info->truncated) {
+    int32_t skipped = 0;
+    GAB_RETURN_IF_ERROR(skip_trailing_sections(&in, header.sections, &skipped, &info->truncated));
+    if (!info->truncated && in.remaining() != 0) return corrupt(header.sections > 0 ? "trailing bytes after the last section" : "trailing bytes after the last chunk");
+  }
   info->geometry_bytes = size - info->connectivity_bytes - info->order_bytes;
   return Status::Ok();
 }

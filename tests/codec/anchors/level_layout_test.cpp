@@ -80,7 +80,7 @@ TEST(LevelLayout, DecodesToTheEncodersAnchorsAndSavesTheSelectionOrder) {
   GabFileInfo info;
   ASSERT_TRUE(read_gab_info(levels.data(), levels.size(), &info).ok());
   EXPECT_TRUE(info.levels);
-  EXPECT_EQ(levels[9], kGabFlagLevels | kGabFlagVersionedValence);
+  EXPECT_EQ(levels[9], kGabFlagLevels);
   EXPECT_EQ(info.chunk_anchors, levels_stats.chunk_anchors);
   EXPECT_EQ(info.chunks_present, levels_stats.chunks);
   EXPECT_GT(levels_stats.chunks, 3);

@@ -1,9 +1,10 @@
 // Inputs that once broke the connectivity fuzzer (tests/fuzz/regressions/
 // connectivity-*), replayed in every ordinary test run: each must decode to
-// an error naming the problem. connectivity-negative-list-length: a
-// version-1 stream whose CLOSE_NEXT ran the active list below two vertices,
-// after which the split offsets' unsigned checks let walks of a billion
-// steps through (seconds per input, a fuzzer timeout).
+// an error naming the problem. connectivity-negative-list-length: a stream
+// of the first valence coder whose CLOSE_NEXT ran the active list below two
+// vertices, after which the split offsets' unsigned checks let walks of a
+// billion steps through (seconds per input, a fuzzer timeout); read by
+// today's coder it is garbage that must still fail cleanly.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -25,7 +26,7 @@ TEST(ConnectivityFuzzRegression, EachIsAnErrorNamingTheProblem) {
     const char* name;
     const char* message;
   } cases[] = {
-      {"connectivity-negative-list-length", "connectivity block: connectivity: split offset out of range"},
+      {"connectivity-negative-list-length", "connectivity block: connectivity: stitch count out of range"},
   };
   for (const auto& c : cases) {
     std::string bytes;

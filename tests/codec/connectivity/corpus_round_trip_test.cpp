@@ -38,7 +38,7 @@ std::vector<int32_t> round_trip(const Mesh& mesh, bool reorder, std::vector<int3
   const Status s = code_connectivity(mesh.num_vertices(), mesh.triangles, reorder, &coded);
   EXPECT_TRUE(s.ok()) << s.message();
   GabHeader header;
-  header.flags = static_cast<uint8_t>(kGabFlagVersionedValence | (reorder ? kGabFlagReordered : 0));
+  header.flags = reorder ? kGabFlagReordered : 0;
   header.num_vertices = mesh.num_vertices();
   header.num_triangles = mesh.num_triangles();
   ConnectivitySection section;

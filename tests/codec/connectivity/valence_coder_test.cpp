@@ -19,16 +19,15 @@ namespace {
 
 // Encodes the closed-up cut of `triangles`, decodes, and checks the decoded
 // triangles are the closed mesh's under the reported order; returns bytes.
-size_t round_trip(int32_t n, const std::vector<int32_t>& triangles, int version) {
+size_t round_trip(int32_t n, const std::vector<int32_t>& triangles) {
   const ClosedMesh closed = close_boundaries(cut_to_manifold(n, triangles));
   RangeEncoder enc;
   std::vector<int32_t> order;
-  encode_valences(closed, &enc, &order, version);
+  encode_valences(closed, &enc, &order);
   const std::vector<uint8_t> bytes = enc.finish();
   RangeDecoder dec(bytes.data(), bytes.size());
   DecodedConnectivity out;
-  const Status s = decode_valences(&dec, closed.num_vertices, static_cast<int64_t>(closed.triangles.size() / 3), &out,
-                                  version);
+  const Status s = decode_valences(&dec, closed.num_vertices, static_cast<int64_t>(closed.triangles.size() / 3), &out);
   EXPECT_TRUE(s.ok()) << s.message();
   if (!s.ok()) return 0;
   EXPECT_EQ(dec.bytes_consumed(), bytes.size());
@@ -44,74 +43,57 @@ size_t round_trip(int32_t n, const std::vector<int32_t>& triangles, int version)
   return bytes.size();
 }
 
-// Every test runs every coder version.
-class ValenceCoderTest : public ::testing::TestWithParam<int> {};
-
-TEST_P(ValenceCoderTest, ClosedTorusRoundTrips) {
+TEST(ValenceCoderTest, ClosedTorusRoundTrips) {
   const Mesh torus = testing_util::torus(12, 8);
-  EXPECT_GT(round_trip(torus.num_vertices(), torus.triangles, GetParam()), 0u);
+  EXPECT_GT(round_trip(torus.num_vertices(), torus.triangles), 0u);
 }
 
-TEST_P(ValenceCoderTest, OpenGridRoundTripsThroughItsDummy) {
+TEST(ValenceCoderTest, OpenGridRoundTripsThroughItsDummy) {
   const Mesh grid = testing_util::grid(7, 5);
-  EXPECT_GT(round_trip(grid.num_vertices(), grid.triangles, GetParam()), 0u);
+  EXPECT_GT(round_trip(grid.num_vertices(), grid.triangles), 0u);
 }
 
-TEST_P(ValenceCoderTest, RegularMeshCostsLittle) {
+TEST(ValenceCoderTest, RegularMeshCostsLittle) {
   // A 40 x 40 torus: every valence is 6, so the stream costs under a bit
   // per vertex (an index list would take about 6 log2(n) = 64).
   const Mesh torus = testing_util::torus(40, 40);
-  const size_t bytes = round_trip(torus.num_vertices(), torus.triangles, GetParam());
+  const size_t bytes = round_trip(torus.num_vertices(), torus.triangles);
   EXPECT_LT(bytes * 8, static_cast<size_t>(torus.num_vertices())) << bytes << " bytes";
 }
 
-TEST_P(ValenceCoderTest, PinchesCutsAndSeveralComponentsRoundTrip) {
-  const int version = GetParam();
+TEST(ValenceCoderTest, PinchesCutsAndSeveralComponentsRoundTrip) {
   const std::vector<int32_t> pinched = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3, 0, 5, 4, 0, 4, 6, 0, 6, 5, 4, 5, 6};
-  round_trip(7, pinched, version);
-  round_trip(5, {0, 1, 2, 1, 0, 3, 0, 1, 4}, version);   // three pages on one edge
-  round_trip(4, {0, 1, 2, 0, 1, 3}, version);            // disagreeing orientations
-  round_trip(4, {0, 1, 2, 1, 0, 2}, version);            // a two-triangle pillow
-  round_trip(3, {0, 1, 2}, version);                     // one triangle
+  round_trip(7, pinched);
+  round_trip(5, {0, 1, 2, 1, 0, 3, 0, 1, 4});   // three pages on one edge
+  round_trip(4, {0, 1, 2, 0, 1, 3});            // disagreeing orientations
+  round_trip(4, {0, 1, 2, 1, 0, 2});            // a two-triangle pillow
+  round_trip(3, {0, 1, 2});                     // one triangle
 }
 
-TEST_P(ValenceCoderTest, ProperSoupsRoundTrip) {
+TEST(ValenceCoderTest, ProperSoupsRoundTrip) {
   // Soups without degenerate triangles cut into many pinched, handled,
   // many-boundaried pieces: every event of the traversal occurs.
   std::mt19937 rng(7);
   for (int trial = 0; trial < 300 && !HasFailure(); ++trial) {
     int32_t n = 0;
     const std::vector<int32_t> t = testing_util::random_soup(&rng, 3, 40, 80, true, &n);
-    round_trip(n, t, GetParam());
+    round_trip(n, t);
     if (HasFailure()) ADD_FAILURE() << "trial " << trial;
   }
 }
 
-TEST_P(ValenceCoderTest, GarbageNeverCrashes) {
+TEST(ValenceCoderTest, GarbageNeverCrashes) {
   std::mt19937 rng(5);
   for (int trial = 0; trial < 2000; ++trial) {
     std::vector<uint8_t> bytes(1 + rng() % 64);
     for (uint8_t& b : bytes) b = static_cast<uint8_t>(rng());
     RangeDecoder dec(bytes.data(), bytes.size());
     DecodedConnectivity out;
-    const Status s = decode_valences(&dec, 100, 200, &out, GetParam());
+    const Status s = decode_valences(&dec, 100, 200, &out);
     if (s.ok()) {
       EXPECT_LE(out.num_vertices, 100);
       EXPECT_LE(out.triangles.size(), 600u);
     }
-  }
-}
-
-INSTANTIATE_TEST_SUITE_P(Versions, ValenceCoderTest, ::testing::Range(1, kValenceCoderLatest + 1));
-
-TEST(ValenceCoderVersionTest, UnknownVersionsAreParseErrors) {
-  const std::vector<uint8_t> bytes(16, 0);
-  for (int version : {0, -1, kValenceCoderLatest + 1}) {
-    RangeDecoder dec(bytes.data(), bytes.size());
-    DecodedConnectivity out;
-    const Status s = decode_valences(&dec, 100, 200, &out, version);
-    EXPECT_EQ(s.code(), StatusCode::kParseError);
-    EXPECT_EQ(s.message(), "connectivity: unknown valence coder version " + std::to_string(version));
   }
 }
 

@@ -3,6 +3,7 @@
 // a crash, a hang or a huge allocation (ASan/UBSan builds run this too).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cmath>
 #include <string>
@@ -18,6 +19,13 @@
 
 namespace gab {
 namespace {
+
+// The size of a file's header (its counts are varints).
+size_t header_size(const std::vector<uint8_t>& file) {
+  GabFileInfo info;
+  EXPECT_TRUE(read_gab_info(file.data(), file.size(), &info).ok());
+  return info.header_bytes;
+}
 
 std::vector<uint8_t> small_file(bool geometry_only, bool refine = false,
                                 FileLayout layout = FileLayout::kLevels, bool reorder = false,
@@ -92,8 +100,7 @@ TEST(FileSafety, EveryByteFlipIsAnErrorOrAValidMesh) {
 TEST(FileSafety, DamageInsideAConnectivityBlockIsAnErrorOrAValidMesh) {
   // Every byte of the connectivity block flipped with the block's checksum
   // made whole again, so the damage reaches the decoders: the variants the
-  // encoder writes (order kept, reordered) and, from the golden seeds, the
-  // ones it no longer writes (the triangle list, the first valence section).
+  // encoder writes (order kept, reordered), and two golden seeds.
   const std::string here = __FILE__;  // .../tests/codec/pipeline/file_safety_test.cpp
   const std::string corpus = here.substr(0, here.rfind("/codec/")) + "/fuzz/corpus/gab/";
   std::vector<std::pair<std::string, std::vector<uint8_t>>> files = {
@@ -107,7 +114,7 @@ TEST(FileSafety, DamageInsideAConnectivityBlockIsAnErrorOrAValidMesh) {
     // Frames after the header: the connectivity block, and with the order
     // kept the vertex order's block.
     const int frames = name == "order kept" ? 2 : 1;
-    size_t begin = kGabHeaderBytes;
+    size_t begin = header_size(file);
     for (int frame = 0; frame < frames; ++frame) {
       const size_t length = file[begin] | (file[begin + 1] << 8) | (file[begin + 2] << 16);
       const size_t payload = begin + 8;
@@ -176,7 +183,7 @@ TEST(FileSafety, ForgedPayloadsWithValidChecksumsAreErrorsOrValidMeshes) {
     const std::vector<uint8_t> file = small_file(false, variant < 2, layout, false, variant == 2);
     GabFileInfo info;
     ASSERT_TRUE(read_gab_info(file.data(), file.size(), &info).ok());
-    size_t at = kGabHeaderBytes + info.connectivity_bytes;  // the first chunk's frame
+    size_t at = info.header_bytes + info.connectivity_bytes;  // the frames after the connectivity block
     int errors = 0, forged = 0;
     while (at + kGabFrameBytes <= file.size()) {
       const size_t length = file[at] | file[at + 1] << 8 | file[at + 2] << 16 | static_cast<size_t>(file[at + 3]) << 24;
@@ -217,12 +224,19 @@ TEST(FileSafety, HeaderErrorsNameTheProblem) {
   EXPECT_EQ(message(bad), "not a .gab file (bad magic)");
   bad = file;
   bad[8] = 9;
-  EXPECT_EQ(message(bad), "unsupported .gab version 9 (this build reads version 1)");
+  EXPECT_EQ(message(bad), "unsupported .gab version 9 (this build reads version 2)");
+  // The first version's files (a different header and connectivity coders)
+  // are not read: the message names the version.
+  bad[8] = 1;
+  const Status first = decode_mesh(bad.data(), bad.size(), DecodeOptions(), &out, &ds);
+  EXPECT_EQ(first.code(), StatusCode::kUnsupported);
+  EXPECT_EQ(first.message(), "unsupported .gab version 1 (this build reads version 2; re-encode the mesh)");
   // A newer writer's flag, with the header's checksum made whole again: a
   // well-formed file this build cannot read, not a corrupt one.
-  const auto with_header_crc = [](std::vector<uint8_t> f) {
-    const uint32_t crc = crc32(f.data(), kGabHeaderBytes - 4);
-    for (int b = 0; b < 4; ++b) f[kGabHeaderBytes - 4 + b] = static_cast<uint8_t>(crc >> (8 * b));
+  const size_t header = header_size(file);
+  const auto with_header_crc = [header](std::vector<uint8_t> f) {
+    const uint32_t crc = crc32(f.data(), header - 4);
+    for (int b = 0; b < 4; ++b) f[header - 4 + b] = static_cast<uint8_t>(crc >> (8 * b));
     return f;
   };
   bad = file;
@@ -232,24 +246,33 @@ TEST(FileSafety, HeaderErrorsNameTheProblem) {
   EXPECT_EQ(unknown_flag.code(), StatusCode::kUnsupported);
   char flags[8];
   std::snprintf(flags, sizeof flags, "0x%02x", bad[9]);
-  EXPECT_EQ(unknown_flag.message(), "unsupported .gab flags " + std::string(flags) + " (this build knows 0x3f)");
-  // A newer writer's ordering (header byte 11).
+  EXPECT_EQ(unknown_flag.message(), "unsupported .gab flags " + std::string(flags) + " (this build knows 0x1f)");
+  // A newer writer's ordering (byte 11) or reconstruction operator (byte
+  // 12), or a use of the reserved byte (13): unsupported, not corrupt.
+  const struct {
+    size_t at;
+    uint8_t value;
+    const char* message;
+  } newer[] = {
+      {11, 2, "unsupported .gab ordering 2 (this build knows 0: amd, 1: nd)"},
+      {12, 1, "unsupported .gab reconstruction operator 1 (this build knows 0: global least squares)"},
+      {13, 7, "unsupported .gab header: reserved byte 13 is 0x07"},
+  };
+  for (const auto& n : newer) {
+    bad = file;
+    bad[n.at] = n.value;
+    bad = with_header_crc(bad);
+    const Status s = decode_mesh(bad.data(), bad.size(), DecodeOptions(), &out, &ds);
+    EXPECT_EQ(s.code(), StatusCode::kUnsupported) << n.at;
+    EXPECT_EQ(s.message(), n.message);
+  }
   bad = file;
-  bad[11] = 2;
-  bad = with_header_crc(bad);
-  const Status unknown_ordering = decode_mesh(bad.data(), bad.size(), DecodeOptions(), &out, &ds);
-  EXPECT_EQ(unknown_ordering.code(), StatusCode::kUnsupported);
-  EXPECT_EQ(unknown_ordering.message(), "unsupported .gab ordering 2 (this build knows 0: amd, 1: nd)");
-  bad = file;
-  bad[8] = 9;
-  EXPECT_EQ(decode_mesh(bad.data(), bad.size(), DecodeOptions(), &out, &ds).code(), StatusCode::kUnsupported);
-  bad = file;
-  bad[20] ^= 1;  // inside the weight
+  bad[24] ^= 1;  // inside the weight
   EXPECT_EQ(message(bad), "bad .gab header: checksum mismatch (the header is corrupt)");
   EXPECT_EQ(message(std::vector<uint8_t>(file.begin(), file.begin() + 30)),
             "bad .gab header: file ends inside the header");
   bad = file;
-  bad[kGabHeaderBytes + 9] ^= 4;  // inside the connectivity block
+  bad[header + 9] ^= 4;  // inside the connectivity block
   EXPECT_EQ(message(bad), "connectivity block is corrupt (checksum mismatch)");
   bad = file;
   bad[bad.size() - 1] ^= 4;  // inside the last chunk
@@ -259,6 +282,48 @@ TEST(FileSafety, HeaderErrorsNameTheProblem) {
   bad = file;
   bad.push_back(0);
   EXPECT_EQ(message(bad), "trailing bytes after the last chunk");
+}
+
+// Sections after the geometry (gab_format.h): a kind this build does not
+// know is skipped unless the section is required.
+TEST(FileSafety, UnknownSectionsAreSkippedUnlessRequired) {
+  const std::vector<uint8_t> file = small_file(false);
+  Mesh plain, out;
+  DecodeStats ds;
+  ASSERT_TRUE(decode_mesh(file.data(), file.size(), DecodeOptions(), &plain, &ds).ok());
+  const auto with_section = [&](uint8_t flags) {
+    // The same file with a section count of 1 (a one-byte varint before the
+    // header's CRC, as the 0 it replaces) and a section at the end.
+    std::vector<uint8_t> f = file;
+    const size_t header = header_size(file);
+    f[header - 5] = 1;
+    const uint32_t crc = crc32(f.data(), header - 4);
+    for (int b = 0; b < 4; ++b) f[header - 4 + b] = static_cast<uint8_t>(crc >> (8 * b));
+    ByteWriter w;
+    const uint8_t payload[] = {200, flags, 1, 2, 3};
+    write_framed(payload, sizeof payload, &w);
+    f.insert(f.end(), w.data().begin(), w.data().end());
+    return f;
+  };
+  std::vector<uint8_t> optional = with_section(0);
+  Status s = decode_mesh(optional.data(), optional.size(), DecodeOptions(), &out, &ds);
+  ASSERT_TRUE(s.ok()) << s.message();
+  EXPECT_EQ(ds.skipped_sections, 1);
+  EXPECT_EQ(out.positions, plain.positions);
+  GabFileInfo info;
+  ASSERT_TRUE(read_gab_info(optional.data(), optional.size(), &info).ok());
+  EXPECT_EQ(info.sections, 1);
+  std::vector<uint8_t> required = with_section(kGabSectionRequired);
+  s = decode_mesh(required.data(), required.size(), DecodeOptions(), &out, &ds);
+  EXPECT_EQ(s.code(), StatusCode::kUnsupported);
+  EXPECT_EQ(s.message(), "section 0 is of kind 200, which this build does not know and the file requires");
+  optional.back() ^= 1;
+  EXPECT_EQ(decode_mesh(optional.data(), optional.size(), DecodeOptions(), &out, &ds).message(),
+            "section 0 is corrupt (checksum mismatch)");
+  optional = with_section(0);
+  optional.push_back(0);
+  EXPECT_EQ(decode_mesh(optional.data(), optional.size(), DecodeOptions(), &out, &ds).message(),
+            "trailing bytes after the last section");
 }
 
 TEST(FileSafety, ForgedCountsCannotForceHugeAllocations) {
@@ -275,6 +340,45 @@ TEST(FileSafety, ForgedCountsCannotForceHugeAllocations) {
   DecodeStats ds;
   EXPECT_EQ(decode_mesh(forged.data(), forged.size(), DecodeOptions(), &out, &ds).message(),
             "bad .gab header: vertex count is implausible for a file of this size");
+
+  // A real file whose header (checksum made whole) declares 100M
+  // triangles: refused against the connectivity block's size before the
+  // block is decoded.
+  const std::vector<uint8_t> file = small_file(false);
+  ByteReader in(file.data(), file.size());
+  ASSERT_TRUE(read_gab_header(&in, file.size(), &h).ok());
+  const size_t rest = in.offset();
+  h.num_triangles = 100000000;
+  h.num_vertices = std::min<int32_t>(h.num_vertices, 1000);
+  ByteWriter rewritten;
+  write_gab_header(h, &rewritten);
+  forged = rewritten.take();
+  forged.insert(forged.end(), file.begin() + static_cast<std::ptrdiff_t>(rest), file.end());
+  GabFileInfo info;
+  ASSERT_TRUE(read_gab_info(file.data(), file.size(), &info).ok());
+  const size_t block = info.connectivity_bytes - kGabFrameBytes;
+  const Status s = decode_mesh(forged.data(), forged.size(), DecodeOptions(), &out, &ds);
+  EXPECT_EQ(s.code(), StatusCode::kParseError);
+  EXPECT_EQ(s.message(), "connectivity block: connectivity: the header's 100000000 triangles are more than a block of " +
+                             std::to_string(block) + " bytes can describe");
+}
+
+TEST(FileSafety, HeaderCountsAreMinimal32BitVarints) {
+  const std::vector<uint8_t> file = small_file(false);
+  Mesh out;
+  DecodeStats ds;
+  // n is the varint at byte 14; a padded (non-minimal) form of it, or one
+  // of more than 32 bits, is refused before the checksum is read.
+  for (const std::vector<uint8_t>& n : {std::vector<uint8_t>{0x80, 0x80, 0x80, 0x80, 0x80, 0x01},
+                                       std::vector<uint8_t>{0xff, 0xff, 0xff, 0xff, 0x7f}}) {
+    size_t end = 14;
+    while (file[end] & 0x80) ++end;
+    std::vector<uint8_t> bad(file.begin(), file.begin() + 14);
+    bad.insert(bad.end(), n.begin(), n.end());
+    bad.insert(bad.end(), file.begin() + static_cast<std::ptrdiff_t>(end + 1), file.end());
+    EXPECT_EQ(decode_mesh(bad.data(), bad.size(), DecodeOptions(), &out, &ds).message(),
+              "bad .gab header: a count in the header is not a minimal 32-bit varint");
+  }
 }
 
 }  // namespace

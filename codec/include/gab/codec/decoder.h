@@ -49,7 +49,7 @@ struct DecodeStats {
   int32_t chunks = 0, chunks_in_file = 0;
   bool truncated = false;  // the file ended inside a chunk: the shape is of the complete ones
   bool refined = false;    // the refinement chunk was applied (whole anchor set, complete file)
-  bool detail = false;     // the detail chunk was applied (gab_format.h, flag bit 5)
+  bool detail = false;     // the detail chunk was applied (gab_format.h, kGabFlagDetail)
   int bits = 0;
   double weight = 0;
   bool geometry_only = false;
@@ -58,6 +58,7 @@ struct DecodeStats {
   double connectivity_s = 0;  // decoding the connectivity section
   double detail_s = 0;        // decoding the detail chunk (part of decode_s)
   int32_t refactorizations = 0;  // chunks added by refactoring rather than updates
+  int32_t skipped_sections = 0;  // trailing sections of kinds this build does not know (gab_format.h)
   MatrixOrdering ordering = MatrixOrdering::kAmd;  // the factorization's ordering (never kAuto)
 };
 
@@ -66,6 +67,8 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
 
 struct GabFileInfo {
   int version = 0;
+  int reconstruction = 0;  // the reconstruction operator (gab_format.h, header byte 12)
+  int32_t sections = 0;    // framed sections after the geometry chunks
   int32_t num_vertices = 0, num_triangles = 0;
   int bits = 0;
   double weight = 0;
@@ -75,16 +78,16 @@ struct GabFileInfo {
   int32_t anchors = 0, chunks = 0;  // as the header declares (chunks: the refinement and detail included)
   int32_t chunks_present = 0;       // complete chunks with a valid checksum
   bool refined = false;             // the last chunk is a refinement (not counted below)
-  bool levels = false;              // the level layout (gab_format.h, flag bit 2)
-  bool reordered = false;           // traversal numbering, no vertex order (flag bit 3)
-  bool versioned_valence = false;   // a versioned valence section (flag bit 4)
+  bool levels = false;              // the level layout (gab_format.h, kGabFlagLevels)
+  bool reordered = false;           // traversal numbering, no vertex order (kGabFlagReordered)
   size_t refinement_bytes = 0;      // its framed size when present
-  bool detail = false;              // the last chunk is the detail layer (flag bit 5; not counted below)
+  bool detail = false;              // the last chunk is the detail layer (kGabFlagDetail; not counted below)
   size_t detail_bytes = 0;          // its framed size when present
   double detail_step = 0;           // its quantization step (in the mesh's units) when present
   MatrixOrdering ordering = MatrixOrdering::kAmd;  // the encoder's factorizations' (header byte 11)
   bool truncated = false;
   size_t bytes = 0, connectivity_bytes = 0, geometry_bytes = 0;
+  size_t header_bytes = 0;             // the header's size (its counts are varints)
   size_t order_bytes = 0;              // the vertex order block with its framing (0 without)
   std::vector<size_t> chunk_bytes;     // framed size of each complete anchor chunk
   std::vector<int32_t> chunk_anchors;  // anchors each complete anchor chunk declares

@@ -33,11 +33,11 @@ Status encode_mesh(Mesh&& mesh, const EncodeOptions& options, std::vector<uint8_
 // How a file arranges its anchor chunks (gab_format.h).
 enum class FileLayout {
   kSmaller,         // both below, keeping the levels unless selection order codes smaller
-  kLevels,          // flag bit 2: chunk 0 codes the anchor set once; the decoder orders it into levels
+  kLevels,          // kGabFlagLevels: chunk 0 codes the anchor set once; the decoder orders it into levels
   kSelectionOrder,  // the first layout: each chunk its anchors as a subset of the vertices still free
 };
 
-// The detail layer (gab_format.h, flag bit 5): after the anchors, every
+// The detail layer (gab_format.h, kGabFlagDetail): after the anchors, every
 // vertex coded as a small residual from a prediction, which is what keeps
 // files small at low error targets (below about 3e-4) and meets any target.
 enum class DetailMode {
