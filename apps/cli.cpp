@@ -8,7 +8,7 @@
 #include <thread>
 
 #include "commands.h"
-#include "gab/sparse/factor_schedule.h"
+#include "gab/sparse/symbolic.h"
 
 namespace gab {
 namespace cli {

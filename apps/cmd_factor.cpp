@@ -9,8 +9,6 @@
 #include "commands.h"
 #include "gab/sparse/amd.h"
 #include "gab/sparse/cholesky.h"
-#include "gab/sparse/dense_kernels.h"
-#include "gab/sparse/factor_schedule.h"
 #include "gab/sparse/nested_dissection.h"
 
 namespace gab {
@@ -113,7 +111,7 @@ int run_factor(int argc, char** argv) {
   out.add("residual", residual);
   out.add("ordering", ordering_name);
   out.add("stored_L", f.stored_L);
-  out.add("simd", std::string(simd_level_name(dense_kernels().level)));
+  out.add("simd", std::string(chol.simd_level()));
   out.add("repeat", repeat);
   out.add("threads", threads);
   if (json) {
@@ -126,7 +124,7 @@ int run_factor(int argc, char** argv) {
                 "solve x3 %.4f s\n",
                 median(order_s), median(symbolic_s), factor_median,
                 factor_median > 0 ? f.flops / factor_median * 1e-9 : 0.0,
-                simd_level_name(dense_kernels().level), static_cast<long long>(threads),
+                chol.simd_level(), static_cast<long long>(threads),
                 threads == 1 ? "" : "s", median(solve_s));
     std::printf("relative residual %.3g (median of %lld runs)\n", residual, static_cast<long long>(repeat));
   }

@@ -23,7 +23,6 @@
 #include "gab/mesh/file_io.h"
 #include "gab/mesh/normal_matrix.h"
 #include "gab/sparse/cholesky.h"
-#include "gab/sparse/factor_schedule.h"
 #include "gab/sparse/nested_dissection.h"
 #include "svg_plot.h"
 

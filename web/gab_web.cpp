@@ -3,10 +3,9 @@
 //
 // The page receives a .gab file as a stream. It copies the bytes into the
 // buffer gab_web_buffer() hands out, asks gab_web_frames() how many chunks
-// are complete (the framing of gab_format.h: a header of 63-83 bytes, the
-// connectivity section, then one frame per chunk, u32 length + u32 CRC-32 +
-// payload), and calls gab_web_decode() on a prefix each time another chunk
-// has arrived. Each call decodes that prefix from the start: the decoder
+// are complete (gab::find_gab_chunk_ends), and calls gab_web_decode() on a
+// prefix each time another chunk has arrived. Each call decodes that
+// prefix from the start: the decoder
 // keeps no state between calls (a prefix of whole chunks is a valid file,
 // so this needs nothing new from the codec; the cost is one whole decode
 // per level shown, and the page skips levels that were overtaken while it
@@ -19,12 +18,10 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
-#include "container/byte_io.h"
-#include "container/gab_header.h"
 #include "gab/codec/decoder.h"
-#include "gab/codec/gab_format.h"
 
 #if defined(__EMSCRIPTEN__)
 #include <emscripten/emscripten.h>
@@ -61,14 +58,6 @@ int fail(const gab::Status& status) {
   return -2;
 }
 
-// Skips one frame (u32 length, u32 CRC-32, payload) without checking its
-// CRC (the decoder does); false when the bytes end inside it.
-bool skip_frame(gab::ByteReader* in) {
-  uint32_t length = 0, crc = 0;
-  const uint8_t* payload = nullptr;
-  return in->u32(&length) && in->u32(&crc) && in->bytes(length, &payload);
-}
-
 }  // namespace
 
 // A buffer of at least `capacity` bytes holding the bytes given so far
@@ -87,24 +76,11 @@ GAB_WEB_EXPORT int32_t gab_web_frames(size_t size) {
   WebState& s = state();
   s.chunk_ends.clear();
   if (size > s.input.size()) size = s.input.size();
-  // The header's counts are varints: wait for the longest header (a whole
-  // file is always longer: the connectivity and chunk 0 follow it).
-  if (size < gab::kGabMaxHeaderBytes) return -1;
-  gab::ByteReader in(s.input.data(), size);
-  gab::GabHeader header;
-  const gab::Status status = gab::read_gab_header(&in, size, &header);
+  gab::GabStreamFrames frames;
+  const gab::Status status = gab::find_gab_chunk_ends(s.input.data(), size, &frames);
   if (!status.ok()) return fail(status);
-  // The connectivity section (gab_format.h): a hash, or one or two frames.
-  if (header.geometry_only()) {
-    uint64_t hash = 0;
-    if (!in.u64(&hash)) return -1;
-  } else {
-    if (!skip_frame(&in)) return -1;
-    if (header.keeps_coded_order() && !skip_frame(&in)) return -1;
-  }
-  while (static_cast<int32_t>(s.chunk_ends.size()) < header.chunks && skip_frame(&in)) {
-    s.chunk_ends.push_back(in.offset());
-  }
+  if (!frames.head_complete) return -1;
+  s.chunk_ends = std::move(frames.chunk_ends);
   return static_cast<int32_t>(s.chunk_ends.size());
 }
 

@@ -7,7 +7,7 @@
 
 #include "boundary.h"
 #include "gab/codec/encoder.h"
-#include "gab/sparse/factor_schedule.h"
+#include "gab/sparse/symbolic.h"
 
 namespace gab {
 namespace capi {

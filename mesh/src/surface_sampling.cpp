@@ -7,10 +7,17 @@
 #include "gab/mesh/surface_sampling.h"
 
 #include <cmath>
-
-#include "gab/sparse/splitmix64.h"
+#include <random>
 
 namespace gab {
+namespace {
+
+// Uniform in [0, 1) from 53 of the generator's bits. std::mt19937_64's
+// sequence is fixed by the standard (unlike <random>'s distributions), so
+// the samples are the same on every platform.
+double uniform01(std::mt19937_64* rng) { return static_cast<double>((*rng)() >> 11) * (1.0 / 9007199254740992.0); }
+
+}  // namespace
 
 std::vector<double> triangle_areas(const Mesh& mesh) {
   const int32_t nt = mesh.num_triangles();
@@ -36,17 +43,17 @@ std::vector<double> sample_surface(const Mesh& mesh, int64_t count, uint64_t see
   if (count <= 0 || !(total > 0)) return points;
   points.reserve(static_cast<size_t>(count) * 3);
   if (triangle_of != nullptr) triangle_of->reserve(static_cast<size_t>(count));
-  SplitMix64 rng(seed);
+  std::mt19937_64 rng(seed);
   const int32_t nt = mesh.num_triangles();
   int32_t last = nt - 1;  // the last triangle with area: rounding must not leave us on a later, empty one
   while (area[last] == 0) --last;
   int32_t t = 0;
   double below = 0;  // area of triangles before t
   for (int64_t j = 0; j < count; ++j) {
-    const double target = (static_cast<double>(j) + rng.uniform()) / static_cast<double>(count) * total;
+    const double target = (static_cast<double>(j) + uniform01(&rng)) / static_cast<double>(count) * total;
     // Targets increase with j, so the triangle cursor only moves forward.
     while (t < last && (below + area[t] <= target || area[t] == 0)) below += area[t++];
-    const double r1 = std::sqrt(rng.uniform()), r2 = rng.uniform();
+    const double r1 = std::sqrt(uniform01(&rng)), r2 = uniform01(&rng);
     const double wa = 1 - r1, wb = r1 * (1 - r2), wc = r1 * r2;
     const double* a = &mesh.positions[3 * static_cast<size_t>(mesh.triangles[3 * static_cast<size_t>(t)])];
     const double* b = &mesh.positions[3 * static_cast<size_t>(mesh.triangles[3 * static_cast<size_t>(t) + 1])];

@@ -13,7 +13,6 @@
 #include <set>
 #include <vector>
 
-#include "gab/sparse/disjoint_set.h"
 #include "mesh_test_util.h"
 
 namespace gab {
@@ -61,17 +60,23 @@ void expect_valid_cut(int32_t n, const std::vector<int32_t>& input, const Manifo
   // every vertex index below num_vertices that has a corner is used.
   std::vector<int32_t> fan(static_cast<size_t>(corners));
   for (int32_t c = 0; c < corners; ++c) fan[c] = c;
+  // The fan's representative: a plain walk up the links (the engine's
+  // union-find is its own; a test mesh is small).
+  const auto fan_root = [&fan](int32_t c) {
+    while (fan[c] != c) c = fan[c];
+    return c;
+  };
   for (int32_t c = 0; c < corners; ++c) {
-    if (cut.opposite[c] >= 0) fan[find_set_root(&fan, c)] = find_set_root(&fan, next_corner(cut.opposite[c]));
+    if (cut.opposite[c] >= 0) fan[fan_root(c)] = fan_root(next_corner(cut.opposite[c]));
   }
   std::map<int32_t, int32_t> fan_of_vertex;
   for (int32_t c = 0; c < corners; ++c) {
     const int32_t v = cut.triangles[c];
     ASSERT_GE(v, 0);
     ASSERT_LT(v, cut.num_vertices);
-    const int32_t root = find_set_root(&fan, c);
+    const int32_t root = fan_root(c);
     const auto it = fan_of_vertex.emplace(v, root).first;
-    EXPECT_EQ(find_set_root(&fan, it->second), root) << "vertex " << v << " has two fans";
+    EXPECT_EQ(fan_root(it->second), root) << "vertex " << v << " has two fans";
   }
   for (size_t k = 0; k < cut.copy_of.size(); ++k) EXPECT_TRUE(fan_of_vertex.count(n + static_cast<int32_t>(k)));
 }

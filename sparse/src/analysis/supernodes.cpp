@@ -72,6 +72,10 @@ std::vector<int32_t> relax_supernodes(const std::vector<int32_t>& first_col,
   return merged;
 }
 
+// AnalyzeOptions' panel defaults (64 columns, at most 4 panels), measured
+// at a 2.4M-vertex mesh: 3.94 -> 3.72 GB of factor with 4 panels, 3.69 GB
+// with 8, whose extra passes over large update matrices made the
+// factorization ~15% slower; 4 was as fast as no chains.
 std::vector<int32_t> split_wide_supernodes(const std::vector<int32_t>& first_col, int32_t panel_cols,
                                            int32_t max_panels, std::vector<uint8_t>* continued) {
   std::vector<int32_t> cut;

@@ -46,6 +46,11 @@ Cholesky::Cholesky() : state_(new State) {}
 Cholesky::~Cholesky() = default;
 
 void Cholesky::set_kernels(const DenseKernels& kernels) { state_->kernels = &kernels; }
+
+const char* Cholesky::simd_level() const {
+  const DenseKernels* kernels = state_->kernels != nullptr ? state_->kernels : &dense_kernels();
+  return simd_level_name(kernels->level);
+}
 bool Cholesky::factorized() const { return state_->factorized; }
 const SymbolicFactor& Cholesky::symbolic() const { return state_->symbolic; }
 const FactorSchedule& Cholesky::schedule() const { return state_->schedule; }

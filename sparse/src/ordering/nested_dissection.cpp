@@ -12,6 +12,27 @@
 //
 // The recursion records the separator tree: a node per separator (and per
 // AMD leaf), its columns, its subtree's columns and its parent.
+//
+// Why NestedDissectionOptions' defaults (flops are the factor's, means over
+// igea, horse, nefertiti and bunny unless said; bench/bench_ordering.cpp):
+// * leaf_size 600: against 300 with plain AMD on the leaves, with the halo
+//   300 gave -1.6% flops (+13% ordering time), 450 -1.0% (+3%), 600 -0.3%
+//   (-5%), 1200 +1.9% (-15%).
+// * initial_tries 4 against 6 (with candidates 3 against 4), 12 seeds:
+//   igea +0.7%, horse -1.1%, nefertiti +1.1%, ordering ~10% faster.
+// * refine_passes 2 one-sided pairs: the flops of 6 in 10% fewer
+//   instructions; 1 pair +4% flops. Two-sided refinement did best with 6
+//   passes, and one-sided passes give 10% fewer flops than it.
+// * polish_from 2000, 8 seeds: -1.3% flops for no measurable time; from 500
+//   -1.5% for 8% more time; every graph -0.5% (4 seeds).
+// * candidates 1: with several runs, the best of initial_tries does as well
+//   as 3 below large_size, for less time.
+// * large_candidates 2: with 5 runs and AMD leaves, 8 against 4 gave -0.4%,
+//   -1.5%, -2.8% flops on igea, horse and nefertiti (8 seeds); with 3 runs
+//   and halo leaves, 2 against 8 gave +0.45% flops (within the seeds' noise)
+//   for 14% less ordering time.
+// * runs 3 (was 5): the same measurement as large_candidates.
+// * thread_entries 2^20: about 20 ms of contraction work on one thread.
 #include "gab/sparse/nested_dissection.h"
 
 #include <algorithm>

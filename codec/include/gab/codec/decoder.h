@@ -97,4 +97,18 @@ struct GabFileInfo {
 // without decoding anything. O(file size).
 Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info);
 
+// Where a file still arriving can be cut: for its first `size` bytes, the
+// offset just past each chunk (of every kind, in file order) that has fully
+// arrived. Each such prefix decodes on its own (decode_mesh), a coarser shape.
+struct GabStreamFrames {
+  bool head_complete = false;     // the header and the connectivity section have arrived
+  int32_t chunks_in_file = 0;     // as the header declares (0 until it has arrived)
+  std::vector<size_t> chunk_ends;  // byte offset just past each complete chunk
+};
+
+// Fills *frames from the header and the frames' lengths, without checking
+// the checksums (decode_mesh does). kParseError / kUnsupported for a bad
+// header, as decode_mesh. O(chunks).
+Status find_gab_chunk_ends(const uint8_t* data, size_t size, GabStreamFrames* frames);
+
 }  // namespace gab

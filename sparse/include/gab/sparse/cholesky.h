@@ -46,7 +46,7 @@ class Cholesky {
   // The same with only the values: the count values of the analyzed
   // matrix's lower triangle, in the order of its entries (its values
   // array). For a caller that refactors with new values and need not keep
-  // the pattern (at a 2.4M-vertex mesh, 0.1 GB of row indices).
+  // the pattern (its row indices are not read).
   Status factorize_values(const double* values, int64_t count);
   // Solves A X = B in place: b is n x nrhs column-major, leading dimension
   // ldb >= n, in the original numbering. Requires a successful factorize().
@@ -74,6 +74,9 @@ class Cholesky {
 
   // The kernels of another SIMD level than the best one (tests compare them).
   void set_kernels(const DenseKernels& kernels);
+  // The SIMD level of the kernels factorize() uses: "scalar", "avx2" or
+  // "avx512" (the best the CPU has, capped by the environment's GAB_SIMD).
+  const char* simd_level() const;
   bool factorized() const;
   const SymbolicFactor& symbolic() const;
   const FactorSchedule& schedule() const;        // the factorization's split (flops)

@@ -17,11 +17,14 @@
 
 namespace gab {
 
+// Threads a factorization, a solve or an ordering uses at most.
+constexpr int32_t kMaxFactorThreads = 64;
+
 enum class Ordering {
   kAmd,      // approximate minimum degree (amd.h)
   kNatural,  // identity, then postorder of the elimination tree
   kGiven,    // AnalyzeOptions::given_perm, then postorder
-  kNestedDissection,  // multilevel nested dissection, AMD on the leaves (issue 19's first step)
+  kNestedDissection,  // multilevel nested dissection (nested_dissection.h)
 };
 
 // Relaxed amalgamation (defaults as CHOLMOD's): merge a child supernode into
@@ -40,7 +43,7 @@ struct AnalyzeOptions {
   AmdOptions amd;                   // used when ordering == kAmd
   std::vector<int32_t> given_perm;  // used when ordering == kGiven
   RelaxOptions relax;
-  // Threads for numeric factorizations (Cholesky; see factor_schedule.h):
+  // Threads (1..kMaxFactorThreads) for numeric factorizations (Cholesky):
   // independent subtrees run concurrently; and for the nested-dissection
   // ordering, whose sides of a separator are dissected concurrently. The
   // permutation and the factor are bit-identical for every count; 1 runs
@@ -56,11 +59,7 @@ struct AnalyzeOptions {
   // block is its columns' rows only. A k-column block stores k (k - 1) / 2
   // unused entries above its diagonal; a chain of P panels about 1 / P of
   // them. The numeric factorization factors a chain as one front (no update
-  // matrix between its panels), each panel adding its part of the front's
-  // update matrix in turn. At the 2.4M-vertex mesh (bench/TUNING.md,
-  // "Factor storage"): 3.94 -> 3.72 GB of factor with 4 panels, 3.69 GB
-  // with 8, whose extra passes over large update matrices made the
-  // factorization ~15% slower; 4 was as fast as no chains. 0: no chains.
+  // matrix between its panels). 0: no chains.
   int32_t panel_cols = 64;
   int32_t max_panels = 4;
 };
@@ -87,9 +86,8 @@ struct SymbolicFactor {
   // Numeric assembly map: the entries of A's lower triangle (original
   // numbering) that land in supernode s are a_order[a_ptr[s] .. a_ptr[s+1]),
   // indices into A's values; the one at position q lands at offset a_dest[q]
-  // within s's block (values + value_ptr[s]). 32 bits: no block holds 2^31
-  // entries (analyze refuses one that would), and at a 2.4M-vertex mesh's
-  // 24M entries the halved map is 0.1 GB less at the factorization's peak.
+  // within s's block (values + value_ptr[s]). 32 bits: analyze refuses a
+  // block of 2^31 entries or more.
   std::vector<int64_t> a_ptr;
   std::vector<int32_t> a_order;  // indices into A's values
   std::vector<int32_t> a_dest;   // by position in a_order

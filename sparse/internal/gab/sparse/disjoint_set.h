@@ -1,7 +1,6 @@
 // Disjoint-set forests (internal): parent links where a root points at
-// itself. Used by the column counts (the etree's "ancestor" forest), by
-// relaxed amalgamation (groups of merged supernodes) and by the mesh layer's
-// manifold cut (the corner fans around a vertex).
+// itself. Used by the column counts (the etree's "ancestor" forest) and by
+// relaxed amalgamation (groups of merged supernodes).
 #pragma once
 
 #include <cstdint>

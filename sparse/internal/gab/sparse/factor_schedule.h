@@ -21,9 +21,6 @@
 
 namespace gab {
 
-// Threads a schedule uses at most.
-constexpr int32_t kMaxFactorThreads = 64;
-
 struct FactorSchedule {
   int32_t threads = 1;  // subtree groups that run concurrently
   // Supernodes by group, each group in increasing (post)order: groups

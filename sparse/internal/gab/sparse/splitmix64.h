@@ -1,7 +1,6 @@
 // SplitMix64 (Steele, Lea and Flood 2014): a tiny deterministic generator,
 // the same sequence on every platform (unlike <random>'s distributions), for
-// the nested dissection's matching order and the surface sampling of the
-// mesh layer.
+// the nested dissection's matching order and seeds.
 #pragma once
 
 #include <cstdint>

@@ -1,7 +1,7 @@
 // Nested-dissection ordering (George 1973) by multilevel vertex separators
 // (Karypis & Kumar 1998; Ashcraft & Liu's FM refinement of separators), with
-// the separator tree it builds kept as an explicit object: the update-cost
-// bound of issue 19 speaks of these separators.
+// the separator tree it builds kept as an explicit object, and the bound on
+// an update's cost that its separators give.
 #pragma once
 
 #include <cstdint>
@@ -12,80 +12,57 @@
 
 namespace gab {
 
+// The knobs of the dissection. The defaults are measured (the notes sit in
+// sparse/src/ordering/nested_dissection.cpp); a caller normally sets threads
+// only. Every field changes the permutation except threads, thread_size
+// and thread_entries.
 struct NestedDissectionOptions {
-  // Subgraphs with at most this many vertices are not dissected further but
-  // ordered by minimum degree with their halo (amd_graph.h). Mean flops over
-  // igea, horse, nefertiti and bunny, 4 seeds, against 300 with plain AMD on
-  // the leaves: 300 with the halo -1.6% (+13% ordering time), 450 -1.0%
-  // (+3%), 600 -0.3% (-5%), 1200 +1.9% (-15%) (bench/TUNING.md, "Nested
-  // dissection").
+  // Pieces of at most this many vertices are ordered by minimum degree with
+  // their halo (the separators around them) instead of being dissected.
   int32_t leaf_size = 600;
   // A row with more than max(16, dense * sqrt(n)) off-diagonal entries is
-  // removed before dissection and ordered last, as AmdOptions::dense does.
-  // Negative: no row is dense.
+  // ordered last, as AmdOptions::dense; negative: no row is dense.
   double dense = 10.0;
-  // Each side of a separator may weigh up to (1 + imbalance) / 2 of the
-  // vertices being dissected.
+  // Each side of a separator weighs at most (1 + imbalance) / 2 of the piece.
   double imbalance = 0.2;
   // Coarsening stops at this many vertices (or when matching stalls).
   int32_t coarsest_size = 120;
-  // Separators grown on the coarsest graph from different seeds; the best is
-  // kept. 4 against 6 (with candidates 3 against 4), mean flops over 12
-  // seeds: igea +0.7%, horse -1.1%, nefertiti +1.1%, ordering ~10% faster.
+  // Separators grown from different seeds on the coarsest graph; the best is kept.
   int32_t initial_tries = 4;
-  // FM passes per level, and moves without improvement before a pass gives
-  // up (one-sided: min(3 x separator, refine_patience), and 3x that).
-  // One-sided, refine_passes counts pairs of passes: 2 pairs gave the flops
-  // of 6 in 10% fewer instructions, 1 pair +4% flops. Two-sided
-  // refinement measured best with 6 passes.
+  // FM refinement per level: passes (pairs of passes when one-sided), and
+  // moves without improvement before a pass gives up.
   int32_t refine_passes = 2;
   int32_t refine_patience = 80;
   // One-sided FM passes (each moves vertices into one side, alternating)
-  // instead of two-sided ones: 10% fewer flops.
+  // instead of two-sided ones.
   bool one_sided_refinement = true;
   // Graphs of at least polish_from vertices end each refinement with one
-  // two-sided pass after the one-sided ones. Mean flops over 8 seeds
-  // (bench/TUNING.md): from 2,000 -1.3% for no measurable time, from 500
-  // -1.5% for 8% more, every graph -0.5% (4 seeds).
+  // two-sided pass.
   int32_t polish_from = 2000;
-  // Coarsest separators carried up to the finest level with at most
-  // trial_size vertices, where the smallest goes on and the others are
-  // dropped. With `runs` taking several coarsenings, 1 (the best of
-  // initial_tries) does as well as 3 below large_size, for less time.
+  // Coarsest separators carried up to the finest level, for graphs below
+  // large_size vertices and from it on; the smallest at trial_size vertices
+  // goes on. Each candidate is the best of candidate_tries tries.
   int32_t candidates = 1;
   int32_t trial_size = 2000;
-  // Graphs of at least large_size vertices (the top separators, which weigh
-  // most in the factor) carry large_candidates instead. With 5 runs and
-  // AMD leaves, 8 against 4 measured -0.4%, -1.5%, -2.8% flops on igea,
-  // horse and nefertiti (8 seeds); with 3 runs and halo leaves, 2 against 8
-  // measured +0.45% flops (within the seeds' noise) for 14% less ordering
-  // time (bench/TUNING.md, "Nested dissection").
   int32_t large_candidates = 2;
   int32_t large_size = 30000;
-  // Where several candidates are carried, they are the best distinct
-  // separators of candidate_tries tries per candidate on the coarsest graph.
   int32_t candidate_tries = 3;
-  // Graphs of at least runs_from vertices are coarsened `runs` times below
-  // a middle level (at most runs_levels coarsenings down, stopping at
-  // 1 / runs_ratio of the vertices), each run separated and refined up to
-  // it; the smallest separator there goes on. 3 (was 5): see
-  // large_candidates.
+  // Graphs of at least runs_from vertices are coarsened `runs` times below a
+  // middle level (at most runs_levels coarsenings, down to 1 / runs_ratio of
+  // the vertices); the smallest separator there goes on.
   int32_t runs = 3;
   int32_t runs_from = 5000;
   int32_t runs_levels = 4;
   int32_t runs_ratio = 30;
-  // Seed of the (self-contained, platform-independent) generators that order
-  // the matching's visits and pick seeds, one stream per piece derived from
-  // its parent's: the result depends on nothing else.
+  // Seed of the platform-independent generators (one stream per piece): the
+  // result depends on nothing else.
   uint64_t seed = 0x9E3779B97F4A7C15ull;
-  // Threads: a pool of this many workers; a separator whose two sides both
-  // have at least thread_size vertices hands one side to the pool as a task
-  // (an idle worker takes it, or the forking one after its other side). The
+  // A pool of this many workers dissects the two sides of a separator
+  // concurrently when both have thread_size vertices or more, and contracts
+  // graphs of thread_entries adjacency entries or more by halves. The
   // permutation and tree are the same for every thread count.
   int32_t threads = 1;
   int32_t thread_size = 4000;
-  // With threads > 1, a graph with at least this many adjacency entries
-  // hands half its contraction to the pool (about 20 ms of work on one).
   int64_t thread_entries = 1 << 20;
 };
 
@@ -129,7 +106,7 @@ Status nested_dissection_order_of_graph(const CscMatrix& graph, std::vector<int3
                                         const NestedDissectionOptions& options = {},
                                         SeparatorTree* tree = nullptr);
 
-// The separator bound on the cost of an update (issue 19), for every
+// The separator bound on the cost of an update, for every
 // original index j: an upper bound on the entries of L that adding a row with
 // one nonzero in column j touches, the nonzeros of L in the columns of the
 // elimination-tree path from j to the root, for the factor of the matrix the
