@@ -42,7 +42,7 @@ std::string help_text() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  gab::cli::tune_malloc(argv);
+  gab::cli::tune_malloc();
   if (argc < 2) {
     std::fputs(help_text().c_str(), stderr);
     return gab::cli::kExitUsage;

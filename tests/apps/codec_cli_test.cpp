@@ -225,7 +225,7 @@ TEST(CodecCliTest, ThreadCountChangesNeitherTheFileNorTheShape) {
   ASSERT_EQ(run_gab("decompress -i " + three + " -o " + b + " --threads 1",
                     "GLIBC_TUNABLES=glibc.malloc.hugetlb=0").exit_code, 0);
   EXPECT_EQ(read_all(a), read_all(b));
-  // A malloc setting of the user's own is kept (and the tool restarts once, not forever).
+  // A malloc setting of the user's own is kept (malloc_tuning.h leaves it alone).
   ASSERT_EQ(run_gab("decompress -i " + one + " -o " + b, "GLIBC_TUNABLES=glibc.malloc.mmap_threshold=131072").exit_code,
             0);
   EXPECT_EQ(read_all(a), read_all(b));

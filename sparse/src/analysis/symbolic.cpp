@@ -10,10 +10,8 @@
 
 #include <algorithm>
 #include <string>
-#if defined(__GLIBC__)  // defined once <string> has included <features.h>
-#include <malloc.h>
-#endif
 
+#include "analysis/heap_release_internal.h"
 #include "gab/sparse/amd.h"
 #include "gab/sparse/column_counts.h"
 #include "gab/sparse/nested_dissection.h"
@@ -24,24 +22,6 @@
 namespace gab {
 
 namespace {
-
-// Hands the heap's free pages back to the system after the dissection of a
-// large matrix (lower-triangle entries, ~800k mesh vertices up), which
-// allocates and frees graphs and coarsenings (2 GB at 2.4M vertices) just
-// before the factor is allocated in pages of its own (large_buffer.h):
-// glibc keeps the freed heap, and the process's peak was the two together
-// (2.4M-vertex decode: 5.56 -> 5.31 GB). Smaller ones keep it: the
-// analysis re-faults what was returned, and on igea that cost 0.1 s of a
-// 1.2 s decode. Only glibc has malloc_trim.
-void return_free_heap_memory(int64_t matrix_entries) {
-  constexpr int64_t kTrimFromEntries = int64_t{1} << 23;
-#if defined(__GLIBC__)
-  if (matrix_entries >= kTrimFromEntries) malloc_trim(0);
-#else
-  (void)matrix_entries;
-  (void)kTrimFromEntries;
-#endif
-}
 
 Status check_input(const CscMatrix& lower) {
   if (lower.nrows != lower.ncols) {
@@ -73,7 +53,7 @@ Status fill_reducing_order(const CscMatrix& lower, const CscMatrix& graph, const
       NestedDissectionOptions nd;
       nd.threads = options.threads;
       const Status status = nested_dissection_order_of_graph(graph, order, nd);
-      return_free_heap_memory(lower.nnz());
+      release_heap_after_ordering(lower.nnz());  // only when the host asked (heap_release.h)
       return status;
     }
     case Ordering::kNatural:
