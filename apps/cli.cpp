@@ -160,16 +160,66 @@ bool Args::get_threads(int32_t* value) {
   return true;
 }
 
-bool Args::get_matrix_ordering(MatrixOrdering* value) {
-  const std::string text = get("--ordering", "auto");
-  for (MatrixOrdering o : {MatrixOrdering::kAuto, MatrixOrdering::kAmd, MatrixOrdering::kNestedDissection}) {
-    if (text == matrix_ordering_name(o)) {
-      *value = o;
-      return true;
-    }
+const std::vector<Ordering> kCodecOrderings = {Ordering::kAuto, Ordering::kAmd, Ordering::kNestedDissection};
+const std::vector<Ordering> kBenchmarkOrderings = {Ordering::kAmd, Ordering::kNestedDissection, Ordering::kNatural};
+
+namespace {
+
+// "a, b or c".
+std::string name_list(const std::vector<Ordering>& orderings) {
+  std::string text;
+  for (size_t i = 0; i < orderings.size(); ++i) {
+    if (i > 0) text += i + 1 == orderings.size() ? " or " : ", ";
+    text += ordering_name(orderings[i]);
   }
-  error_ = "--ordering must be auto, amd or nd, got '" + text + "'";
+  return text;
+}
+
+// One name through the one parser (parse_ordering), then the command's list.
+bool parse_accepted(const std::string& name, const std::vector<Ordering>& accepted, Ordering* value) {
+  Ordering parsed;
+  if (!parse_ordering(name, &parsed)) return false;
+  if (std::find(accepted.begin(), accepted.end(), parsed) == accepted.end()) return false;
+  *value = parsed;
+  return true;
+}
+
+}  // namespace
+
+bool Args::get_ordering(const std::vector<Ordering>& accepted, Ordering fallback, Ordering* value) {
+  if (!has("--ordering")) {
+    *value = fallback;
+    return true;
+  }
+  const std::string text = get("--ordering");
+  if (parse_accepted(text, accepted, value)) return true;
+  error_ = "--ordering must be " + name_list(accepted) + ", got '" + text + "'";
   return false;
+}
+
+bool Args::get_orderings(const std::vector<Ordering>& accepted, Ordering fallback, std::vector<Ordering>* values) {
+  values->clear();
+  if (!has("--ordering")) {
+    values->push_back(fallback);
+    return true;
+  }
+  const std::string text = get("--ordering");
+  for (size_t begin = 0;;) {
+    const size_t end = text.find(',', begin);
+    const std::string name = text.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+    Ordering o;
+    if (!parse_accepted(name, accepted, &o)) {
+      error_ = "--ordering must be " + name_list(accepted) + " (or a comma list of them), got '" + name + "'";
+      return false;
+    }
+    if (std::find(values->begin(), values->end(), o) != values->end()) {
+      error_ = "--ordering lists '" + name + "' twice";
+      return false;
+    }
+    values->push_back(o);
+    if (end == std::string::npos) return true;
+    begin = end + 1;
+  }
 }
 
 double median(std::vector<double> values) {

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "gab/codec/matrix_ordering.h"
+#include "gab/sparse/ordering.h"
 
 namespace gab {
 namespace cli {
@@ -43,8 +43,12 @@ class Args {
   // --threads T (1..64); absent: every hardware thread (at most 64). The
   // results never depend on it, only the time.
   bool get_threads(int32_t* value);
-  // --ordering auto|amd|nd (gab/codec/matrix_ordering.h); absent: auto.
-  bool get_matrix_ordering(MatrixOrdering* value);
+  // --ordering NAME, one of the orderings this command takes (`accepted`,
+  // named as in gab/sparse/ordering.h); absent: `fallback`. Any other name,
+  // known or not, is an error listing what the command takes.
+  bool get_ordering(const std::vector<Ordering>& accepted, Ordering fallback, Ordering* value);
+  // The same for a comma list, each ordering once (gab study).
+  bool get_orderings(const std::vector<Ordering>& accepted, Ordering fallback, std::vector<Ordering>* values);
 
  private:
   std::vector<std::pair<std::string, std::string>> values_;
@@ -78,6 +82,11 @@ double median(std::vector<double> values);
 
 // Threads when --threads is not given: every hardware thread (1..64).
 int32_t default_threads();
+
+// The orderings of the codec's commands (compress, decompress) and of the
+// engine's benchmarks (factor, study: a named ordering, measured as such).
+extern const std::vector<Ordering> kCodecOrderings;
+extern const std::vector<Ordering> kBenchmarkOrderings;
 
 // Lower-cased extension of a path without the dot ("" if none).
 std::string extension(const std::string& path);

@@ -23,7 +23,7 @@ constexpr double kDefaultError = 1e-3;
 
 int run_compress(int argc, char** argv) {
   Args args;
-  if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--error", "--linf", "--bits", "--weight", "--batch", "--chunk-growth",
+  if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--error", "--linf", "--bits", "--weight", "--batch-fraction", "--batch", "--chunk-growth",
                    "--initial", "--threads", "--layout", "--detail", "--ordering"},
                   {"--json", "--geometry-only", "--refine", "--reorder"})) {
     return usage_error("compress", args.error());
@@ -38,11 +38,17 @@ int run_compress(int argc, char** argv) {
   if (!args.get_int("--anchors", 1, 0x7FFFFFFF, &anchors) || !args.get_double("--error", 1e-12, 1.0, &error) ||
       !args.get_double("--linf", 1e-12, 1.0, &linf) || !args.get_int("--bits", kGabMinBits, kGabMaxBits, &bits) ||
       !args.get_double("--weight", 1e-6, 1e6, &options.weight) ||
-      !args.get_double("--batch", 0.0, 1.0, &options.batch_fraction) ||
+      !args.get_double("--batch-fraction", 0.0, 1.0, &options.batch_fraction) ||
       !args.get_double("--chunk-growth", 1.01, 1e9, &options.chunk_growth) ||
       !args.get_int("--initial", 1, 0x7FFFFFFF, &initial) || !args.get_threads(&options.threads) ||
-      !args.get_matrix_ordering(&options.ordering)) {
+      !args.get_ordering(kCodecOrderings, Ordering::kAuto, &options.ordering)) {
     return usage_error("compress", args.error());
+  }
+  // --batch was this fraction's first spelling; study's --batch is a count.
+  if (args.has("--batch")) {
+    if (args.has("--batch-fraction")) return usage_error("compress", "give --batch-fraction only (--batch is its old name)");
+    if (!args.get_double("--batch", 0.0, 1.0, &options.batch_fraction)) return usage_error("compress", args.error());
+    std::fprintf(stderr, "gab compress: note: --batch is now --batch-fraction\n");
   }
   options.max_anchors = static_cast<int32_t>(anchors);
   options.initial_anchors = static_cast<int32_t>(initial);
@@ -134,7 +140,7 @@ int run_compress(int argc, char** argv) {
     o.add("detail_bytes", static_cast<int64_t>(stats.detail_bytes));
     o.add("detail_step_rel", stats.detail_step_rel);
     o.add("anchor_rms_rel", stats.detail ? stats.anchor_rms_rel : stats.rms_rel);
-    o.add("ordering", std::string(matrix_ordering_name(stats.ordering)));
+    o.add("ordering", std::string(ordering_name(stats.ordering)));
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }

@@ -30,9 +30,9 @@ int run_decompress(int argc, char** argv) {
   if (!args.has("-i") || !args.has("-o")) return usage_error("decompress", "need -i IN.gab and -o OUT");
   int64_t anchors = -1;
   int32_t threads = 1;
-  MatrixOrdering ordering = MatrixOrdering::kAuto;
+  Ordering ordering = Ordering::kAuto;
   if (!args.get_int("--anchors", 0, 0x7FFFFFFF, &anchors) || !args.get_threads(&threads) ||
-      !args.get_matrix_ordering(&ordering)) {
+      !args.get_ordering(kCodecOrderings, Ordering::kAuto, &ordering)) {
     return usage_error("decompress", args.error());
   }
   const std::string in = args.get("-i"), out = args.get("-o");
@@ -90,7 +90,7 @@ int run_decompress(int argc, char** argv) {
     o.add("connectivity_s", stats.connectivity_s);
     o.add_bool("detail", stats.detail);
     o.add("detail_s", stats.detail_s);
-    o.add("ordering", std::string(matrix_ordering_name(stats.ordering)));
+    o.add("ordering", std::string(ordering_name(stats.ordering)));
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }

@@ -14,10 +14,6 @@
 namespace gab {
 namespace cli {
 
-namespace {
-
-}  // namespace
-
 int run_factor(int argc, char** argv) {
   Args args;
   if (!args.parse(argc, argv, {"--ordering", "--anchors", "--repeat", "--threads"}, {"--json"})) {
@@ -31,10 +27,8 @@ int run_factor(int argc, char** argv) {
       !args.get_int("--threads", 1, kMaxFactorThreads, &threads)) {
     return usage_error("factor", args.error());
   }
-  const std::string ordering_name = args.get("--ordering", "amd");
-  if (ordering_name != "amd" && ordering_name != "nd" && ordering_name != "natural") {
-    return usage_error("factor", "--ordering must be amd, nd or natural, got '" + ordering_name + "'");
-  }
+  Ordering ordering = Ordering::kAmd;
+  if (!args.get_ordering(kBenchmarkOrderings, Ordering::kAmd, &ordering)) return usage_error("factor", args.error());
   const bool json = args.has("--json");
   const std::string& path = args.positionals()[0];
 
@@ -50,10 +44,10 @@ int run_factor(int argc, char** argv) {
   std::vector<double> x;
   for (int64_t r = 0; r < repeat; ++r) {
     double t0 = now_seconds();
-    if (ordering_name == "amd" || ordering_name == "nd") {
+    if (ordering != Ordering::kNatural) {
       NestedDissectionOptions nd;
       nd.threads = static_cast<int32_t>(threads);  // the same permutation for any count
-      status = ordering_name == "amd" ? amd_order(a, &perm) : nested_dissection_order(a, &perm, nd);
+      status = ordering == Ordering::kAmd ? amd_order(a, &perm) : nested_dissection_order(a, &perm, nd);
       if (!status.ok()) return fail(path + ": ordering: " + status.message());
     } else {
       perm.resize(n);
@@ -109,7 +103,7 @@ int run_factor(int argc, char** argv) {
   out.add("solve_s", median(solve_s));
   out.add("gflops", factor_median > 0 ? f.flops / factor_median * 1e-9 : 0.0);
   out.add("residual", residual);
-  out.add("ordering", ordering_name);
+  out.add("ordering", std::string(ordering_name(ordering)));
   out.add("stored_L", f.stored_L);
   out.add("simd", std::string(chol.simd_level()));
   out.add("repeat", repeat);

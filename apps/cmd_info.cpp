@@ -52,7 +52,7 @@ int run_info(int argc, char** argv) {
     o.add("detail_step", info.detail_step);
     o.add_bool("levels", info.levels);
     o.add_bool("reordered", info.reordered);
-    o.add("ordering", std::string(matrix_ordering_name(info.ordering)));
+    o.add("ordering", std::string(ordering_name(info.ordering)));
     o.add("reconstruction", static_cast<int64_t>(info.reconstruction));
     o.add("sections", static_cast<int64_t>(info.sections));
     std::printf("%s\n", o.str().c_str());
@@ -64,7 +64,7 @@ int run_info(int argc, char** argv) {
               info.levels ? " (chunk 0 codes the anchor set, later chunks are the decoder's levels)" : "",
               info.truncated ? (" (truncated: " + std::to_string(info.chunks_present) + " complete)").c_str() : "",
               info.bits, info.weight,
-              info.ordering == MatrixOrdering::kNestedDissection ? "nested dissection" : "AMD");
+              info.ordering == Ordering::kNestedDissection ? "nested dissection" : "AMD");
   std::printf("%zu bytes: geometry %zu (%.3f bits/vertex), connectivity %zu (%s)", info.bytes, info.geometry_bytes,
               bpv, info.connectivity_bytes,
               info.geometry_only ? "a hash" : "valence coded");

@@ -58,7 +58,7 @@ struct StudyResult {
   std::vector<UpdateRecord> records;
 };
 
-Status study_one(const std::string& path, const std::string& ordering, int64_t updates,
+Status study_one(const std::string& path, Ordering ordering, int64_t updates,
                  int64_t batch, int64_t anchors, int64_t subdivide, int64_t threads,
                  StudyResult* out) {
   BenchmarkSystem sys;
@@ -67,13 +67,13 @@ Status study_one(const std::string& path, const std::string& ordering, int64_t u
   CscMatrix a = sys.lower;
   const int32_t n = a.ncols;
   AnalyzeOptions options;
-  options.ordering = ordering == "natural" ? Ordering::kNatural : Ordering::kAmd;
+  options.ordering = ordering;
   options.threads = static_cast<int32_t>(threads);
   // Nested dissection is run here (as analyze would run it: default options,
   // the factorization's threads, the same permutation for any count) to
   // keep its separator tree for the bound.
   std::vector<int64_t> bound;
-  if (ordering == "nd") {
+  if (ordering == Ordering::kNestedDissection) {
     std::vector<int32_t> perm;
     SeparatorTree tree;
     NestedDissectionOptions nd;
@@ -98,7 +98,7 @@ Status study_one(const std::string& path, const std::string& ordering, int64_t u
     out->solve1_s = now_seconds() - t0;
   }
   out->input = path;
-  out->ordering = ordering;
+  out->ordering = ordering_name(ordering);
   out->n = n;
   out->nnz_L = chol.symbolic().nnz_L;
 
@@ -356,28 +356,6 @@ std::string svg(const std::vector<StudyResult>& results, const std::vector<Growt
   return render_svg(charts);
 }
 
-// The --ordering list: names separated by commas, each amd, nd or natural,
-// each once. False with *error set otherwise.
-bool parse_orderings(const std::string& text, std::vector<std::string>* orderings, std::string* error) {
-  orderings->clear();
-  size_t begin = 0;
-  for (;;) {
-    const size_t end = text.find(',', begin);
-    const std::string name = text.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
-    if (name != "amd" && name != "nd" && name != "natural") {
-      *error = "--ordering must be amd, nd or natural (or a comma list of them), got '" + name + "'";
-      return false;
-    }
-    if (std::find(orderings->begin(), orderings->end(), name) != orderings->end()) {
-      *error = "--ordering lists '" + name + "' twice";
-      return false;
-    }
-    orderings->push_back(name);
-    if (end == std::string::npos) return true;
-    begin = end + 1;
-  }
-}
-
 }  // namespace
 
 int run_study(int argc, char** argv) {
@@ -394,15 +372,12 @@ int run_study(int argc, char** argv) {
       !args.get_int("--threads", 1, kMaxFactorThreads, &threads)) {
     return usage_error("study", args.error());
   }
-  std::vector<std::string> orderings;
-  std::string ordering_error;
-  if (!parse_orderings(args.get("--ordering", "amd"), &orderings, &ordering_error)) {
-    return usage_error("study", ordering_error);
-  }
+  std::vector<Ordering> orderings;
+  if (!args.get_orderings(kBenchmarkOrderings, Ordering::kAmd, &orderings)) return usage_error("study", args.error());
   const bool json = args.has("--json");
   std::vector<StudyResult> results;
   for (const std::string& path : args.positionals()) {
-    for (const std::string& ordering : orderings) {
+    for (const Ordering ordering : orderings) {
       StudyResult r;
       const Status s = study_one(path, ordering, updates, batch, anchors, subdivide, threads, &r);
       if (!s.ok()) return fail(s.message());
@@ -438,7 +413,9 @@ int run_study(int argc, char** argv) {
   }
   // The growth exponents: with the results on stdout, beside them; with
   // --json on stderr (stdout holds only the JSON objects).
-  const std::vector<Growth> growth = growth_by_ordering(results, orderings);
+  std::vector<std::string> ordering_names;
+  for (const Ordering o : orderings) ordering_names.push_back(ordering_name(o));
+  const std::vector<Growth> growth = growth_by_ordering(results, ordering_names);
   for (const Growth& g : growth) {
     if (!g.fitted) continue;
     std::fprintf(json ? stderr : stdout, "%s: touched entries per update grow as n^%.3f (fitted over %zu inputs)\n",

@@ -10,7 +10,7 @@ const std::vector<Command>& commands() {
       {"compress", run_compress,
        {"-i IN -o OUT.gab [--anchors K | --error E | --linf E] [--bits Q] [--weight W]",
         "[--geometry-only | --reorder] [--detail auto|on|off] [--refine] [--threads T] [--json]",
-        "(tuning: --batch F --chunk-growth G --initial K --layout smaller|levels|selection",
+        "(tuning: --batch-fraction F --chunk-growth G --initial K --layout smaller|levels|selection",
         "         --ordering auto|amd|nd)"},
        "compress a mesh's geometry with geometry-aware anchors (default --error 0.001: relative\n"
        "vertex RMS over the bounding-box diagonal; q picked from the target, 12 for --anchors);\n"

@@ -1,12 +1,13 @@
-// Error curves of greedy anchor selection (Sorkine et al. 2005, sec. IV) on
-// the shared meshes: the paper's one-anchor-per-step rule against batched
-// steps (1-ring local maxima of the error, `--batch` of the anchors so far),
-// w = 100, exact coefficients, from a farthest-point spread set of
-// `--initial` x k anchors. Prints, per mesh, the relative vertex RMS and max
-// error at 0.5, 1, 2, 5 and 10% of n (one at a time only up to
-// `--single-max` anchors: each step is a solve), with the seconds taken.
+// Error curves of the codec's greedy anchor selection (Sorkine et al. 2005,
+// sec. IV; encode_mesh, anchors only) on the shared meshes: the paper's
+// one-anchor-per-step rule against batched steps (1-ring local maxima of the
+// error, `--batch-fraction` of the anchors so far), w = 100, coefficients on
+// a q = 16 grid, from a farthest-point spread set of `--initial` x k
+// anchors. Prints, per mesh, the relative vertex RMS and max error at 0.5,
+// 1, 2, 5 and 10% of n (one at a time only up to `--single-max` anchors:
+// each step is a solve), with the seconds of the whole encode.
 //
-//   bench/greedy_curves [--batch F] [--initial R] [--single-max K] [mesh.off ...]
+//   bench/greedy_curves [--batch-fraction F] [--initial R] [--single-max K] [mesh.off ...]
 //   (defaults: 0.05, 0.5, 1500, every mesh of ../shared/meshes)
 #include <dirent.h>
 
@@ -19,8 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "gab/mesh/edge_graph.h"
-#include "gab/mesh/greedy_anchors.h"
+#include "gab/codec/encoder.h"
 #include "gab/mesh/mesh_io.h"
 
 namespace {
@@ -35,21 +35,23 @@ struct Point {
 };
 
 // One greedy run to exactly k anchors; the last point of its curve.
-Point run(const gab::Mesh& mesh, const gab::EdgeGraph& graph, int32_t k, int32_t initial, double batch) {
-  gab::GreedyOptions options;
+Point run(const gab::Mesh& mesh, int32_t k, int32_t initial, double batch) {
+  gab::EncodeOptions options;
   options.weight = 100;
   options.max_anchors = k;
-  options.initial = std::max(1, initial);
+  options.initial_anchors = std::max(1, initial);
   options.batch_fraction = batch;
-  std::vector<int32_t> anchors;
-  std::vector<gab::GreedyStep> curve;
+  options.bits = 16;
+  options.detail = gab::DetailMode::kOff;
+  std::vector<uint8_t> file;
+  gab::EncodeStats stats;
   const double t = now();
-  const gab::Status s = gab::select_anchors_greedy(mesh, graph, options, &anchors, &curve);
+  const gab::Status s = gab::encode_mesh(mesh, options, &file, &stats);
   if (!s.ok()) {
     std::fprintf(stderr, "greedy_curves: %s\n", s.message().c_str());
     std::exit(1);
   }
-  return {curve.back(), now() - t};
+  return {stats.curve.back(), now() - t};
 }
 
 }  // namespace
@@ -59,7 +61,7 @@ int main(int argc, char** argv) {
   int32_t single_max = 1500;
   std::vector<std::string> meshes;
   for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--batch") && i + 1 < argc) {
+    if (!std::strcmp(argv[i], "--batch-fraction") && i + 1 < argc) {
       batch = std::atof(argv[++i]);
     } else if (!std::strcmp(argv[i], "--initial") && i + 1 < argc) {
       initial_ratio = std::atof(argv[++i]);
@@ -89,16 +91,15 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "greedy_curves: %s\n", s.message().c_str());
       return 1;
     }
-    const gab::EdgeGraph graph = gab::build_edge_graph(mesh);
     const std::string name = path.substr(path.find_last_of('/') + 1);
     for (double fraction : {0.005, 0.01, 0.02, 0.05, 0.1}) {
       const int32_t k = std::max(2, static_cast<int32_t>(std::lround(fraction * mesh.num_vertices())));
       const int32_t initial = static_cast<int32_t>(initial_ratio * k);
-      const Point b = run(mesh, graph, k, initial, batch);
+      const Point b = run(mesh, k, initial, batch);
       std::printf("| %s | %d | %d | %.3e | %.3e | %.2f |", name.c_str(), mesh.num_vertices(), k, b.step.rms_rel,
                   b.step.linf_rel, b.seconds);
       if (k <= single_max) {
-        const Point one = run(mesh, graph, k, initial, 0.0);
+        const Point one = run(mesh, k, initial, 0.0);
         std::printf(" %.3e | %.3e | %.2f |\n", one.step.rms_rel, one.step.linf_rel, one.seconds);
       } else {
         std::printf(" - | - | - |\n");

@@ -7,6 +7,7 @@
 
 #include "boundary.h"
 #include "gab/codec/encoder.h"
+#include "ordering_codes.h"
 #include "gab/sparse/symbolic.h"
 
 namespace gab {
@@ -50,6 +51,7 @@ Status read_options(const gab_compress_options* in, EncodeOptions* out) {
     GAB_TAKE(threads);
     GAB_TAKE(detail);
     GAB_TAKE(refine);
+    GAB_TAKE(ordering);
 #undef GAB_TAKE
   }
   GAB_RETURN_IF_ERROR(require(o.threads >= 0 && o.threads <= kMaxFactorThreads,
@@ -58,6 +60,11 @@ Status read_options(const gab_compress_options* in, EncodeOptions* out) {
   GAB_RETURN_IF_ERROR(require(o.detail == GAB_DETAIL_AUTO || o.detail == GAB_DETAIL_ON || o.detail == GAB_DETAIL_OFF,
                               "options->detail is " + std::to_string(o.detail) +
                                   ": must be GAB_DETAIL_AUTO, GAB_DETAIL_ON or GAB_DETAIL_OFF"));
+  Ordering ordering = Ordering::kAuto;
+  GAB_RETURN_IF_ERROR(require(ordering_of_code(o.ordering, &ordering),
+                              "options->ordering is " + std::to_string(o.ordering) +
+                                  ": must be GAB_ORDERING_AUTO, GAB_ORDERING_AMD or GAB_ORDERING_ND"));
+  out->ordering = ordering;
   const bool no_rule = o.max_anchors == 0 && o.target_rms_rel == 0 && o.target_linf_rel == 0;
   out->max_anchors = o.max_anchors;
   out->target_rms_rel = no_rule ? kDefaultError : o.target_rms_rel;

@@ -78,7 +78,7 @@ def read_mesh(path):
 
 
 def compress(V, F, error=None, anchors=None, linf=None, bits=None, weight=None, reorder=False, threads=1,
-             detail="auto", refine=False):
+             detail="auto", refine=False, ordering="auto"):
     """Compresses a mesh to a .gab file, returned as bytes.
 
     V: (n, 3) coordinates, F: (t, 3) vertex indices (0-based). Stopping rules,
@@ -89,12 +89,17 @@ def compress(V, F, error=None, anchors=None, linf=None, bits=None, weight=None, 
     100); reorder: number the decoded mesh in the coder's order (smaller file);
     threads: for the factorizations (0: every core; the file is the same for
     any count); detail: 'auto', 'on' or 'off'; refine: the least-squares
-    refinement chunk. The decoded mesh keeps the vertex numbering (unless
-    reorder) and the triangles as a set of oriented triangles."""
+    refinement chunk; ordering: the factorizations' ('auto', 'amd' or 'nd',
+    as the CLI's --ordering; speed only). The decoded mesh keeps the vertex
+    numbering (unless reorder) and the triangles as a set of oriented
+    triangles."""
     V = _array(V, np.float64, "V", 3)
     F = _int32(F, "F", 3)
     if detail not in _DETAIL:
         raise ValueError(f"detail must be 'auto', 'on' or 'off', got {detail!r}")
+    ordering_code = LIB.gab_ordering_from_name(str(ordering).encode())
+    if ordering_code < 0:
+        raise ValueError(f"ordering must be 'auto', 'amd' or 'nd', got {ordering!r}")
     options = CompressOptions()
     LIB.gab_compress_options_init(ctypes.byref(options), ctypes.sizeof(options))
     if error is None and anchors is None and linf is None:
@@ -109,6 +114,7 @@ def compress(V, F, error=None, anchors=None, linf=None, bits=None, weight=None, 
     options.threads = int(threads)
     options.detail = _DETAIL[detail]
     options.refine = int(bool(refine))
+    options.ordering = ordering_code
     out = ctypes.POINTER(ctypes.c_ubyte)()
     size = ctypes.c_size_t()
     message = message_buffer()

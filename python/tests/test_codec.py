@@ -71,6 +71,9 @@ class CodecTest(unittest.TestCase):
         reordered = gab.compress(V, F, reorder=True)
         self.assertLess(len(reordered), len(base))
         self.assertNotEqual(base, gab.compress(V, F, weight=10))
+        # auto is AMD on a small mesh; the file records the ordering.
+        self.assertEqual(base, gab.compress(V, F, ordering="amd"))
+        self.assertNotEqual(base, gab.compress(V, F, ordering="nd"))
 
     def test_inputs_of_other_types_and_layouts(self):
         V, F = bumpy_torus(12, 10)
@@ -91,6 +94,8 @@ class CodecTest(unittest.TestCase):
             gab.compress(V[:, :2], F)
         with self.assertRaises(ValueError):
             gab.compress(V, F, detail="maybe")
+        with self.assertRaises(ValueError):
+            gab.compress(V, F, ordering="natural")  # the benchmarks' ordering, not the codec's
         with self.assertRaises(gab.GabError) as e:
             gab.compress(V, F, bits=40)
         self.assertEqual(str(e.exception), "gab_compress_ex: bits must be in 2..24")

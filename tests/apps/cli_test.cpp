@@ -85,6 +85,12 @@ TEST(CliTest, BadUsageExitsTwo) {
   const CommandResult r = run_gab("factor a.off --ordering metis");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--ordering must be amd, nd or natural, got 'metis'"), std::string::npos);
+  // auto is the codec's choice by size; factor and study measure a named ordering.
+  for (const char* command : {"factor", "study"}) {
+    const CommandResult a = run_gab(std::string(command) + " a.off --ordering auto");
+    EXPECT_EQ(a.exit_code, 2) << command;
+    EXPECT_NE(a.err.find("--ordering must be amd, nd or natural"), std::string::npos) << a.err;
+  }
   EXPECT_EQ(run_gab("factor a.off --repeat 0").exit_code, 2);
   EXPECT_EQ(run_gab("factor a.off --bogus").exit_code, 2);
   EXPECT_EQ(run_gab("help").exit_code, 0);

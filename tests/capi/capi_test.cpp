@@ -63,6 +63,17 @@ TEST(CapiTest, VersionAndErrorNamesAgreeWithTheHeader) {
   EXPECT_STREQ(gab_version(), GAB_VERSION_STRING);
 }
 
+// The C door reads the names the CLI reads, and takes the codec's orderings only.
+TEST(CapiTest, OrderingNamesAreTheCliVocabulary) {
+  EXPECT_EQ(gab_ordering_from_name("auto"), GAB_ORDERING_AUTO);
+  EXPECT_EQ(gab_ordering_from_name("amd"), GAB_ORDERING_AMD);
+  EXPECT_EQ(gab_ordering_from_name("nd"), GAB_ORDERING_ND);
+  EXPECT_EQ(gab_ordering_from_name("natural"), -1);  // gab factor's, not the codec's
+  EXPECT_EQ(gab_ordering_from_name("AMD"), -1);
+  EXPECT_EQ(gab_ordering_from_name(""), -1);
+  EXPECT_EQ(gab_ordering_from_name(nullptr), -1);
+}
+
 TEST(CapiTest, RoundTripMeetsTheTargetAndMatchesTheCppApi) {
   const Mesh mesh = bumpy_torus(40, 30);
   capi_round_trip r;
@@ -185,6 +196,10 @@ TEST(CapiTest, OptionsStructIsReadUpToItsSize) {
   o.detail = 7;
   EXPECT_EQ(compress(&o, nullptr).message,
             "gab_compress_ex: options->detail is 7: must be GAB_DETAIL_AUTO, GAB_DETAIL_ON or GAB_DETAIL_OFF");
+  gab_compress_options_init(&o, sizeof o);
+  o.ordering = 3;
+  EXPECT_EQ(compress(&o, nullptr).message,
+            "gab_compress_ex: options->ordering is 3: must be GAB_ORDERING_AUTO, GAB_ORDERING_AMD or GAB_ORDERING_ND");
   gab_compress_options_init(&o, sizeof o);
   o.bits = 30;
   const Outcome bits = compress(&o, nullptr);

@@ -1,10 +1,10 @@
-// The relaxed geometry-aware reconstruction and greedy anchor selection.
+// The relaxed geometry-aware reconstruction (greedy selection: the codec,
+// tests/codec/pipeline/greedy_selection_test.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "gab/mesh/edge_graph.h"
-#include "gab/mesh/greedy_anchors.h"
 #include "gab/mesh/relaxed_reconstruction.h"
 #include "gab/mesh/subdivide.h"
 
@@ -155,97 +155,6 @@ TEST(RelaxedReconstructionTest, ClearErrors) {
   // A failed call changes nothing: 3 can still be added.
   EXPECT_TRUE(rec.add_anchors({3}, coefficients(m, {3})).ok());
   EXPECT_EQ(rec.num_anchors(), 3);
-}
-
-TEST(GreedyAnchorsTest, ErrorFallsAndAnchorsAreDistinct) {
-  const Mesh m = bumpy_sphere(3);
-  const EdgeGraph g = build_edge_graph(m);
-  GreedyOptions options;
-  options.weight = 10.0;
-  options.initial = 6;
-  options.max_anchors = 60;
-  std::vector<int32_t> anchors;
-  std::vector<GreedyStep> curve;
-  ASSERT_TRUE(select_anchors_greedy(m, g, options, &anchors, &curve).ok());
-  ASSERT_EQ(anchors.size(), 60u);
-  EXPECT_EQ(curve.front().anchors, 6);
-  EXPECT_EQ(curve.back().anchors, 60);
-  EXPECT_EQ(curve.size(), 55u);
-  std::vector<char> seen(m.num_vertices(), 0);
-  for (int32_t a : anchors) {
-    EXPECT_FALSE(seen[a]);
-    seen[a] = 1;
-  }
-  EXPECT_LT(curve.back().rms_rel, 0.5 * curve.front().rms_rel);
-  EXPECT_LT(curve.back().linf_rel, curve.front().linf_rel);
-  // A target stops early.
-  options.target_rms_rel = curve[20].rms_rel;
-  ASSERT_TRUE(select_anchors_greedy(m, g, options, &anchors, &curve).ok());
-  EXPECT_LE(curve.back().rms_rel, options.target_rms_rel);
-  EXPECT_LE(curve.back().anchors, 26);
-}
-
-}  // namespace
-}  // namespace gab
-
-namespace gab {
-namespace {
-
-TEST(GreedyAnchorsTest, BatchedReachesTheCountInFewerStepsAtComparableError) {
-  const Mesh m = bumpy_sphere(3);
-  const EdgeGraph g = build_edge_graph(m);
-  GreedyOptions options;
-  options.weight = 10.0;
-  options.initial = 10;
-  options.max_anchors = 80;
-  std::vector<int32_t> single, batched;
-  std::vector<GreedyStep> curve_single, curve_batched;
-  ASSERT_TRUE(select_anchors_greedy(m, g, options, &single, &curve_single).ok());
-  options.batch_fraction = 0.1;
-  ASSERT_TRUE(select_anchors_greedy(m, g, options, &batched, &curve_batched).ok());
-  EXPECT_EQ(batched.size(), 80u);  // the last batch is cut to the limit
-  EXPECT_EQ(curve_batched.back().anchors, 80);
-  EXPECT_LT(curve_batched.size(), curve_single.size() / 3);
-  EXPECT_LT(curve_batched.back().rms_rel, 1.3 * curve_single.back().rms_rel);
-  std::vector<char> seen(m.num_vertices(), 0);
-  for (int32_t a : batched) {
-    EXPECT_FALSE(seen[a]);
-    seen[a] = 1;
-  }
-}
-
-TEST(GreedyAnchorsTest, EveryVertexAnchoredStops) {
-  const Mesh m = bumpy_sphere(1);
-  const EdgeGraph g = build_edge_graph(m);
-  GreedyOptions options;
-  options.max_anchors = 1000;  // more than the vertices
-  options.batch_fraction = 0.5;
-  std::vector<int32_t> anchors;
-  std::vector<GreedyStep> curve;
-  ASSERT_TRUE(select_anchors_greedy(m, g, options, &anchors, &curve).ok());
-  EXPECT_EQ(static_cast<int32_t>(anchors.size()), m.num_vertices());
-}
-
-TEST(GreedyAnchorsTest, BatchesRankMaximaByTheirOneRingMassOneAtATimeByThePeak) {
-  const Mesh m = bumpy_sphere(3);
-  const EdgeGraph g = build_edge_graph(m);
-  RelaxedReconstruction rec;
-  ASSERT_TRUE(rec.init(g, 10.0, {0}, coefficients(m, {0})).ok());
-  // A one-vertex spike and, far from it, a lower but broad bump.
-  const int32_t spike = 100, bump = 200;
-  std::vector<double> error(m.num_vertices(), 0.0);
-  error[spike] = 10.0;
-  error[bump] = 8.0;
-  for (int32_t p = g.offsets[bump]; p < g.offsets[bump + 1]; ++p) error[g.neighbors[p]] = 6.0;
-  for (int32_t p = g.offsets[spike]; p < g.offsets[spike + 1]; ++p) ASSERT_EQ(error[g.neighbors[p]], 0.0);
-  EXPECT_EQ(pick_error_maxima(g, error, rec, 1), std::vector<int32_t>({spike}));  // the paper's rule
-  EXPECT_EQ(pick_error_maxima(g, error, rec, 2), std::vector<int32_t>({bump, spike}));
-  // The bump's neighbours are not maxima; anchored vertices are never picked.
-  const std::vector<int32_t> many = pick_error_maxima(g, error, rec, m.num_vertices());
-  for (int32_t v : many) {
-    EXPECT_NE(v, 0);
-    EXPECT_TRUE(v == bump || error[v] != 6.0) << v;
-  }
 }
 
 }  // namespace

@@ -71,6 +71,16 @@ int gab_read_mesh(const char* path, double** positions, int32_t* n, int32_t** tr
 #define GAB_DETAIL_ON 1   /* with an error target: always */
 #define GAB_DETAIL_OFF 2  /* never: the anchors alone (a target may be missed) */
 
+/* The factorizations' fill-reducing ordering (gab_compress_options.ordering):
+   a matter of speed only, recorded in the file. */
+#define GAB_ORDERING_AUTO 0 /* "auto": nested dissection from 100,000 vertices, AMD below */
+#define GAB_ORDERING_AMD 1  /* "amd": approximate minimum degree */
+#define GAB_ORDERING_ND 2   /* "nd": nested dissection */
+
+/* The GAB_ORDERING_* value a name stands for ("auto", "amd" or "nd", as the
+   CLI's --ordering reads them); -1 for any other text or NULL. O(1). */
+int gab_ordering_from_name(const char* name);
+
 /* Options of gab_compress_ex. ABI-stable: `size` says how much of the struct
    the caller knows; later versions only append fields, and a field beyond
    `size` takes its default. Fill it with gab_compress_options_init, then set
@@ -87,6 +97,7 @@ typedef struct gab_compress_options {
   int32_t threads;        /* threads for the factorizations (default 1; 0: every core); same file for any count */
   int32_t detail;         /* GAB_DETAIL_AUTO (default), GAB_DETAIL_ON or GAB_DETAIL_OFF */
   int32_t refine;         /* nonzero: append the least-squares refinement chunk (--refine) */
+  int32_t ordering;       /* GAB_ORDERING_AUTO (default), GAB_ORDERING_AMD or GAB_ORDERING_ND (--ordering) */
 } gab_compress_options;
 
 /* Sets the defaults: options->size = min(size, sizeof(gab_compress_options)),

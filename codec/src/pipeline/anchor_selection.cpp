@@ -6,6 +6,7 @@
 #include "gab/mesh/graph_distance.h"
 #include "gab/mesh/metrics.h"
 #include "gab/mesh/optimal_coefficients.h"
+#include "pipeline/error_maxima.h"
 #include "pipeline/encoder_tuning.h"
 
 namespace gab {

@@ -242,6 +242,7 @@ Status apply_detail(ByteReader* in, const GabHeader& header, const Mesh& mesh, c
 Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& options, Mesh* mesh, DecodeStats* stats) {
   const auto start = std::chrono::steady_clock::now();
   *stats = DecodeStats();
+  GAB_RETURN_IF_ERROR(check_codec_ordering(options.ordering));
   ByteReader in(data, size);
   GabHeader header;
   GAB_RETURN_IF_ERROR(read_gab_header(&in, size, &header));

@@ -51,7 +51,7 @@ Status check_options(const EncodeOptions& o) {
   if (!std::isfinite(o.chunk_growth)) return bad("chunk growth must be finite");
   if (o.refine_iterations < 1) return bad("refinement iterations must be positive");
   if (o.reorder && o.geometry_only) return bad("a reordered file codes its connectivity: not with geometry only");
-  return Status::Ok();
+  return check_codec_ordering(o.ordering);
 }
 
 // The mesh's box: its low and high corners, longest side and diagonal.

@@ -1,29 +1,23 @@
 #include "pipeline/ordering_choice.h"
 
+#include <string>
+
 #include "gab/codec/gab_format.h"
 
 namespace gab {
 
-const char* matrix_ordering_name(MatrixOrdering ordering) {
-  switch (ordering) {
-    case MatrixOrdering::kAmd:
-      return "amd";
-    case MatrixOrdering::kNestedDissection:
-      return "nd";
-    case MatrixOrdering::kAuto:
-      break;
-  }
-  return "auto";
+bool codec_takes_ordering(Ordering ordering) {
+  return ordering == Ordering::kAuto || ordering == Ordering::kAmd || ordering == Ordering::kNestedDissection;
+}
+
+Status check_codec_ordering(MatrixOrdering asked) {
+  if (codec_takes_ordering(asked)) return Status::Ok();
+  return Status::Error(StatusCode::kInvalidArgument, std::string("the codec factors with the auto, amd or nd ordering, not ") +
+                                                         ordering_name(asked));
 }
 
 MatrixOrdering encoder_ordering(MatrixOrdering asked, int32_t num_vertices) {
-  if (asked != MatrixOrdering::kAuto) return asked;
-  // Where nested dissection's cheaper factor and shorter update paths pay
-  // for its ordering time (about 3x AMD's): below igea's 134k vertices the
-  // codec's times under either ordering were within the runs' noise, igea
-  // encoded 19-35% faster and decoded as fast, and from 600k vertices the
-  // factor is 2-3x cheaper and a third smaller (bench/TUNING.md, "Ordering").
-  return num_vertices >= kNestedDissectionFrom ? MatrixOrdering::kNestedDissection : MatrixOrdering::kAmd;
+  return resolve_ordering(asked, num_vertices);
 }
 
 MatrixOrdering file_ordering(uint8_t file_code) {

@@ -8,14 +8,15 @@
 
 #include "gab/codec/matrix_ordering.h"
 #include "gab/mesh/relaxed_reconstruction.h"
+#include "gab/status.h"
 
 namespace gab {
 
-// kAuto's crossover (the measurements: ordering_choice.cpp).
-constexpr int32_t kNestedDissectionFrom = 100000;
-
+// kInvalidArgument naming the codec's orderings unless codec_takes_ordering(asked).
+Status check_codec_ordering(MatrixOrdering asked);
 // `asked` unless kAuto; for kAuto, nested dissection from
-// kNestedDissectionFrom vertices, AMD below. Never returns kAuto.
+// kNestedDissectionFrom vertices, AMD below (resolve_ordering,
+// gab/sparse/ordering.h). Never returns kAuto.
 MatrixOrdering encoder_ordering(MatrixOrdering asked, int32_t num_vertices);
 // The ordering a header's code (a kGabOrdering* value) names.
 MatrixOrdering file_ordering(uint8_t file_code);

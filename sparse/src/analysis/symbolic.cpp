@@ -45,7 +45,8 @@ Status check_input(const CscMatrix& lower) {
 Status fill_reducing_order(const CscMatrix& lower, const CscMatrix& graph, const AnalyzeOptions& options,
                            std::vector<int32_t>* order) {
   const int32_t n = lower.ncols;
-  switch (options.ordering) {
+  switch (resolve_ordering(options.ordering, n)) {
+    case Ordering::kAuto:  // resolved above
     case Ordering::kAmd:
       return amd_order(lower, order, options.amd);
     case Ordering::kNestedDissection: {

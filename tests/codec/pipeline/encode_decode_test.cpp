@@ -139,7 +139,7 @@ TEST(EncodeDecode, TheFileRecordsItsOrderingAndAnyOrderingDecodesIt) {
     DecodeStats ds;
     const Mesh own = decode_or_die(file, DecodeOptions(), &ds);
     EXPECT_EQ(ds.ordering, ordering);
-    EXPECT_NEAR(relative_rms(mesh, own), es.rms_rel, 1e-12) << matrix_ordering_name(ordering);
+    EXPECT_NEAR(relative_rms(mesh, own), es.rms_rel, 1e-12) << ordering_name(ordering);
     DecodeOptions decode;
     decode.ordering = other;
     DecodeStats ds_other;

@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "gab/codec/matrix_ordering.h"
-#include "gab/mesh/greedy_anchors.h"
 #include "gab/mesh/mesh.h"
 #include "gab/status.h"
 
@@ -80,6 +79,15 @@ struct EncodeOptions {
   // different orderings differ by rounding-level choices of the greedy loop only).
   MatrixOrdering ordering = MatrixOrdering::kAuto;
   std::function<void(int32_t, double)> progress;  // after every reconstruction: (anchors so far, relative RMS)
+};
+
+// One point of the greedy loop's error curve: after `anchors` anchors, the
+// vertex RMS and max 3D distance of the reconstruction, relative to the
+// bounding-box diagonal.
+struct GreedyStep {
+  int32_t anchors;
+  double rms_rel;
+  double linf_rel;
 };
 
 struct EncodeStats {

@@ -13,19 +13,13 @@
 #include "gab/sparse/amd.h"
 #include "gab/sparse/csc.h"
 #include "gab/sparse/etree.h"
+#include "gab/sparse/ordering.h"
 #include "gab/status.h"
 
 namespace gab {
 
 // Threads a factorization, a solve or an ordering uses at most.
 constexpr int32_t kMaxFactorThreads = 64;
-
-enum class Ordering {
-  kAmd,      // approximate minimum degree (amd.h)
-  kNatural,  // identity, then postorder of the elimination tree
-  kGiven,    // AnalyzeOptions::given_perm, then postorder
-  kNestedDissection,  // multilevel nested dissection (nested_dissection.h)
-};
 
 // Relaxed amalgamation (defaults as CHOLMOD's): merge a child supernode into
 // its parent when the merged supernode has at most cols[0] columns, or at
@@ -39,8 +33,8 @@ struct RelaxOptions {
 };
 
 struct AnalyzeOptions {
-  Ordering ordering = Ordering::kAmd;
-  AmdOptions amd;                   // used when ordering == kAmd
+  Ordering ordering = Ordering::kAmd;  // ordering.h; kAuto chooses by n
+  AmdOptions amd;                   // used when ordering is (or resolves to) kAmd
   std::vector<int32_t> given_perm;  // used when ordering == kGiven
   RelaxOptions relax;
   // Threads (1..kMaxFactorThreads) for numeric factorizations (Cholesky):
