@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "gab/sparse/cholesky.h"
-#include "test_matrices.h"
+#include "sparse/test_matrices.h"
 
 namespace gab {
 namespace {

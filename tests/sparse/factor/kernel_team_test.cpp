@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "gab/sparse/dense_kernels.h"
-#include "test_matrices.h"
+#include "sparse/test_matrices.h"
 
 namespace gab {
 namespace {

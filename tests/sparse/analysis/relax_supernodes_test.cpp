@@ -12,7 +12,7 @@
 
 #include "gab/sparse/supernodes.h"
 #include "gab/sparse/symbolic.h"
-#include "test_matrices.h"
+#include "sparse/test_matrices.h"
 
 namespace gab {
 namespace {

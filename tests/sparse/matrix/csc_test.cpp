@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "test_matrices.h"
+#include "sparse/test_matrices.h"
 
 namespace gab {
 namespace {

@@ -6,10 +6,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <string>
 
 #include "common/oracles.h"
-#include "test_matrices.h"
+#include "sparse/test_matrices.h"
 
 namespace gab {
 namespace {
@@ -326,13 +327,47 @@ TEST(CholeskyTest, FactorizeValuesIsFactorizeWithoutThePattern) {
   EXPECT_TRUE(std::equal(by_matrix.values(), by_matrix.values() + size, by_values.values()));
 }
 
-TEST(CholeskyTest, EmptyMatrix) {
+// A 0 x 0 matrix is a matrix: an empty factor that solves nothing, and has
+// no column an update could name.
+TEST(CholeskyTest, EmptyMatrixHasAnEmptyFactor) {
   CscMatrix a;
   ASSERT_TRUE(csc_from_triplets(0, 0, {}, &a).ok());
   Cholesky chol;
   ASSERT_TRUE(chol.analyze(a).ok());
+  EXPECT_EQ(chol.symbolic().n, 0);
+  EXPECT_EQ(chol.symbolic().num_supernodes, 0);
+  EXPECT_EQ(chol.symbolic().nnz_L, 0);
+  EXPECT_EQ(chol.symbolic().flops, 0.0);
+  EXPECT_FALSE(chol.factorized());
   ASSERT_TRUE(chol.factorize(a).ok());
-  EXPECT_TRUE(chol.solve(nullptr, 1, 0).ok());
+  EXPECT_TRUE(chol.factorized());
+  EXPECT_TRUE(chol.solve(nullptr, 3, 0).ok());
+  UpdateStats stats;
+  const Status update = chol.add_anchor(0, 1.0, &stats);
+  EXPECT_EQ(update.code(), StatusCode::kInvalidArgument) << update.message();
+  EXPECT_EQ(stats.path_columns, 0);
+}
+
+// The default kernels (the best level GAB_SIMD allows) are exactly the
+// table of the level Cholesky reports: the same factor, bit for bit.
+TEST(CholeskyTest, DefaultKernelsAreTheLevelItReports) {
+  const CscMatrix a = random_spd(300, 3.0, 7, 0, 2);
+  Cholesky by_default, by_name;
+  ASSERT_TRUE(by_default.analyze(a).ok());
+  ASSERT_TRUE(by_default.factorize(a).ok());
+  SimdLevel reported = SimdLevel::kScalar;
+  for (SimdLevel level : {SimdLevel::kScalar, SimdLevel::kAvx2, SimdLevel::kAvx512}) {
+    if (std::string(simd_level_name(level)) == by_default.simd_level()) reported = level;
+  }
+  EXPECT_STREQ(simd_level_name(reported), by_default.simd_level());
+  by_name.set_kernels(dense_kernels(reported));
+  ASSERT_TRUE(by_name.analyze(a).ok());
+  ASSERT_TRUE(by_name.factorize(a).ok());
+  const int64_t stored = by_default.symbolic().value_ptr.back();
+  ASSERT_EQ(stored, by_name.symbolic().value_ptr.back());
+  EXPECT_EQ(std::memcmp(by_default.values(), by_name.values(), static_cast<size_t>(stored) * sizeof(double)), 0);
+  by_name.set_kernels(dense_kernels(SimdLevel::kScalar));
+  EXPECT_STREQ(by_name.simd_level(), "scalar");
 }
 
 TEST(OracleTest, DenseAndSimplicialAgree) {

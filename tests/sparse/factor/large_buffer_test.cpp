@@ -9,7 +9,7 @@
 #endif
 
 #include "gab/sparse/cholesky.h"
-#include "test_matrices.h"
+#include "sparse/test_matrices.h"
 
 namespace gab {
 namespace {

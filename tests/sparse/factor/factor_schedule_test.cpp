@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "gab/sparse/cholesky.h"
-#include "test_matrices.h"
+#include "sparse/test_matrices.h"
 
 namespace gab {
 namespace {

@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "gab/sparse/cholesky.h"
-#include "test_matrices.h"
+#include "sparse/test_matrices.h"
 
 namespace gab {
 namespace {
