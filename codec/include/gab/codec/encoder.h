@@ -24,8 +24,8 @@ struct EncodeStats;
 // may encode twice. The file is byte-identical for any thread count.
 Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* file, EncodeStats* stats);
 // The same file from a mesh the caller gives up: its arrays are taken
-// rather than copied (at 2.4M vertices 0.1 GB less at the factorization's
-// peak); `mesh` is left empty unless the options or the mesh are refused
+// rather than copied (one copy of them fewer at the factorization's peak);
+// `mesh` is left empty unless the options or the mesh are refused
 // (or options.geometry_only is set, when it is only read).
 Status encode_mesh(Mesh&& mesh, const EncodeOptions& options, std::vector<uint8_t>* file, EncodeStats* stats);
 
