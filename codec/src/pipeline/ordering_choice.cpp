@@ -10,33 +10,33 @@ bool codec_takes_ordering(Ordering ordering) {
   return ordering == Ordering::kAuto || ordering == Ordering::kAmd || ordering == Ordering::kNestedDissection;
 }
 
-Status check_codec_ordering(MatrixOrdering asked) {
+Status check_codec_ordering(Ordering asked) {
   if (codec_takes_ordering(asked)) return Status::Ok();
   return Status::Error(StatusCode::kInvalidArgument, std::string("the codec factors with the auto, amd or nd ordering, not ") +
                                                          ordering_name(asked));
 }
 
-MatrixOrdering encoder_ordering(MatrixOrdering asked, int32_t num_vertices) {
+Ordering encoder_ordering(Ordering asked, int32_t num_vertices) {
   return resolve_ordering(asked, num_vertices);
 }
 
-MatrixOrdering file_ordering(uint8_t file_code) {
-  return file_code == kGabOrderingNestedDissection ? MatrixOrdering::kNestedDissection : MatrixOrdering::kAmd;
+Ordering file_ordering(uint8_t file_code) {
+  return file_code == kGabOrderingNestedDissection ? Ordering::kNestedDissection : Ordering::kAmd;
 }
 
-MatrixOrdering decoder_ordering(MatrixOrdering asked, uint8_t file_code) {
-  return asked != MatrixOrdering::kAuto ? asked : file_ordering(file_code);
+Ordering decoder_ordering(Ordering asked, uint8_t file_code) {
+  return asked != Ordering::kAuto ? asked : file_ordering(file_code);
 }
 
-uint8_t ordering_code(MatrixOrdering ordering) {
-  return ordering == MatrixOrdering::kNestedDissection ? kGabOrderingNestedDissection : kGabOrderingAmd;
+uint8_t ordering_code(Ordering ordering) {
+  return ordering == Ordering::kNestedDissection ? kGabOrderingNestedDissection : kGabOrderingAmd;
 }
 
 void OrderingPlan::apply(RelaxedReconstruction* rec) const {
   if (!perm_.empty()) {
     rec->set_given_ordering(perm_);
   } else {
-    rec->set_ordering(choice_ == MatrixOrdering::kNestedDissection ? Ordering::kNestedDissection : Ordering::kAmd);
+    rec->set_ordering(choice_ == Ordering::kNestedDissection ? Ordering::kNestedDissection : Ordering::kAmd);
   }
 }
 

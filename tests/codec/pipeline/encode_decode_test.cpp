@@ -121,9 +121,9 @@ TEST(EncodeDecode, TheFileRecordsItsOrderingAndAnyOrderingDecodesIt) {
   // layer's positions bit for bit.
   const Mesh mesh = bumpy_torus(90, 45);
   const double diagonal = bounding_box_diagonal(mesh);
-  for (MatrixOrdering ordering : {MatrixOrdering::kAmd, MatrixOrdering::kNestedDissection}) {
-    const MatrixOrdering other =
-        ordering == MatrixOrdering::kAmd ? MatrixOrdering::kNestedDissection : MatrixOrdering::kAmd;
+  for (Ordering ordering : {Ordering::kAmd, Ordering::kNestedDissection}) {
+    const Ordering other =
+        ordering == Ordering::kAmd ? Ordering::kNestedDissection : Ordering::kAmd;
     EncodeOptions options;
     options.target_rms_rel = 2e-3;
     options.ordering = ordering;
@@ -131,7 +131,7 @@ TEST(EncodeDecode, TheFileRecordsItsOrderingAndAnyOrderingDecodesIt) {
     const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
     EXPECT_EQ(es.ordering, ordering);
     ASSERT_GE(file.size(), kGabMinHeaderBytes);
-    EXPECT_EQ(file[11], ordering == MatrixOrdering::kAmd ? kGabOrderingAmd : kGabOrderingNestedDissection);
+    EXPECT_EQ(file[11], ordering == Ordering::kAmd ? kGabOrderingAmd : kGabOrderingNestedDissection);
     GabFileInfo info;
     ASSERT_TRUE(read_gab_info(file.data(), file.size(), &info).ok());
     EXPECT_EQ(info.ordering, ordering);
@@ -161,7 +161,7 @@ TEST(EncodeDecode, TheFileRecordsItsOrderingAndAnyOrderingDecodesIt) {
   options.max_anchors = 30;
   EncodeStats es;
   const std::vector<uint8_t> file = encode_or_die(bumpy_torus(30, 15), options, &es);
-  EXPECT_EQ(es.ordering, MatrixOrdering::kAmd);
+  EXPECT_EQ(es.ordering, Ordering::kAmd);
   EXPECT_EQ(file[11], kGabOrderingAmd);
 }
 

@@ -75,7 +75,7 @@ EncodeOptions options_of(const std::string& args) {
     else if (flag == "--initial") o.initial_anchors = std::stoi(value);
     else if (flag == "--layout") o.layout = value == "levels" ? FileLayout::kLevels : FileLayout::kSelectionOrder;
     else if (flag == "--detail") o.detail = DetailMode::kOn;
-    else if (flag == "--ordering") o.ordering = MatrixOrdering::kNestedDissection;
+    else if (flag == "--ordering") o.ordering = Ordering::kNestedDissection;
     else ADD_FAILURE() << "unknown option " << flag;
   }
   return o;
@@ -204,7 +204,7 @@ TEST(GoldenFiles, NestedDissectionSeedDecodesWithEitherOrdering) {
   ASSERT_EQ(golden.size(), amd.size());
   EXPECT_EQ(std::vector<uint8_t>(golden.begin() + info.header_bytes, golden.end()),
             std::vector<uint8_t>(amd.begin() + info.header_bytes, amd.end()));
-  for (MatrixOrdering ordering : {MatrixOrdering::kAuto, MatrixOrdering::kAmd}) {
+  for (Ordering ordering : {Ordering::kAuto, Ordering::kAmd}) {
     DecodeOptions options;
     options.ordering = ordering;
     Mesh out;
@@ -212,7 +212,7 @@ TEST(GoldenFiles, NestedDissectionSeedDecodesWithEitherOrdering) {
     const Status status = decode_mesh(golden.data(), golden.size(), options, &out, &ds);
     ASSERT_TRUE(status.ok()) << status.message();
     EXPECT_EQ(ds.ordering,
-              ordering == MatrixOrdering::kAuto ? MatrixOrdering::kNestedDissection : MatrixOrdering::kAmd);
+              ordering == Ordering::kAuto ? Ordering::kNestedDissection : Ordering::kAmd);
     EXPECT_EQ(ds.anchors, 20);
     EXPECT_EQ(oriented_triangle_set(out.triangles), oriented_triangle_set(torus.triangles));
   }

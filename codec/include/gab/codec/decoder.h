@@ -38,7 +38,7 @@ struct DecodeOptions {
   int32_t threads = 1;
   // The factorization's ordering (matrix_ordering.h); kAuto: the file's. Any other decodes the same anchors
   // and a shape equal up to rounding.
-  MatrixOrdering ordering = MatrixOrdering::kAuto;
+  Ordering ordering = Ordering::kAuto;
   // Called before each chunk is decoded (chunk index, chunks in the file).
   std::function<void(int32_t, int32_t)> progress;
 };
@@ -59,7 +59,7 @@ struct DecodeStats {
   double detail_s = 0;        // decoding the detail chunk (part of decode_s)
   int32_t refactorizations = 0;  // chunks added by refactoring rather than updates
   int32_t skipped_sections = 0;  // trailing sections of kinds this build does not know (gab_format.h)
-  MatrixOrdering ordering = MatrixOrdering::kAmd;  // the factorization's ordering (never kAuto)
+  Ordering ordering = Ordering::kAmd;  // the factorization's ordering (never kAuto)
 };
 
 // Decodes `data` into `mesh` (positions and triangles).
@@ -84,7 +84,7 @@ struct GabFileInfo {
   bool detail = false;              // the last chunk is the detail layer (kGabFlagDetail; not counted below)
   size_t detail_bytes = 0;          // its framed size when present
   double detail_step = 0;           // its quantization step (in the mesh's units) when present
-  MatrixOrdering ordering = MatrixOrdering::kAmd;  // the encoder's factorizations' (header byte 11)
+  Ordering ordering = Ordering::kAmd;  // the encoder's factorizations' (header byte 11)
   bool truncated = false;
   size_t bytes = 0, connectivity_bytes = 0, geometry_bytes = 0;
   size_t header_bytes = 0;             // the header's size (its counts are varints)

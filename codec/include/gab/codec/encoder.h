@@ -77,7 +77,7 @@ struct EncodeOptions {
   int32_t threads = 1;        // threads for the factorizations; the file is the same for any count
   // The factorizations' ordering (matrix_ordering.h), recorded in the file: a matter of speed (files from
   // different orderings differ by rounding-level choices of the greedy loop only).
-  MatrixOrdering ordering = MatrixOrdering::kAuto;
+  Ordering ordering = Ordering::kAuto;
   std::function<void(int32_t, double)> progress;  // after every reconstruction: (anchors so far, relative RMS)
 };
 
@@ -112,7 +112,7 @@ struct EncodeStats {
   bool target_met = true;         // false if an error target was out of reach at these bits
   std::vector<GreedyStep> curve;  // after every greedy step
   std::vector<int32_t> chunk_anchors;  // anchors per chunk
-  MatrixOrdering ordering = MatrixOrdering::kAmd;  // the factorizations' ordering (never kAuto)
+  Ordering ordering = Ordering::kAmd;  // the factorizations' ordering (never kAuto)
   double encode_s = 0;
 };
 

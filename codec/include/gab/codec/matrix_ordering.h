@@ -1,6 +1,7 @@
 // Which fill-reducing ordering the codec's factorizations of L^T L + w^2 E^T E
-// use: the engine's Ordering (gab/sparse/ordering.h), of which the codec
-// takes kAuto, kAmd and kNestedDissection (kInvalidArgument for the others).
+// use: the engine's Ordering (gab/sparse/ordering.h: one enum and one set of
+// names for every door), of which the codec takes kAuto, kAmd and
+// kNestedDissection (kInvalidArgument for the others).
 // A matter of speed: the file records the encoder's (gab_format.h, header
 // byte 11) and a decoder uses it unless told otherwise. Any other ordering
 // decodes too: the codec rounds every prediction through a guard
@@ -12,9 +13,6 @@
 #include "gab/sparse/ordering.h"
 
 namespace gab {
-
-// The codec's name for the engine's ordering enum (one enum, one set of names).
-using MatrixOrdering = Ordering;
 
 // Whether the codec factors with `ordering`: kAuto, kAmd or kNestedDissection. O(1).
 bool codec_takes_ordering(Ordering ordering);
