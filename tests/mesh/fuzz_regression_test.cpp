@@ -18,10 +18,7 @@
 namespace gab {
 namespace {
 
-const std::string kFuzzDir = [] {
-  const std::string here = __FILE__;  // .../tests/mesh/fuzz_regression_test.cpp
-  return here.substr(0, here.rfind("/mesh/")) + "/fuzz";
-}();
+const std::string kFuzzDir = GAB_FUZZ_DIR;
 
 std::vector<std::string> files_in(const std::string& dir) {
   std::vector<std::string> out;

@@ -16,10 +16,7 @@
 namespace gab {
 namespace {
 
-const std::string kRegressions = [] {
-  const std::string here = __FILE__;  // .../tests/codec/connectivity/this file
-  return here.substr(0, here.rfind("/codec/")) + "/fuzz/regressions";
-}();
+const std::string kRegressions = std::string(GAB_FUZZ_DIR) + "/regressions";
 
 TEST(ConnectivityFuzzRegression, EachIsAnErrorNamingTheProblem) {
   const struct {

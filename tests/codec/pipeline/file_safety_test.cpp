@@ -101,8 +101,7 @@ TEST(FileSafety, DamageInsideAConnectivityBlockIsAnErrorOrAValidMesh) {
   // Every byte of the connectivity block flipped with the block's checksum
   // made whole again, so the damage reaches the decoders: the variants the
   // encoder writes (order kept, reordered), and two golden seeds.
-  const std::string here = __FILE__;  // .../tests/codec/pipeline/file_safety_test.cpp
-  const std::string corpus = here.substr(0, here.rfind("/codec/")) + "/fuzz/corpus/gab/";
+  const std::string corpus = std::string(GAB_FUZZ_DIR) + "/corpus/gab/";
   std::vector<std::pair<std::string, std::vector<uint8_t>>> files = {
       {"order kept", small_file(false)}, {"reordered", small_file(false, false, FileLayout::kLevels, true)}};
   for (const char* name : {"torus-full", "torus-reordered"}) {

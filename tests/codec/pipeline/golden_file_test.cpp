@@ -28,10 +28,7 @@
 namespace gab {
 namespace {
 
-const std::string kCorpus = [] {
-  const std::string here = __FILE__;  // .../tests/codec/pipeline/golden_file_test.cpp
-  return here.substr(0, here.rfind("/codec/")) + "/fuzz/corpus/gab";
-}();
+const std::string kCorpus = std::string(GAB_FUZZ_DIR) + "/corpus/gab";
 
 // A seed's bytes: its options byte, then the file.
 std::string seed_bytes(const std::string& name) {
