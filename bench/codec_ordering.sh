@@ -5,7 +5,7 @@
 # sys) of `gab compress --error ERROR --ordering O --threads 1` and of
 # decompressing its file, and the file's bytes. CPU seconds, not wall: they
 # move less when the machine is shared. What kAuto's crossover in
-# codec/src/pipeline/ordering_choice.cpp rests on (bench/TUNING.md).
+# codec/src/pipeline/ordering_choice.cpp rests on (docs/tuning-codec.md).
 set -euo pipefail
 gab="$1"
 err="${2:-1e-3}"

@@ -2,7 +2,7 @@
 // encoder, and the constants of its regimes. Private: what a caller may rely
 // on is the contract in gab/codec/encoder.h; these rules may change with new
 // measurements. The figures behind each rule (meshes, rates, times) are in
-// bench/TUNING.md, with the runs that reproduce them.
+// docs/tuning-codec.md, with the runs that reproduce them.
 #pragma once
 
 #include <cstdint>
@@ -51,7 +51,7 @@ constexpr double kDenseGridShare = 0.95;
 // encoder codes for an error target, the smallest meeting it kept. The
 // target in RMS terms is the RMS target, else the L-inf target over
 // kLinfOverRms. Anchors alone win down to about 3e-4 and lose from 1e-4
-// down (the measured crossing: bench/TUNING.md). A detail layer codes
+// down (the measured crossing: docs/tuning-codec.md). A detail layer codes
 // smallest over the anchors of a coarse target (about 3e-3, whatever the
 // final target), not more of them: on the grid that target calls for, or
 // on a coarser one (kCoarseAnchorBits) with fewer anchors, whichever codes

@@ -239,7 +239,7 @@ class Dissection {
   // A piece ordered by minimum degree with its halo (amd_graph.h): the
   // piece's vertices and, never pivots, their neighbours outside it in the
   // whole graph, which are the separators around the piece (all ordered
-  // after it). Measured against AMD on the piece alone: bench/TUNING.md.
+  // after it). Measured against AMD on the piece alone: docs/tuning-engine.md.
   // The piece is label[0 .. m).
   Status order_leaf(int32_t m, const std::vector<int32_t>& label, int32_t begin, int32_t worker,
                     std::vector<SeparatorTree::Node>* nodes, std::vector<int32_t>* roots) {

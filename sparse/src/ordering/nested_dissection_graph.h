@@ -72,7 +72,7 @@ struct UninitializedAllocator : std::allocator<T> {
   // CLI's malloc does for everything (malloc_tuning.h) but a library caller's
   // may not: each 4 KiB fault costs tens of microseconds on the virtual
   // machines we measure on, and the dissection faults in its arrays afresh
-  // at every level (the 603k-vertex mesh on two threads: see TUNING).
+  // at every level (the 603k-vertex mesh on two threads: see docs/tuning-engine.md).
   T* allocate(size_t count) {
     const size_t bytes = count * sizeof(T);
     if (bytes < kLargeAlignment) return std::allocator<T>::allocate(count);

@@ -19,7 +19,7 @@
 // one-sided (each moves vertices into one side only, the sides alternating:
 // the refinement METIS uses for its orderings), which measured 10% fewer
 // flops than two-sided passes (one heap per side, the better move of the
-// two each time) on the shared meshes' factors (bench/TUNING.md, "Nested
+// two each time) on the shared meshes' factors (docs/tuning-engine.md, "Nested
 // dissection"). Cost of a pass: O(sum of degrees of the vertices it touches
 // * log), not O(n).
 #include <algorithm>
