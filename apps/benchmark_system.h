@@ -1,6 +1,6 @@
 // The matrix that `gab factor` and `gab study` work on: a Matrix Market
 // file as given, or a mesh's L^T L + w^2 E^T E by the benchmark anchor rule
-// (README, "The command-line tool", gab factor), with three right-hand sides.
+// (docs/cli.md, "gab factor"), with three right-hand sides.
 #pragma once
 
 #include <cstdint>

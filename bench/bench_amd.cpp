@@ -63,7 +63,7 @@ const CscMatrix* mesh_matrix(const std::string& name) {
   std::vector<std::string> dirs = {GAB_SHARED_MESHES};
   if (const char* extra = std::getenv("GAB_EXTRA_MESHES")) dirs.push_back(extra);
   CscMatrix a;
-  // The benchmark system (README, "The command-line tool"), through the mesh layer.
+  // The benchmark system (docs/cli.md, "gab factor"), through the mesh layer.
   for (const std::string& dir : dirs) {
     gab::Mesh mesh;
     if (!gab::read_mesh(dir + "/" + name + ".off", &mesh).ok()) continue;

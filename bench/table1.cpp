@@ -1,6 +1,6 @@
 // The paper's Table I on our meshes: factorization, one-rhs solve, average
 // anchor update over ranges of anchor counts, worst update (the benchmark
-// rule of README "The command-line tool": k0 = 100 spread anchors, updates by
+// rule of docs/cli.md, "gab factor" and "gab study": k0 = 100 spread anchors, updates by
 // v_t = t * 2654435761 mod n). Prints a markdown table beside the paper's
 // Igea figures (2.4 GHz Pentium 4, TAUCS).
 //

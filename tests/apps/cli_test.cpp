@@ -1,4 +1,4 @@
-// The CLI contract (README, "The command-line tool"), by running the gab binary.
+// The CLI contract (docs/cli.md), by running the gab binary.
 #include <gtest/gtest.h>
 #include <unistd.h>
 

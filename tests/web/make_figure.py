@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The README's picture of the viewer: one .gab file shown at several levels
+"""The picture of the viewer in docs/viewer.md: one .gab file shown at several levels
 side by side (the paper's Figure 6, live), each panel the page itself with
 ?file=NAME&level=L&compact=1, screenshotted by headless Chromium.
 

@@ -19,7 +19,7 @@
      file is an error (GAB_E_PARSE, GAB_E_UNSUPPORTED, GAB_E_RESOURCE_EXHAUSTED),
      never a read outside `data`.
    The C++ API (gab/codec/encoder.h, gab/sparse/cholesky.h, ...) is what this
-   wraps; see README.md, "The C API". */
+   wraps; see docs/library.md, "C". */
 #ifndef GAB_GAB_H
 #define GAB_GAB_H
 

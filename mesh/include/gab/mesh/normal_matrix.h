@@ -22,12 +22,12 @@ namespace gab {
 Status assemble_normal_matrix(const EdgeGraph& graph, const std::vector<int32_t>& anchors,
                               double weight, CscMatrix* lower, int32_t threads = 1);
 
-// The benchmark anchor rule (README, "The command-line tool", gab factor): k0 anchors at vertices
+// The benchmark anchor rule (docs/cli.md, "gab factor"): k0 anchors at vertices
 // floor(j n / k0), j = 0..k0-1 (distinct), then the smallest vertex of each
 // connected component that has none. O(V + E).
 std::vector<int32_t> benchmark_anchors(const EdgeGraph& graph, int32_t k0);
 
-// The benchmark update rule (README, "The command-line tool", gab study):
+// The benchmark update rule (docs/cli.md, "gab study"):
 // v_t = t * 2654435761 mod n for t = 1, 2, ..., skipping vertices in
 // `initial` or already taken; min(count, vertices not in initial) of them.
 // O(n + the steps taken).
