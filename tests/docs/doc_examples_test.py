@@ -1,0 +1,105 @@
+#!/usr/bin/env python3
+"""The code shown to users compiles: every ```cpp and ```c block of the given
+Markdown files is built as its own translation unit against the installed
+headers' directories, with warnings as errors (so a dropped [[nodiscard]]
+gab::Status fails), and linked into a shared object against libgab.so with no
+undefined symbol (so it uses exported API only). Every ```python block is
+byte-compiled. A block must therefore be complete: its includes, and
+statements inside a function.
+
+  doc_examples_test.py --cxx CXX --cc CC --library LIBGAB.so --work DIR
+                       [--include DIR]... [--flag FLAG]... [--no-link] FILE.md...
+
+Exit 0 when every block builds, 1 (naming each block's file and line, with
+the compiler's output) when one does not.
+"""
+
+import argparse
+import os
+import re
+import subprocess
+import sys
+
+FENCE = re.compile(r"^```\s*([A-Za-z0-9+]*)\s*$")
+LANGUAGES = {"cpp": "cpp", "c++": "cpp", "c": "c", "python": "python"}
+
+
+def code_blocks(path):
+    """(language, first line number, text) of each fenced block in path."""
+    blocks, language, start, lines = [], None, 0, None
+    with open(path, encoding="utf-8") as f:
+        for number, line in enumerate(f, 1):
+            match = FENCE.match(line.rstrip("\n"))
+            if lines is None:
+                if match:
+                    language, start, lines = match.group(1).lower(), number + 1, []
+            elif line.rstrip("\n").strip() == "```":
+                blocks.append((language, start, "".join(lines)))
+                lines = None
+            else:
+                lines.append(line)
+    if lines is not None:
+        raise SystemExit(f"{path}:{start - 1}: code block never closed")
+    return blocks
+
+
+def build(args, language, source, output):
+    """The compiler's command for one C or C++ block."""
+    if language == "cpp":
+        command = [args.cxx, "-std=c++17", "-Wall", "-Wextra", "-Wpedantic", "-Werror", "-Werror=unused-result"]
+    else:
+        command = [args.cc, "-std=c99", "-Wall", "-Wextra", "-pedantic", "-Werror"]
+    command += args.flag + [f"-I{d}" for d in args.include]
+    if args.no_link:
+        return command + ["-fsyntax-only", source]
+    return command + ["-fPIC", "-shared", "-o", output, source, args.library, "-Wl,--no-undefined"]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--cxx", required=True)
+    parser.add_argument("--cc", required=True)
+    parser.add_argument("--library", required=True, help="libgab.so")
+    parser.add_argument("--work", required=True, help="directory for the extracted sources")
+    parser.add_argument("--include", action="append", default=[])
+    parser.add_argument("--flag", action="append", default=[], help="one more compiler flag")
+    parser.add_argument("--no-link", action="store_true", help="compile only")
+    parser.add_argument("files", nargs="+")
+    args = parser.parse_args()
+    os.makedirs(args.work, exist_ok=True)
+
+    failures, counts = 0, {"cpp": 0, "c": 0, "python": 0}
+    for path in args.files:
+        stem = os.path.splitext(os.path.basename(path))[0]
+        for language, line, text in code_blocks(path):
+            language = LANGUAGES.get(language)
+            if language is None:
+                continue
+            counts[language] += 1
+            where = f"{path}:{line}"
+            if language == "python":
+                try:
+                    compile(text, where, "exec")
+                except SyntaxError as error:
+                    print(f"FAIL {where}: python block: {error}")
+                    failures += 1
+                continue
+            source = os.path.join(args.work, f"{stem}_{line}.{language}")
+            with open(source, "w", encoding="utf-8") as f:
+                f.write(f'#line {line} "{path}"\n' + text)
+            command = build(args, language, source, os.path.join(args.work, f"{stem}_{line}.so"))
+            result = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+            if result.returncode != 0:
+                print(f"FAIL {where}: {language} block does not build:\n  {' '.join(command)}\n{result.stdout}")
+                failures += 1
+            else:
+                print(f"ok   {where}: {language} block")
+    print(f"{counts['cpp']} C++, {counts['c']} C and {counts['python']} Python blocks, {failures} failing")
+    if counts["cpp"] + counts["c"] == 0:
+        print("FAIL: no C or C++ block found")
+        return 1
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
