@@ -5,13 +5,14 @@ headers' directories, with warnings as errors (so a dropped [[nodiscard]]
 gab::Status fails), and linked into a shared object against libgab.so with no
 undefined symbol (so it uses exported API only). Every ```python block is
 byte-compiled. A block must therefore be complete: its includes, and
-statements inside a function.
+statements inside a function. Every relative link outside the code blocks
+must name a file that exists.
 
   doc_examples_test.py --cxx CXX --cc CC --library LIBGAB.so --work DIR
                        [--include DIR]... [--flag FLAG]... [--no-link] FILE.md...
 
-Exit 0 when every block builds, 1 (naming each block's file and line, with
-the compiler's output) when one does not.
+Exit 0 when every block builds and every link resolves, 1 (naming each
+block's or link's file and line, with the compiler's output) otherwise.
 """
 
 import argparse
@@ -21,11 +22,13 @@ import subprocess
 import sys
 
 FENCE = re.compile(r"^```\s*([A-Za-z0-9+]*)\s*$")
+LINK = re.compile(r"\]\(([^)\s]+)\)")
 LANGUAGES = {"cpp": "cpp", "c++": "cpp", "c": "c", "python": "python"}
 
 
-def code_blocks(path):
-    """(language, first line number, text) of each fenced block in path."""
+def code_blocks(path, links):
+    """(language, first line number, text) of each fenced block in path; the
+    (line number, target) of each Markdown link outside them go to links."""
     blocks, language, start, lines = [], None, 0, None
     with open(path, encoding="utf-8") as f:
         for number, line in enumerate(f, 1):
@@ -33,6 +36,8 @@ def code_blocks(path):
             if lines is None:
                 if match:
                     language, start, lines = match.group(1).lower(), number + 1, []
+                else:
+                    links.extend((number, target) for target in LINK.findall(line))
             elif line.rstrip("\n").strip() == "```":
                 blocks.append((language, start, "".join(lines)))
                 lines = None
@@ -71,7 +76,8 @@ def main():
     failures, counts = 0, {"cpp": 0, "c": 0, "python": 0}
     for path in args.files:
         stem = os.path.splitext(os.path.basename(path))[0]
-        for language, line, text in code_blocks(path):
+        links = []
+        for language, line, text in code_blocks(path, links):
             language = LANGUAGES.get(language)
             if language is None:
                 continue
@@ -94,7 +100,13 @@ def main():
                 failures += 1
             else:
                 print(f"ok   {where}: {language} block")
-    print(f"{counts['cpp']} C++, {counts['c']} C and {counts['python']} Python blocks, {failures} failing")
+        for line, target in links:
+            if re.match(r"^[a-z]+:", target) or target.startswith("#"):
+                continue
+            if not os.path.exists(os.path.join(os.path.dirname(path), target.split("#")[0])):
+                print(f"FAIL {path}:{line}: link to {target}, which does not exist")
+                failures += 1
+    print(f"{counts['cpp']} C++, {counts['c']} C and {counts['python']} Python blocks; {failures} failures")
     if counts["cpp"] + counts["c"] == 0:
         print("FAIL: no C or C++ block found")
         return 1
