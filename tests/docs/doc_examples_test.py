@@ -6,10 +6,12 @@ gab::Status fails), and linked into a shared object against libgab.so with no
 undefined symbol (so it uses exported API only). Every ```python block is
 byte-compiled. A block must therefore be complete: its includes, and
 statements inside a function. Every relative link outside the code blocks
-must name a file that exists.
+must name a file that exists. With --gab, the first synopsis of each command
+in a file's code (a line "gab NAME ..." and the lines indented under it) must
+have the words of the usage that `gab NAME` prints.
 
   doc_examples_test.py --cxx CXX --cc CC --library LIBGAB.so --work DIR
-                       [--include DIR]... [--flag FLAG]... [--no-link] FILE.md...
+                       [--include DIR]... [--flag FLAG]... [--no-link] [--gab GAB] FILE.md...
 
 Exit 0 when every block builds and every link resolves, 1 (naming each
 block's or link's file and line, with the compiler's output) otherwise.
@@ -48,6 +50,53 @@ def code_blocks(path, links):
     return blocks
 
 
+def code_lines(path):
+    """(line number, indentation, text) of each line inside a fenced block or an
+    indented (4 spaces) code block of path."""
+    out, inside = [], False
+    with open(path, encoding="utf-8") as f:
+        for number, line in enumerate(f, 1):
+            line = line.rstrip("\n")
+            if FENCE.match(line) or (inside and line.strip() == "```"):
+                inside = not inside
+                continue
+            indent = len(line) - len(line.lstrip(" "))
+            if line.strip() and (inside or indent >= 4):
+                out.append((number, indent, line.strip()))
+    return out
+
+
+def usage(gab, command, cache={}):
+    """The words of `gab COMMAND`'s usage, or None when it is no command."""
+    if command not in cache:
+        result = subprocess.run([gab, command, "--no-such-option"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                text=True)
+        at = result.stderr.find("usage: gab " + command)
+        cache[command] = result.stderr[at + 7:].split() if result.returncode == 2 and at >= 0 else None
+    return cache[command]
+
+
+def synopsis_failures(gab, path, checked):
+    """Checks the first synopsis of each command in path's code; returns the
+    failures, appends the commands checked to checked."""
+    failures, seen, lines = 0, set(), code_lines(path)
+    for i, (number, indent, text) in enumerate(lines):
+        words = text.split()
+        if len(words) < 2 or words[0] != "gab" or words[1] in seen or usage(gab, words[1]) is None:
+            continue
+        seen.add(words[1])
+        checked.append(words[1])
+        for later_number, later_indent, later_text in lines[i + 1:]:
+            if later_number != number + 1 or later_indent <= indent:
+                break
+            words += later_text.split()
+            number = later_number
+        if words != usage(gab, words[1]):
+            print(f"FAIL {path}:{lines[i][0]}: shows {' '.join(words)}\n  gab prints {' '.join(usage(gab, words[1]))}")
+            failures += 1
+    return failures
+
+
 def build(args, language, source, output):
     """The compiler's command for one C or C++ block."""
     if language == "cpp":
@@ -69,14 +118,17 @@ def main():
     parser.add_argument("--include", action="append", default=[])
     parser.add_argument("--flag", action="append", default=[], help="one more compiler flag")
     parser.add_argument("--no-link", action="store_true", help="compile only")
+    parser.add_argument("--gab", help="the gab tool: check the commands' synopses")
     parser.add_argument("files", nargs="+")
     args = parser.parse_args()
     os.makedirs(args.work, exist_ok=True)
 
-    failures, counts = 0, {"cpp": 0, "c": 0, "python": 0}
+    failures, counts, synopses = 0, {"cpp": 0, "c": 0, "python": 0}, []
     for path in args.files:
         stem = os.path.splitext(os.path.basename(path))[0]
         links = []
+        if args.gab:
+            failures += synopsis_failures(args.gab, path, synopses)
         for language, line, text in code_blocks(path, links):
             language = LANGUAGES.get(language)
             if language is None:
@@ -106,7 +158,8 @@ def main():
             if not os.path.exists(os.path.join(os.path.dirname(path), target.split("#")[0])):
                 print(f"FAIL {path}:{line}: link to {target}, which does not exist")
                 failures += 1
-    print(f"{counts['cpp']} C++, {counts['c']} C and {counts['python']} Python blocks; {failures} failures")
+    print(f"{counts['cpp']} C++, {counts['c']} C and {counts['python']} Python blocks, "
+          f"{len(synopses)} command synopses; {failures} failures")
     if counts["cpp"] + counts["c"] == 0:
         print("FAIL: no C or C++ block found")
         return 1
