@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The code shown to users compiles: every ```cpp and ```c block of the given
+"""What the docs show holds: every ```cpp and ```c block of the given
 Markdown files is built as its own translation unit against the installed
 headers' directories, with warnings as errors (so a dropped [[nodiscard]]
 gab::Status fails), and linked into a shared object against libgab.so with no
@@ -13,8 +13,8 @@ have the words of the usage that `gab NAME` prints.
   doc_examples_test.py --cxx CXX --cc CC --library LIBGAB.so --work DIR
                        [--include DIR]... [--flag FLAG]... [--no-link] [--gab GAB] FILE.md...
 
-Exit 0 when every block builds and every link resolves, 1 (naming each
-block's or link's file and line, with the compiler's output) otherwise.
+Exit 0 when every check passes, 1 (naming the file and line of each failure,
+with the compiler's output) otherwise.
 """
 
 import argparse
