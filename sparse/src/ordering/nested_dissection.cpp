@@ -33,6 +33,7 @@
 //   for 14% less ordering time.
 // * runs 3 (was 5): the same measurement as large_candidates.
 // * thread_entries 2^20: about 20 ms of contraction work on one thread.
+// The tables and the commands behind these figures: docs/tuning-engine.md.
 #include "gab/sparse/nested_dissection.h"
 
 #include <algorithm>

@@ -42,7 +42,7 @@ Ordering resolve_ordering(Ordering ordering, int32_t n) {
   // matrices (L^T L + w^2 E^T E): below igea's 134k vertices the codec's
   // times under either ordering were within the runs' noise, igea encoded
   // 19-35% faster and decoded as fast, and from 600k vertices the factor is
-  // 2-3x cheaper and a third smaller.
+  // 2-3x cheaper and a third smaller (docs/tuning-codec.md, "Ordering").
   return n >= kNestedDissectionFrom ? Ordering::kNestedDissection : Ordering::kAmd;
 }
 
