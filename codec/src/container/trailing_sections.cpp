@@ -28,6 +28,10 @@ Status skip_trailing_sections(ByteReader* in, int32_t sections, int32_t* skipped
     }
     ++*skipped;
   }
+  if (in->remaining() != 0) {
+    return Status::Error(StatusCode::kParseError, sections > 0 ? "trailing bytes after the last section"
+                                                               : "trailing bytes after the last chunk");
+  }
   return Status::Ok();
 }
 

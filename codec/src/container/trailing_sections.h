@@ -11,10 +11,11 @@
 
 namespace gab {
 
-// Reads `sections` sections from `in`, checking each frame. Counts the
-// skipped ones; sets *truncated and stops when the file ends inside one.
-// kParseError for a checksum mismatch or a payload without its two leading
-// bytes, kUnsupported for a required section. O(bytes read).
+// Reads the file's last part: `sections` sections from `in`, checking each
+// frame, then nothing more. Counts the skipped sections; sets *truncated and
+// stops when the file ends inside one. kParseError for a checksum mismatch,
+// a payload without its two leading bytes or bytes after the last frame,
+// kUnsupported for a required section. O(bytes read).
 Status skip_trailing_sections(ByteReader* in, int32_t sections, int32_t* skipped, bool* truncated);
 
 }  // namespace gab

@@ -299,7 +299,6 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
   const bool read_all = whole && (!header.detail() || detail);
   if (!stats->truncated && read_all) {
     GAB_RETURN_IF_ERROR(skip_trailing_sections(&in, header.sections, &stats->skipped_sections, &stats->truncated));
-    if (!stats->truncated && in.remaining() != 0) return corrupt(header.sections > 0 ? "trailing bytes after the last section" : "trailing bytes after the last chunk");
   }
   *mesh = std::move(out);
   stats->anchors = state.decoded;

@@ -104,7 +104,6 @@ Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
   if (!info->truncated) {
     int32_t skipped = 0;
     GAB_RETURN_IF_ERROR(skip_trailing_sections(&in, header.sections, &skipped, &info->truncated));
-    if (!info->truncated && in.remaining() != 0) return corrupt(header.sections > 0 ? "trailing bytes after the last section" : "trailing bytes after the last chunk");
   }
   info->geometry_bytes = size - info->connectivity_bytes - info->order_bytes;
   return Status::Ok();
