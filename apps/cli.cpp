@@ -139,6 +139,12 @@ void JsonObject::add_bool(const std::string& key, bool value) { fields_.emplace_
 
 void JsonObject::add_null(const std::string& key) { fields_.emplace_back(key, "null"); }
 
+void JsonObject::add(const std::string& key, const std::vector<JsonObject>& items) {
+  std::string array = "[";
+  for (size_t i = 0; i < items.size(); ++i) array += (i ? ", " : "") + items[i].str();
+  fields_.emplace_back(key, array + "]");
+}
+
 std::string JsonObject::str() const {
   std::string out = "{";
   for (size_t i = 0; i < fields_.size(); ++i) {

@@ -66,6 +66,7 @@ class JsonObject {
   void add_bool(const std::string& key, bool value);  // true / false (not an overload of add:
                                                       // a string literal would convert to bool)
   void add_null(const std::string& key);
+  void add(const std::string& key, const std::vector<JsonObject>& items);  // an array of objects
   std::string str() const;
 
  private:

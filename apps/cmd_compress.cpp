@@ -141,6 +141,20 @@ int run_compress(int argc, char** argv) {
     o.add("detail_step_rel", stats.detail_step_rel);
     o.add("anchor_rms_rel", stats.detail ? stats.anchor_rms_rel : stats.rms_rel);
     o.add("ordering", std::string(ordering_name(stats.ordering)));
+    std::vector<JsonObject> candidates;
+    for (const EncodeStats::Candidate& c : stats.candidates) {
+      JsonObject j;
+      j.add("name", c.name);
+      j.add("bits", static_cast<int64_t>(c.bits));
+      j.add("anchors", static_cast<int64_t>(c.anchors));
+      j.add("estimate_bytes", static_cast<int64_t>(c.estimate_bytes));
+      j.add("bytes", static_cast<int64_t>(c.bytes));
+      j.add_bool("target_met", c.target_met);
+      j.add("seconds", c.seconds);
+      j.add_bool("kept", c.kept);
+      candidates.push_back(std::move(j));
+    }
+    o.add("candidates", candidates);
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }

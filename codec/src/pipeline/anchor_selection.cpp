@@ -72,9 +72,12 @@ Status refine_coefficients(RelaxedReconstruction* rec, const Mesh& mesh, const Q
 // try measured. Out of anchors, refinement is the last way to get closer.
 class RefinementSearch {
  public:
-  RefinementSearch(const Mesh& mesh, const EncodeOptions& options, const Quantizer& quantizer, double scale)
-      : mesh_(mesh), options_(options), quantizer_(quantizer), scale_(scale),
-        position_target_(options.refine ? options.target_rms_rel * kExpectedRefinementGain : options.target_rms_rel) {}
+  // `target_rms_rel`, `target_linf_rel`: the loop's targets (0: none).
+  RefinementSearch(const Mesh& mesh, bool enabled, int iterations, double target_rms_rel, double target_linf_rel,
+                   const Quantizer& quantizer, double scale)
+      : mesh_(mesh), enabled_(enabled), iterations_(iterations), target_rms_(target_rms_rel),
+        target_linf_(target_linf_rel), quantizer_(quantizer), scale_(scale),
+        position_target_(enabled ? target_rms_rel * kExpectedRefinementGain : target_rms_rel) {}
 
   // The RMS the greedy batches aim the unrefined shape at.
   double position_target() const { return position_target_; }
@@ -83,8 +86,8 @@ class RefinementSearch {
   // the refined shape meets the RMS target.
   Status before_step(RelaxedReconstruction* rec, double rms, double linf, bool* stop) {
     *stop = false;
-    const double target = options_.target_rms_rel;
-    if (!(options_.refine && target > 0 && rms <= position_target_)) return Status::Ok();
+    const double target = target_rms_;
+    if (!(enabled_ && target > 0 && rms <= position_target_)) return Status::Ok();
     GAB_RETURN_IF_ERROR(try_refinement(rec));
     if (acceptable(rms, linf) && last_.rms_rel <= target) {
       refined_ = true;
@@ -98,7 +101,7 @@ class RefinementSearch {
 
   // Out of anchors: the last try.
   Status at_cap(RelaxedReconstruction* rec, double rms, double linf) {
-    if (!options_.refine) return Status::Ok();
+    if (!enabled_) return Status::Ok();
     GAB_RETURN_IF_ERROR(try_refinement(rec));
     refined_ = acceptable(rms, linf);
     return Status::Ok();
@@ -109,17 +112,19 @@ class RefinementSearch {
 
  private:
   Status try_refinement(RelaxedReconstruction* rec) {
-    return refine_coefficients(rec, mesh_, quantizer_, options_.refine_iterations, scale_, &last_);
+    return refine_coefficients(rec, mesh_, quantizer_, iterations_, scale_, &last_);
   }
   // A refinement that lowers the RMS without breaking an L-inf target the
   // unrefined shape meets (least squares may raise the maximum).
   bool acceptable(double rms, double linf) const {
-    const double linf_bound = std::max(options_.target_linf_rel, linf);
-    return last_.rms_rel < rms && (!(options_.target_linf_rel > 0) || last_.linf_rel <= linf_bound);
+    const double linf_bound = std::max(target_linf_, linf);
+    return last_.rms_rel < rms && (!(target_linf_ > 0) || last_.linf_rel <= linf_bound);
   }
 
   const Mesh& mesh_;
-  const EncodeOptions& options_;
+  const bool enabled_;
+  const int iterations_;
+  const double target_rms_, target_linf_;
   const Quantizer& quantizer_;
   const double scale_;
   double position_target_;
@@ -143,17 +148,17 @@ std::vector<double> GridPositions::coefficients_of(const std::vector<int32_t>& a
   return coefficients;
 }
 
-Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const EncodeOptions& options,
-                      const GridPositions& grid, double scale, OrderingPlan* ordering, RelaxedReconstruction* rec,
-                      Selection* out) {
+Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const AnchorRules& rules,
+                      const EncodeOptions& options, const GridPositions& grid, double scale,
+                      const OrderingPlan& ordering, RelaxedReconstruction* rec, Selection* out) {
   const int32_t n = mesh.num_vertices();
   *out = Selection();
   int32_t components = 0;
   connected_components(graph, &components);
-  const int32_t cap = options.max_anchors > 0 ? std::min(options.max_anchors, n) : n;
+  const int32_t cap = rules.max_anchors > 0 ? std::min(rules.max_anchors, n) : n;
   // By default at most half the anchors are spread ones: the greedy steps choose the rest.
-  int32_t initial = options.initial_anchors > 0 ? options.initial_anchors
-                                                : std::min(default_initial_anchors(n), std::max(1, cap / 2));
+  int32_t initial = rules.initial_anchors > 0 ? rules.initial_anchors
+                                              : std::min(default_initial_anchors(n), std::max(1, cap / 2));
   initial = std::min(std::max(initial, components), std::max(cap, components));
   AnchorSchedule& schedule = out->schedule;
   GAB_RETURN_IF_ERROR(farthest_point_sampling(graph, initial, {}, &schedule.order));
@@ -161,14 +166,19 @@ Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const EncodeOpti
   schedule.cuts.push_back(schedule.spread);
 
   rec->set_threads(options.threads);
-  ordering->apply(rec);
+  ordering.apply(rec);
   GAB_RETURN_IF_ERROR(rec->init(graph, options.weight, schedule.order, grid.coefficients_of(schedule.order)));
-  ordering->remember(*rec);
   out->flops = rec->cholesky().symbolic().flops;
   const double fraction = options.batch_fraction >= 0 ? options.batch_fraction : default_batch_fraction(out->flops);
   const double growth = options.chunk_growth > 0 ? options.chunk_growth : default_chunk_growth(out->flops);
 
-  RefinementSearch refinement(mesh, options, grid.quantizer, scale);
+  // A grid of step s errs s / 2 in RMS.
+  const double target_rms = rules.stop_at_grid_reach ? std::max(rules.target_rms_rel, kAnchorTargetOverGrid *
+                                                                                          grid.quantizer.step / 2 * scale)
+                                                     : rules.target_rms_rel;
+  const double target_linf = rules.target_linf_rel;
+  RefinementSearch refinement(mesh, rules.refine, options.refine_iterations, target_rms, target_linf, grid.quantizer,
+                              scale);
   std::vector<double> shape, error2(n);
   while (true) {
     GAB_RETURN_IF_ERROR(rec->reconstruct(&shape));
@@ -183,8 +193,8 @@ Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const EncodeOpti
       schedule.shapes.resize(schedule.cuts.size());
       schedule.shapes.back() = shape;
     }
-    const bool rms_met = options.target_rms_rel > 0 && out->rms_rel <= options.target_rms_rel;
-    const bool linf_met = options.target_linf_rel > 0 && out->linf_rel <= options.target_linf_rel;
+    const bool rms_met = target_rms > 0 && out->rms_rel <= target_rms;
+    const bool linf_met = target_linf > 0 && out->linf_rel <= target_linf;
     if (rms_met || linf_met) break;
     if (rec->num_anchors() >= cap) {
       GAB_RETURN_IF_ERROR(refinement.at_cap(rec, out->rms_rel, out->linf_rel));

@@ -13,6 +13,7 @@
 #include "gab/mesh/mesh.h"
 #include "gab/mesh/relaxed_reconstruction.h"
 #include "gab/status.h"
+#include "pipeline/encode_candidates.h"
 #include "pipeline/ordering_choice.h"
 
 namespace gab {
@@ -51,14 +52,16 @@ struct Selection {
   double refined_rms_rel = 0, refined_linf_rel = 0;
 };
 
-// Selects anchors on `mesh` (its edge graph `graph`) until options' stopping
-// rules or every vertex; `rec` is left holding them, in schedule order, at
-// their quantized positions. `scale`: 1 / the bounding-box diagonal. Cost: a
+// Selects anchors on `mesh` (its edge graph `graph`) at their positions on
+// `grid` until `rules` stop the loop or every vertex is an anchor; `options`
+// give the loop's tuning only (weight, batch fraction, chunk growth,
+// refinement iterations, threads, progress), never its targets. `rec` is
+// left holding the anchors in schedule order at their quantized positions,
+// factored in `ordering`. `scale`: 1 / the bounding-box diagonal. Cost: a
 // factorization, then per step a solve and an update or refactorization
-// (and a refinement try: 2 * refine_iterations + 1 solves). `ordering`
-// orders rec's factorization and remembers its permutation.
-Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const EncodeOptions& options,
-                      const GridPositions& grid, double scale, OrderingPlan* ordering, RelaxedReconstruction* rec,
-                      Selection* out);
+// (and a refinement try: 2 * refine_iterations + 1 solves).
+Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const AnchorRules& rules,
+                      const EncodeOptions& options, const GridPositions& grid, double scale,
+                      const OrderingPlan& ordering, RelaxedReconstruction* rec, Selection* out);
 
 }  // namespace gab

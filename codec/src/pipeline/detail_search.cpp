@@ -117,9 +117,11 @@ class Search {
 
 }  // namespace
 
-Status choose_detail(const DetailTopology& topo, const DetailFrame& frame, const std::vector<double>& smooth,
-                     const Mesh& mesh, double scale, double target_rms_rel, double target_linf_rel,
-                     DetailChoice* out) {
+namespace {
+
+// The checks every entry makes.
+Status check_search(const DetailFrame& frame, const std::vector<double>& smooth, double scale, double target_rms_rel,
+                    double target_linf_rel) {
   if (!(frame.extent > 0) || !(scale > 0) || !(target_rms_rel > 0 || target_linf_rel > 0)) {
     return Status::Error(StatusCode::kInvalidArgument, "a detail layer needs a box of some size and an error target");
   }
@@ -130,57 +132,86 @@ Status choose_detail(const DetailTopology& topo, const DetailFrame& frame, const
       return Status::Error(StatusCode::kNotPositiveDefinite, "the anchors' shape is not finite or far outside the box");
     }
   }
+  return Status::Ok();
+}
+
+Trial to_trial(DetailChoice&& c) {
+  Trial t;
+  t.chunk = std::move(c.chunk);
+  t.params = c.params;
+  t.rms_rel = c.rms_rel;
+  t.linf_rel = c.linf_rel;
+  t.met = c.met;
+  return t;
+}
+
+void to_choice(Trial&& t, int trials, DetailChoice* out) {
+  out->chunk = std::move(t.chunk);
+  out->params = t.params;
+  out->rms_rel = t.rms_rel;
+  out->linf_rel = t.linf_rel;
+  out->met = t.met;
+  out->trials = trials;
+}
+
+}  // namespace
+
+Status fit_detail(const DetailTopology& topo, const DetailFrame& frame, const std::vector<double>& smooth,
+                  const Mesh& mesh, double scale, double target_rms_rel, double target_linf_rel, DetailChoice* out) {
+  GAB_RETURN_IF_ERROR(check_search(frame, smooth, scale, target_rms_rel, target_linf_rel));
   Search search(topo, frame, smooth, mesh, scale, target_rms_rel, target_linf_rel);
   const double diagonal = 1.0 / scale;
   // A uniform quantizer of step s errs s / 2 in RMS over three axes, at most s sqrt(3) / 2.
   double start = HUGE_VAL;
   if (target_rms_rel > 0) start = 2 * target_rms_rel * diagonal;
   if (target_linf_rel > 0) start = std::min(start, 2 * target_linf_rel * diagonal / std::sqrt(3.0));
-  const double lo = kMinDetailStep * frame.extent, hi = kMaxDetailStep * frame.extent;
   DetailParams params;
   params.alpha_normal16 = kNormalBlends[0];
   params.alpha_tangent16 = kTangentBlends[0];
-  Trial best = search.largest_step(params, start, lo, hi);
-  if (best.met) {
-    // The blend that codes smallest at that step: the normal weight first,
-    // then the tangential one (the two interact little).
-    const Trial first = best;
-    for (int an : kNormalBlends) {
-      if (an == first.params.alpha_normal16) continue;
-      DetailParams p = first.params;
-      p.alpha_normal16 = an;
+  Trial fitted = search.largest_step(params, start, kMinDetailStep * frame.extent, kMaxDetailStep * frame.extent);
+  to_choice(std::move(fitted), search.trials(), out);
+  return Status::Ok();
+}
+
+Status improve_detail(const DetailTopology& topo, const DetailFrame& frame, const std::vector<double>& smooth,
+                      const Mesh& mesh, double scale, double target_rms_rel, double target_linf_rel,
+                      DetailChoice* choice) {
+  GAB_RETURN_IF_ERROR(check_search(frame, smooth, scale, target_rms_rel, target_linf_rel));
+  if (!choice->met) return Status::Ok();  // nothing meets the targets: the finest step stands
+  Search search(topo, frame, smooth, mesh, scale, target_rms_rel, target_linf_rel);
+  const double lo = kMinDetailStep * frame.extent, hi = kMaxDetailStep * frame.extent;
+  const int trials_before = choice->trials;
+  Trial best = to_trial(std::move(*choice));
+  // The blend that codes smallest at that step: the normal weight first,
+  // then the tangential one (the two interact little). Each weight's values
+  // are tried from the best parameters so far.
+  const DetailParams first = best.params;
+  auto try_each = [&](const auto& values, int DetailParams::*weight) {
+    const DetailParams from = best.params;
+    for (int value : values) {
+      if (value == from.*weight) continue;
+      DetailParams p = from;
+      p.*weight = value;
       Trial t = search.run(p);
       if (t.met && t.chunk.size() < best.chunk.size()) best = std::move(t);
     }
-    const DetailParams normal_best = best.params;
-    for (int at : kTangentBlends) {
-      if (at == normal_best.alpha_tangent16) continue;
-      DetailParams p = normal_best;
-      p.alpha_tangent16 = at;
-      Trial t = search.run(p);
-      if (t.met && t.chunk.size() < best.chunk.size()) best = std::move(t);
-    }
-    // The step again for that blend (its zeros err a little differently).
-    if (best.params.alpha_normal16 != first.params.alpha_normal16 ||
-        best.params.alpha_tangent16 != first.params.alpha_tangent16) {
-      Trial again = search.largest_step(best.params, best.params.step, best.params.step, hi);
-      if (again.met && again.chunk.size() <= best.chunk.size()) best = std::move(again);
-    }
-    // Rate-distortion rounding, each weight with the step it can afford.
-    const DetailParams plain = best.params;
-    for (double weight : kRateWeights) {
-      DetailParams p = plain;
-      p.rate_weight = weight;
-      Trial t = search.largest_step(p, plain.step * kRateStepGuess, lo, hi);
-      if (t.met && t.chunk.size() < best.chunk.size()) best = std::move(t);
-    }
+  };
+  try_each(kNormalBlends, &DetailParams::alpha_normal16);
+  try_each(kTangentBlends, &DetailParams::alpha_tangent16);
+  // The step again for that blend (its zeros err a little differently).
+  if (best.params.alpha_normal16 != first.alpha_normal16 || best.params.alpha_tangent16 != first.alpha_tangent16) {
+    Trial again = search.largest_step(best.params, best.params.step, best.params.step, hi);
+    if (again.met && again.chunk.size() <= best.chunk.size()) best = std::move(again);
   }
-  out->chunk = std::move(best.chunk);
-  out->params = best.params;
-  out->rms_rel = best.rms_rel;
-  out->linf_rel = best.linf_rel;
-  out->met = best.met;
-  out->trials = search.trials();
+  // Rate-distortion rounding, each weight with the step it can afford.
+  const DetailParams plain = best.params;
+  for (double weight : kRateWeights) {
+    DetailParams p = plain;
+    p.rate_weight = weight;
+    Trial t = search.largest_step(p, plain.step * kRateStepGuess, lo, hi);
+    if (t.met && t.chunk.size() < best.chunk.size()) best = std::move(t);
+  }
+  to_choice(std::move(best), trials_before + search.trials(), choice);
   return Status::Ok();
 }
 

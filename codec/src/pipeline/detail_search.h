@@ -22,11 +22,20 @@ struct DetailChoice {
   int trials = 0;
 };
 
-// `smooth`: the anchors' reconstruction as the decoder computes it; `scale`:
-// 1 / the box diagonal; at least one target positive. Cost: about 20
-// trials, each O(n) predictions and codings (igea: ~25 ms each).
-Status choose_detail(const DetailTopology& topo, const DetailFrame& frame, const std::vector<double>& smooth,
-                     const Mesh& mesh, double scale, double target_rms_rel, double target_linf_rel,
-                     DetailChoice* out);
+// The search in two stages, `smooth` the anchors' reconstruction as the
+// decoder computes it, `scale` 1 / the box diagonal, at least one target
+// positive; each trial costs O(n) predictions and codings (igea: ~70 ms).
+// fit_detail: the default blend at the largest step meeting the targets
+// (2-3 trials; the finest step tried when none does): what the encoder
+// ranks its candidates by.
+Status fit_detail(const DetailTopology& topo, const DetailFrame& frame, const std::vector<double>& smooth,
+                  const Mesh& mesh, double scale, double target_rms_rel, double target_linf_rel, DetailChoice* out);
+// improve_detail: from fit_detail's *choice (same arguments), the blend and
+// the rate-distortion rounding that code smallest at the targets (about 17
+// trials); *choice unchanged when the fit missed the targets or nothing
+// codes smaller.
+Status improve_detail(const DetailTopology& topo, const DetailFrame& frame, const std::vector<double>& smooth,
+                      const Mesh& mesh, double scale, double target_rms_rel, double target_linf_rel,
+                      DetailChoice* choice);
 
 }  // namespace gab

@@ -1,12 +1,14 @@
-// The encoder: a short driver over the codec's layers, in the order the
-// decoder reads them back (decoder.cpp):
-//   (the connectivity coded first, connectivity/connectivity_section.h: the
-//   geometry is coded on the mesh as its decoder will return it)
+// The encoder: a short driver over the codec's layers. The connectivity is
+// coded once, first (connectivity/connectivity_section.h): the geometry is
+// coded on the mesh as its decoder will return it. Then, per candidate file
+// (encode_candidates.h: which ones, and what each costs):
 //   select anchors (anchor_selection.h: greedy loop and refinement search, no bytes)
-//   -> code the anchor chunks in each layout (anchors/anchor_chunk.h, anchor_levels.h), keep one
+//   -> code the anchor chunks in each layout (anchor_layouts.h), keep the smaller
 //   -> the refinement chunk (anchors/refinement_chunk.h)
-//   -> the detail chunk over the anchors' shape (detail_search.h, detail/detail_chunk.h)
-//   -> header (container/gab_header.h), connectivity section (connectivity/), chunks, framed.
+//   -> the detail chunk over the anchors' shape, fitted (detail_search.h, detail/detail_chunk.h)
+// and, for the candidates that can still win, in the order of that estimate:
+//   -> the rest of the detail search
+//   -> header (container/gab_header.h), connectivity section, chunks, framed.
 #include "gab/codec/encoder.h"
 
 #include <algorithm>
@@ -14,8 +16,6 @@
 #include <cmath>
 #include <string>
 
-#include "anchors/anchor_chunk.h"
-#include "anchors/anchor_levels.h"
 #include "anchors/refinement_chunk.h"
 #include "connectivity/connectivity_section.h"
 #include "container/framing.h"
@@ -23,8 +23,10 @@
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/relaxed_reconstruction.h"
 #include "gab/mesh/renumber.h"
+#include "pipeline/anchor_layouts.h"
 #include "pipeline/anchor_selection.h"
 #include "pipeline/detail_search.h"
+#include "pipeline/encode_candidates.h"
 #include "pipeline/encoder_tuning.h"
 #include "pipeline/ordering_choice.h"
 
@@ -78,92 +80,6 @@ Box box_of(const Mesh& mesh) {
   return b;
 }
 
-// One layout's anchor chunks, the anchors in the order the file lists them
-// (chunk by chunk, each in vertex order: the refinement's order) and per chunk.
-struct ChunkLayout {
-  std::vector<std::vector<uint8_t>> chunks;
-  std::vector<int32_t> file_order;
-  std::vector<int32_t> chunk_anchors;
-
-  void add(std::vector<uint8_t> chunk, const std::vector<int32_t>& anchors) {
-    chunks.push_back(std::move(chunk));
-    file_order.insert(file_order.end(), anchors.begin(), anchors.end());
-    chunk_anchors.push_back(static_cast<int32_t>(anchors.size()));
-  }
-  size_t bytes() const {
-    size_t total = 0;
-    for (const std::vector<uint8_t>& c : chunks) total += c.size() + kGabFrameBytes;
-    return total;
-  }
-};
-
-// The selection-order layout: chunk k the schedule's k-th cut, its anchors
-// a subset of the vertices the chunks before left free, predicted by the
-// reconstruction from those chunks (chunk 0: by the previous anchor). O(n)
-// per chunk plus the positions.
-ChunkLayout encode_selection_layout(const AnchorSchedule& schedule, const GridPositions& grid) {
-  ChunkLayout out;
-  AnchorModels models;
-  AnchorChunkCoder coder(grid.quantizer, &models);
-  std::vector<char> coded(grid.index.size() / 3, 0);  // anchored by the chunks written so far
-  int32_t begin = 0;
-  for (size_t k = 0; k < schedule.cuts.size(); ++k) {
-    std::vector<int32_t> anchors(schedule.order.begin() + begin, schedule.order.begin() + schedule.cuts[k]);
-    std::sort(anchors.begin(), anchors.end());
-    const double* prediction = k == 0 ? nullptr : schedule.shapes[k - 1].data();
-    out.add(coder.encode(anchors, coded, grid.index, prediction), anchors);
-    for (int32_t v : anchors) coded[v] = 1;
-    begin = schedule.cuts[k];
-  }
-  return out;
-}
-
-// The level layout (anchor_levels.h) of the schedule's anchors: chunk 0 the
-// spread set and the rest's subset, then one level's positions per chunk,
-// each predicted by the reconstruction from the levels before it (level 1:
-// from the spread set, the schedule's first shape). Cost: the decoder's,
-// less one factorization and one solve: levels - 1 solves and updates (or
-// refactorizations).
-Status encode_level_layout(const AnchorSchedule& schedule, const EdgeGraph& graph, double weight, double growth,
-                           int32_t threads, const OrderingPlan& ordering, const GridPositions& grid,
-                           ChunkLayout* out) {
-  std::vector<int32_t> spread(schedule.order.begin(), schedule.order.begin() + schedule.spread);
-  std::vector<int32_t> rest(schedule.order.begin() + schedule.spread, schedule.order.end());
-  std::sort(spread.begin(), spread.end());
-  std::sort(rest.begin(), rest.end());
-  LevelPlan plan;
-  plan.spread = schedule.spread;
-  plan.rest = static_cast<int32_t>(rest.size());
-  plan.growth16 = level_growth16(growth);
-  const std::vector<int32_t> sizes = plan.level_sizes();
-  std::vector<int32_t> order;
-  GAB_RETURN_IF_ERROR(level_order(graph, spread, rest, plan.rest - (sizes.empty() ? 0 : sizes.back()), &order));
-  AnchorModels models;
-  AnchorChunkCoder coder(grid.quantizer, &models);
-  out->add(coder.encode_level_head(plan, spread, rest, grid.index), spread);
-
-  LevelMembers members(order, rest, graph.num_vertices());
-  RelaxedReconstruction levels;  // the decoder's reconstructions from level 2 on
-  levels.set_threads(threads);
-  ordering.apply(&levels);
-  std::vector<double> shape;
-  std::vector<int32_t> before = spread, previous;  // before level 2: the spread set and level 1
-  for (size_t k = 0; k < sizes.size(); ++k) {
-    std::vector<int32_t> level = members.next(sizes, k);
-    if (k == 1) {
-      before.insert(before.end(), previous.begin(), previous.end());
-      GAB_RETURN_IF_ERROR(levels.init(graph, weight, before, grid.coefficients_of(before)));
-    } else if (k > 1) {
-      GAB_RETURN_IF_ERROR(levels.add_anchors_cheapest(previous, grid.coefficients_of(previous)));
-    }
-    if (k > 0) GAB_RETURN_IF_ERROR(levels.reconstruct(&shape));
-    const double* prediction = k == 0 ? schedule.shapes[0].data() : shape.data();
-    out->add(coder.encode_level(level, grid.index, prediction, graph), level);
-    previous = std::move(level);
-  }
-  return Status::Ok();
-}
-
 // Header, connectivity section, chunks; sets the byte counts.
 std::vector<uint8_t> assemble_file(const GabHeader& header, const Mesh& mesh, const CodedConnectivity& coded,
                                    const std::vector<std::vector<uint8_t>>& chunks, EncodeStats* stats) {
@@ -179,219 +95,249 @@ std::vector<uint8_t> assemble_file(const GabHeader& header, const Mesh& mesh, co
   return out.take();
 }
 
-// The targets a detail chunk must meet (both 0: no detail chunk).
-struct DetailTargets {
-  double rms_rel = 0, linf_rel = 0;
-  bool wanted() const { return rms_rel > 0 || linf_rel > 0; }
+// What every candidate of one encode shares, built once.
+struct EncodeContext {
+  EncodeContext(const Mesh& m, const EncodeOptions& o, const CodedConnectivity& c)
+      : mesh(m), options(o), coded(c), box(box_of(m)), graph(build_edge_graph(m)),
+        ordering(encoder_ordering(o.ordering, m.num_vertices())) {}
+
+  double scale() const { return box.diagonal > 0 ? 1.0 / box.diagonal : 1.0; }
+  // Built for the first detail candidate.
+  const DetailTopology& detail_topology() {
+    if (!has_detail_topology_) detail_topology_ = build_detail_topology(mesh.num_vertices(), mesh.triangles, graph);
+    has_detail_topology_ = true;
+    return detail_topology_;
+  }
+
+  const Mesh& mesh;
+  const EncodeOptions& options;
+  const CodedConnectivity& coded;
+  const Box box;
+  const EdgeGraph graph;
+  OrderingPlan ordering;  // its permutation remembered after the first factorization
+
+ private:
+  DetailTopology detail_topology_;
+  bool has_detail_topology_ = false;
 };
 
-// Everything after the grid: anchors, chunks, file. Sets every stat but
-// encode_s and new_index. `coded`: the connectivity (unless geometry only).
-// With `detail` wanted, the anchors stop at options' rules and a detail
-// chunk over their shape meets `detail`'s targets.
-Status encode_on_grid(const Mesh& mesh, const EncodeOptions& options, const Box& box, const Quantizer& quantizer,
-                      int bits, const CodedConnectivity& coded, OrderingPlan* ordering, const DetailTargets& detail,
-                      std::vector<uint8_t>* file, EncodeStats* stats) {
-  *stats = EncodeStats();
-  stats->num_vertices = mesh.num_vertices();
-  stats->num_triangles = mesh.num_triangles();
-  stats->bits = bits;
-  stats->ordering = ordering->choice();
-  const GridPositions grid(mesh, quantizer);
-  const EdgeGraph graph = build_edge_graph(mesh);
+// The header's grid fields and ordering; the rest is set when the file is assembled.
+GabHeader grid_header(const Quantizer& quantizer, int bits, Ordering ordering) {
+  GabHeader header;
+  header.bits = bits;
+  header.ordering = ordering_code(ordering);
+  for (int c = 0; c < 3; ++c) header.box_min[c] = quantizer.min[c];
+  header.step = quantizer.step;
+  return header;
+}
+
+// A candidate after its greedy loop, its anchor chunks in the layout that
+// codes smaller and its fitted detail chunk: all of the file but the rest
+// of the detail search.
+struct Estimate {
+  EncodeCandidate candidate;
+  Quantizer quantizer;
   Selection selection;
   int32_t anchors = 0;
+  ChunkLayout layout;  // the anchor chunks and the refinement chunk
+  bool levels = false;
+  DetailChoice detail;  // the fitted detail chunk (candidate.detail)
+  bool target_met = false;
+  double seconds = 0;
+
+  size_t anchor_bytes() const { return layout.bytes(); }
+  size_t detail_bytes() const { return candidate.detail ? detail.chunk.size() + kGabFrameBytes : 0; }
+  size_t bytes() const { return anchor_bytes() + detail_bytes(); }
+};
+
+// Everything of the candidate's file but the rest of the detail search:
+// the greedy loop, the anchor chunks in the layout that codes smaller (the
+// level layout unless the selection order codes smaller: it can on small
+// smooth meshes, whose greedy order predicts best and whose extra levels'
+// frames weigh; never on the shared meshes), the refinement chunk, the
+// detail chunk at the default blend.
+Status estimate(EncodeContext& ctx, const EncodeCandidate& candidate, Estimate* e) {
+  const auto start = std::chrono::steady_clock::now();
+  const Mesh& mesh = ctx.mesh;
+  const EncodeOptions& options = ctx.options;
+  e->candidate = candidate;
+  e->quantizer = Quantizer::for_box(ctx.box.lo, ctx.box.hi, candidate.anchors.bits);
+  if (candidate.anchors.min_step_rel > 0) {
+    e->quantizer.step = std::max(e->quantizer.step, candidate.anchors.min_step_rel * ctx.box.diagonal);
+  }
+  const GridPositions grid(mesh, e->quantizer);
   {
     // The selection's factor goes before the level layout's is made: at
     // 2.4M vertices each is gigabytes.
     RelaxedReconstruction rec;
-    GAB_RETURN_IF_ERROR(select_anchors(mesh, graph, options, grid, box.diagonal > 0 ? 1.0 / box.diagonal : 1.0,
-                                       ordering, &rec, &selection));
-    anchors = rec.num_anchors();
+    GAB_RETURN_IF_ERROR(select_anchors(mesh, ctx.graph, candidate.anchors, options, grid, ctx.scale(), ctx.ordering,
+                                       &rec, &e->selection));
+    ctx.ordering.remember(rec);
+    e->anchors = rec.num_anchors();
   }
-  stats->curve = std::move(selection.curve);
-
-  // The level layout unless the selection order codes smaller (it can on
-  // small smooth meshes, whose greedy order predicts best and whose extra
-  // levels' frames weigh; never on the shared meshes).
+  const Selection& selection = e->selection;
   ChunkLayout in_selection_order, in_levels;
   if (options.layout != FileLayout::kLevels) in_selection_order = encode_selection_layout(selection.schedule, grid);
   const bool try_levels = options.layout != FileLayout::kSelectionOrder;
   if (try_levels) {
     const double growth = options.chunk_growth > 0 ? options.chunk_growth : default_level_growth(selection.flops);
-    GAB_RETURN_IF_ERROR(encode_level_layout(selection.schedule, graph, options.weight, growth, options.threads,
-                                            *ordering, grid, &in_levels));
+    GAB_RETURN_IF_ERROR(encode_level_layout(selection.schedule, ctx.graph, options.weight, growth, options.threads,
+                                            ctx.ordering, grid, &in_levels));
   }
-  const bool levels = try_levels && (options.layout == FileLayout::kLevels ||
-                                     in_levels.bytes() <= in_selection_order.bytes());
-  ChunkLayout& layout = levels ? in_levels : in_selection_order;
-  stats->chunk_anchors = layout.chunk_anchors;
-  stats->levels = levels;
+  e->levels = try_levels &&
+              (options.layout == FileLayout::kLevels || in_levels.bytes() <= in_selection_order.bytes());
+  e->layout = std::move(e->levels ? in_levels : in_selection_order);
+  if (selection.refined) {
+    e->layout.chunks.push_back(
+        encode_refinement_chunk(e->layout.file_order, selection.schedule.order, selection.refined_grid, grid.index));
+  }
+  if (candidate.detail) {
+    // Over the decoder's shape of all the anchors: the selection's last
+    // (unrefined: detail candidates never refine).
+    const GabHeader header = grid_header(e->quantizer, candidate.anchors.bits, ctx.ordering.choice());
+    GAB_RETURN_IF_ERROR(fit_detail(ctx.detail_topology(), detail_frame_of(header), selection.shape, mesh,
+                                   ctx.scale(), options.target_rms_rel, options.target_linf_rel, &e->detail));
+    e->target_met = e->detail.met;
+  } else {
+    // An anchor count alone is always met.
+    const double rms = selection.refined ? selection.refined_rms_rel : selection.rms_rel;
+    const double linf = selection.refined ? selection.refined_linf_rel : selection.linf_rel;
+    e->target_met = (options.target_rms_rel <= 0 || rms <= options.target_rms_rel) &&
+                    (options.target_linf_rel <= 0 || linf <= options.target_linf_rel);
+  }
+  e->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return Status::Ok();
+}
 
+// The estimated candidate's file: the rest of the detail search, the
+// header, the chunks. Sets every stat but candidates, encode_s and
+// new_index.
+Status finish(EncodeContext& ctx, Estimate* e, std::vector<uint8_t>* file, EncodeStats* stats) {
+  const auto start = std::chrono::steady_clock::now();
+  const Mesh& mesh = ctx.mesh;
+  const EncodeOptions& options = ctx.options;
+  const Selection& selection = e->selection;
+  *stats = EncodeStats();
+  stats->num_vertices = mesh.num_vertices();
+  stats->num_triangles = mesh.num_triangles();
+  stats->bits = e->candidate.anchors.bits;
+  stats->ordering = ctx.ordering.choice();
+  stats->curve = selection.curve;
+  stats->chunk_anchors = e->layout.chunk_anchors;
+  stats->levels = e->levels;
   stats->unrefined_rms_rel = selection.rms_rel;
   stats->rms_rel = selection.refined ? selection.refined_rms_rel : selection.rms_rel;
   stats->linf_rel = selection.refined ? selection.refined_linf_rel : selection.linf_rel;
-  if (selection.refined) {
-    layout.chunks.push_back(
-        encode_refinement_chunk(layout.file_order, selection.schedule.order, selection.refined_grid, grid.index));
-    stats->refinement_bytes = layout.chunks.back().size() + kGabFrameBytes;
-  }
   stats->refined = selection.refined;
-  // An anchor count alone is always met.
-  const bool rms_ok = options.target_rms_rel <= 0 || stats->rms_rel <= options.target_rms_rel;
-  const bool linf_ok = options.target_linf_rel <= 0 || stats->linf_rel <= options.target_linf_rel;
-  stats->target_met = rms_ok && linf_ok;
+  if (selection.refined) stats->refinement_bytes = e->layout.chunks.back().size() + kGabFrameBytes;
+  stats->target_met = e->target_met;
 
-  GabHeader header;
-  header.bits = bits;
-  header.ordering = ordering_code(ordering->choice());
-  for (int c = 0; c < 3; ++c) header.box_min[c] = quantizer.min[c];
-  header.step = quantizer.step;
-  if (detail.wanted()) {
-    // The decoder's shape of all the anchors: selection's last (unrefined:
-    // the caller asks for no refinement).
-    const DetailTopology topo = build_detail_topology(mesh.num_vertices(), mesh.triangles, graph);
-    DetailChoice choice;
-    GAB_RETURN_IF_ERROR(choose_detail(topo, detail_frame_of(header), selection.shape, mesh, 1.0 / box.diagonal,
-                                      detail.rms_rel, detail.linf_rel, &choice));
-    layout.chunks.push_back(std::move(choice.chunk));
+  std::vector<std::vector<uint8_t>> chunks = e->layout.chunks;
+  GabHeader header = grid_header(e->quantizer, e->candidate.anchors.bits, ctx.ordering.choice());
+  if (e->candidate.detail) {
+    GAB_RETURN_IF_ERROR(improve_detail(ctx.detail_topology(), detail_frame_of(header), selection.shape, mesh,
+                                       ctx.scale(), options.target_rms_rel, options.target_linf_rel, &e->detail));
+    chunks.push_back(e->detail.chunk);
     stats->detail = true;
-    stats->detail_bytes = layout.chunks.back().size() + kGabFrameBytes;
-    stats->detail_step_rel = choice.params.step / box.diagonal;
+    stats->detail_bytes = e->detail_bytes();
+    stats->detail_step_rel = e->detail.params.step / ctx.box.diagonal;
     stats->anchor_rms_rel = stats->rms_rel;
-    stats->rms_rel = choice.rms_rel;
-    stats->linf_rel = choice.linf_rel;
-    stats->target_met = choice.met;
+    stats->rms_rel = e->detail.rms_rel;
+    stats->linf_rel = e->detail.linf_rel;
+    stats->target_met = e->detail.met;
   }
 
   header.flags = static_cast<uint8_t>((options.geometry_only ? kGabFlagGeometryOnly : 0) |
-                                      (selection.refined ? kGabFlagRefined : 0) | (levels ? kGabFlagLevels : 0) |
+                                      (selection.refined ? kGabFlagRefined : 0) | (e->levels ? kGabFlagLevels : 0) |
                                       (options.reorder ? kGabFlagReordered : 0) |
                                       (stats->detail ? kGabFlagDetail : 0));
   header.num_vertices = mesh.num_vertices();
   header.num_triangles = mesh.num_triangles();
   header.weight = options.weight;
-  header.anchors = anchors;
-  header.chunks = static_cast<int32_t>(layout.chunks.size());
-  *file = assemble_file(header, mesh, coded, layout.chunks, stats);
+  header.anchors = e->anchors;
+  header.chunks = static_cast<int32_t>(chunks.size());
+  *file = assemble_file(header, mesh, ctx.coded, chunks, stats);
   stats->reordered = options.reorder;
   stats->anchors = header.anchors;
   stats->chunks = header.chunks;
+  e->seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return Status::Ok();
-}
-
-// The grid of the dense regime: its error alone kDenseGridShare of the RMS
-// target, at the fewest bits that cover the box (the step is the file's,
-// not necessarily the longest side over 2^q - 1).
-Quantizer dense_grid(const Box& box, double target_rms_rel, int* bits) {
-  // A grid of step s errs s / 2 in RMS (uniform error on three axes).
-  const double step = 2 * kDenseGridShare * target_rms_rel * box.diagonal;
-  *bits = kGabMinBits;
-  while (*bits < kGabMaxBits && static_cast<double>((int64_t{1} << *bits) - 1) * step < box.extent) ++*bits;
-  Quantizer q = Quantizer::for_box(box.lo, box.hi, *bits);
-  q.step = std::max(q.step, step);
-  return q;
-}
-
-// The anchors-only file (no detail chunk), with the dense regime's retry.
-Status encode_anchors_only(const Mesh& mesh, const EncodeOptions& options, const Box& box,
-                           const CodedConnectivity& coded, OrderingPlan* ordering, std::vector<uint8_t>* file,
-                           EncodeStats* stats) {
-  const int bits = options.bits != 0 ? options.bits
-                                     : default_bits(box.diagonal > 0 ? box.extent / box.diagonal : 1.0,
-                                                    options.target_rms_rel, options.target_linf_rel);
-  const Quantizer quantizer = Quantizer::for_box(box.lo, box.hi, bits);
-  GAB_RETURN_IF_ERROR(
-      encode_on_grid(mesh, options, box, quantizer, bits, coded, ordering, DetailTargets(), file, stats));
-  // Dense regime: most vertices became anchors, so nearly every vertex pays
-  // for the grid; a coarser one, with a few more anchors, may cost less.
-  const bool dense = stats->anchors > kDenseAnchorFraction * mesh.num_vertices();
-  if (dense && options.bits == 0 && options.target_rms_rel > 0 && box.diagonal > 0) {
-    int coarse_bits = 0;
-    const Quantizer coarse = dense_grid(box, options.target_rms_rel, &coarse_bits);
-    if (coarse.step > quantizer.step) {
-      std::vector<uint8_t> other;
-      EncodeStats other_stats;
-      GAB_RETURN_IF_ERROR(
-          encode_on_grid(mesh, options, box, coarse, coarse_bits, coded, ordering, DetailTargets(), &other,
-                         &other_stats));
-      if (other_stats.target_met && other.size() < file->size()) {
-        *file = std::move(other);
-        *stats = std::move(other_stats);
-      }
-    }
-  }
-  return Status::Ok();
-}
-
-// A file whose anchors are `anchors` (on their own default grid unless
-// options fix q), a detail chunk meeting options' targets after them.
-Status encode_with_detail(const Mesh& mesh, const EncodeOptions& options, const Box& box,
-                          const CodedConnectivity& coded, OrderingPlan* ordering, const DetailAnchors& anchors,
-                          std::vector<uint8_t>* file, EncodeStats* stats) {
-  const int bits = options.bits != 0 ? options.bits
-                   : anchors.bits != 0 ? anchors.bits
-                                       : default_bits(box.extent / box.diagonal, anchors.rms_rel, 0);
-  const Quantizer quantizer = Quantizer::for_box(box.lo, box.hi, bits);
-  EncodeOptions anchor_options = options;
-  // A grid of step s errs s / 2 in RMS: a fixed coarse q cannot take the
-  // anchors below about that, and trying would anchor every vertex.
-  anchor_options.target_rms_rel =
-      std::max(anchors.rms_rel, kAnchorTargetOverGrid * quantizer.step / 2 / box.diagonal);
-  anchor_options.target_linf_rel = 0;
-  anchor_options.refine = false;  // the detail chunk moves every vertex anyway
-  if (anchor_options.initial_anchors <= 0) {
-    anchor_options.initial_anchors =
-        std::max<int32_t>(1, static_cast<int32_t>(mesh.num_vertices() * kDetailSpreadShare));
-  }
-  const int32_t cap =
-      anchors.spread_only ? anchor_options.initial_anchors
-                          : std::max(anchor_options.initial_anchors,
-                                     static_cast<int32_t>(mesh.num_vertices() * kDetailMaxAnchorShare));
-  anchor_options.max_anchors = options.max_anchors > 0 ? std::min(options.max_anchors, cap) : cap;
-  DetailTargets targets;
-  targets.rms_rel = options.target_rms_rel;
-  targets.linf_rel = options.target_linf_rel;
-  return encode_on_grid(mesh, anchor_options, box, quantizer, bits, coded, ordering, targets, file, stats);
 }
 
 // Whether candidate b is better than a: meeting the targets first, then smaller.
-bool better(const EncodeStats& a, size_t a_bytes, const EncodeStats& b, size_t b_bytes) {
-  if (a.target_met != b.target_met) return b.target_met;
+bool better(bool a_met, double a_bytes, bool b_met, double b_bytes) {
+  if (a_met != b_met) return b_met;
   return b_bytes < a_bytes;
 }
 
 // encode_mesh after the checks, on the mesh as the decoder will number it:
-// the candidate files detail_plan names, the best kept.
+// every candidate of encode_candidates estimated, then finished from the
+// best estimate on while one might still beat the best file
+// (encode_candidates.h), the best file kept.
 Status encode_numbered(const Mesh& mesh, const EncodeOptions& options, const CodedConnectivity& coded,
                        std::vector<uint8_t>* file, EncodeStats* stats) {
-  const Box box = box_of(mesh);
-  const bool detail_possible = options.detail != DetailMode::kOff && box.diagonal > 0 && box.extent > 0 &&
-                               (options.target_rms_rel > 0 || options.target_linf_rel > 0);
-  const DetailPlan plan = detail_plan(options.target_rms_rel, options.target_linf_rel);
-  OrderingPlan ordering(encoder_ordering(options.ordering, mesh.num_vertices()));
-  bool have = false;
-  if (!detail_possible || (options.detail == DetailMode::kAuto && plan.try_anchors_only)) {
-    GAB_RETURN_IF_ERROR(encode_anchors_only(mesh, options, box, coded, &ordering, file, stats));
-    have = true;
-  }
-  if (!detail_possible) return Status::Ok();
-  // Detail candidates: where the plan says they may win, or to rescue a
-  // target the anchors alone missed, or because they were asked for.
-  const bool try_detail = !have || plan.try_detail || !stats->target_met;
-  if (!try_detail) return Status::Ok();
-  for (const DetailAnchors& anchors : plan.anchors) {
-    // A fixed q puts every candidate's anchors on the same grid: the first is enough.
-    if (options.bits != 0 && &anchors != &plan.anchors.front()) break;
-    std::vector<uint8_t> other;
-    EncodeStats other_stats;
-    GAB_RETURN_IF_ERROR(encode_with_detail(mesh, options, box, coded, &ordering, anchors, &other, &other_stats));
-    if (!have || better(*stats, file->size(), other_stats, other.size())) {
-      *file = std::move(other);
-      *stats = std::move(other_stats);
-      have = true;
+  EncodeContext ctx(mesh, options, coded);
+  MeshSize size;
+  size.num_vertices = mesh.num_vertices();
+  size.extent = ctx.box.extent;
+  size.diagonal = ctx.box.diagonal;
+  std::vector<EncodeCandidate> candidates = encode_candidates(options, size);
+  std::vector<Estimate> estimates;
+  bool met = false;
+  for (size_t i = 0; i < candidates.size(); ++i) {
+    if (candidates[i].rescue_only && met) continue;
+    Estimate e;
+    GAB_RETURN_IF_ERROR(estimate(ctx, candidates[i], &e));
+    met = met || e.target_met;
+    EncodeCandidate retry;
+    if (dense_grid_candidate(options, size, candidates[i], e.anchors, &retry)) {
+      candidates.insert(candidates.begin() + static_cast<std::ptrdiff_t>(i) + 1, retry);
     }
+    estimates.push_back(std::move(e));
   }
+  // Finished from the best estimate on.
+  std::vector<size_t> order(estimates.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    return better(estimates[b].target_met, static_cast<double>(estimates[b].bytes()), estimates[a].target_met,
+                  static_cast<double>(estimates[a].bytes()));
+  });
+  std::vector<EncodeStats::Candidate> report(estimates.size());
+  size_t kept = order.front();
+  size_t overhead = 0;  // at least the bytes of a file beyond its chunks: header, connectivity
+  bool have = false;
+  for (size_t i : order) {
+    Estimate& e = estimates[i];
+    EncodeStats::Candidate& r = report[i];
+    r.name = e.candidate.name;
+    r.bits = e.candidate.anchors.bits;
+    r.anchors = e.anchors;
+    r.estimate_bytes = e.bytes();
+    r.target_met = e.target_met;
+    // The least this candidate's file may come to: the rest of the detail
+    // search shrinks a fitted detail chunk to no less than kLeastDetailGain.
+    const double least = static_cast<double>(overhead + e.anchor_bytes()) +
+                         static_cast<double>(e.detail_bytes()) * kLeastDetailGain;
+    if (!have || better(stats->target_met, static_cast<double>(file->size()), e.target_met, least)) {
+      std::vector<uint8_t> other;
+      EncodeStats other_stats;
+      GAB_RETURN_IF_ERROR(finish(ctx, &e, &other, &other_stats));
+      r.bytes = other.size();
+      r.target_met = other_stats.target_met;
+      overhead = other_stats.connectivity_bytes + other_stats.order_bytes + kGabMinHeaderBytes;
+      if (!have || better(stats->target_met, static_cast<double>(file->size()), other_stats.target_met,
+                          static_cast<double>(other.size()))) {
+        *file = std::move(other);
+        *stats = std::move(other_stats);
+        kept = i;
+        have = true;
+      }
+    }
+    r.seconds = e.seconds;
+    e = Estimate();  // its selection's shapes are not needed again
+  }
+  report[kept].kept = true;
+  stats->candidates = std::move(report);
   return Status::Ok();
 }
 

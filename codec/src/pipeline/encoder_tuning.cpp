@@ -31,20 +31,5 @@ int default_bits(double extent_over_diagonal, double target_rms_rel, double targ
   return kGabMaxBits;
 }
 
-DetailPlan detail_plan(double target_rms_rel, double target_linf_rel) {
-  DetailPlan plan;
-  const double target = target_rms_rel > 0 ? target_rms_rel : target_linf_rel / kLinfOverRms;
-  if (!(target > 0)) return plan;
-  plan.try_anchors_only = target >= kAnchorsOnlyFrom;
-  plan.try_detail = target < kDetailFrom;
-  DetailAnchors anchors;
-  anchors.rms_rel = std::max(kDetailAnchorTarget, kAnchorTargetOverTarget * target);
-  plan.anchors.push_back(anchors);
-  anchors.bits = kCoarseAnchorBits;
-  anchors.spread_only = target < kSpreadOnlyBelow;
-  plan.anchors.push_back(anchors);
-  return plan;
-}
-
 }  // namespace gab
 

@@ -6,7 +6,6 @@
 #pragma once
 
 #include <cstdint>
-#include <vector>
 
 namespace gab {
 
@@ -48,27 +47,15 @@ constexpr double kDenseAnchorFraction = 0.5;
 constexpr double kDenseGridShare = 0.95;
 
 // The detail layer (EncodeOptions::detail, auto): which candidate files the
-// encoder codes for an error target, the smallest meeting it kept. The
-// target in RMS terms is the RMS target, else the L-inf target over
-// kLinfOverRms. Anchors alone win down to about 3e-4 and lose from 1e-4
-// down (the measured crossing: docs/tuning-codec.md). A detail layer codes
-// smallest over the anchors of a coarse target (about 3e-3, whatever the
-// final target), not more of them: on the grid that target calls for, or
-// on a coarser one (kCoarseAnchorBits) with fewer anchors, whichever codes
+// encoder codes for an error target (encode_candidates.h). The target in
+// RMS terms is the RMS target, else the L-inf target over kLinfOverRms.
+// Anchors alone win down to about 3e-4 and lose from 1e-4 down (the
+// measured crossing: docs/tuning-codec.md). A detail layer codes smallest
+// over the anchors of a coarse target (about 3e-3, whatever the final
+// target), not more of them: on the grid that target calls for, or on a
+// coarser one (kCoarseAnchorBits) with fewer anchors, whichever codes
 // smaller (the coarse grid on 7 of the 8 shared meshes at 1e-4, by 0.1-6%;
 // camel-head, with sharp creases, wants the finer by 7%).
-struct DetailAnchors {
-  double rms_rel = 0;        // the anchors' own RMS target (greedy steps after the spread set)
-  int bits = 0;              // their grid; 0: default_bits for rms_rel
-  bool spread_only = false;  // the spread set alone (no greedy steps)
-};
-struct DetailPlan {
-  bool try_anchors_only = true;        // the anchors-only file
-  bool try_detail = false;             // files with a detail layer, over each of...
-  std::vector<DetailAnchors> anchors;  // ...these anchor sets
-};
-DetailPlan detail_plan(double target_rms_rel, double target_linf_rel);
-
 constexpr double kLinfOverRms = 4;
 // Below this target (in RMS terms) the anchors-only file is not tried; from
 // kDetailFrom down the detail candidates are.

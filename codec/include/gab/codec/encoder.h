@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "gab/codec/matrix_ordering.h"
@@ -18,10 +19,20 @@ struct EncodeOptions;
 struct EncodeStats;
 
 // Compresses `mesh` (valid per validate_mesh) into `file`. kInvalidArgument
-// for a bad option or mesh. Cost: a factorization, then per greedy step a
-// solve and an update or refactorization; the level layout adds a decoder's
-// work; the dense regime (most vertices anchors, q chosen by the encoder)
-// may encode twice. The file is byte-identical for any thread count.
+// for a bad option or mesh. The file is byte-identical for any thread count.
+//
+// Cost: the encoder codes one to three candidate files and keeps the
+// smallest that meets the targets (EncodeStats::candidates lists them).
+// Each candidate is a greedy loop (a factorization, then per step a solve
+// and an update or refactorization), with a detail layer also a search of
+// 2-3 O(n) trials. The candidates close to the best (within 2%) are then
+// finished: the level layout (a decoder's work) and, with a detail layer,
+// about 17 more O(n) trials. Which candidates, by target: one (anchors
+// alone) down to a relative RMS of 5e-4, and a second on a coarser grid when
+// that anchored over half the vertices; between 5e-4 and 2e-4 anchors alone
+// and two with a detail layer; below 2e-4 (or with DetailMode::kOn) the two
+// with a detail layer, whose greedy loops stop at about 3e-3. An anchor
+// count alone, or DetailMode::kOff, codes one.
 Status encode_mesh(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* file, EncodeStats* stats);
 // The same file from a mesh the caller gives up: its arrays are taken
 // rather than copied (one copy of them fewer at the factorization's peak);
@@ -91,6 +102,18 @@ struct GreedyStep {
 };
 
 struct EncodeStats {
+  // One candidate file the encoder coded (encode_mesh's cost).
+  struct Candidate {
+    std::string name;           // "anchors", "anchors on a coarser grid", "detail", "detail over coarse anchors"
+    int bits = 0;               // its anchors' q
+    int32_t anchors = 0;
+    size_t estimate_bytes = 0;  // its chunks after the greedy loop, in selection order, detail at the default blend
+    size_t bytes = 0;           // the whole file when finished; 0 when its estimate was too far from the best
+    bool target_met = false;
+    double seconds = 0;
+    bool kept = false;          // the file returned
+  };
+
   int32_t num_vertices = 0, num_triangles = 0;
   int32_t anchors = 0, chunks = 0;
   int bits = 0;                   // q used
@@ -113,6 +136,7 @@ struct EncodeStats {
   std::vector<GreedyStep> curve;  // after every greedy step
   std::vector<int32_t> chunk_anchors;  // anchors per chunk
   Ordering ordering = Ordering::kAmd;  // the factorizations' ordering (never kAuto)
+  std::vector<Candidate> candidates;   // in the order coded
   double encode_s = 0;
 };
 
