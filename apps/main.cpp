@@ -2,6 +2,8 @@
 // (the contract: exit 0 ok, 1 failure, 2 usage; JSON on stdout only).
 #include <cstdio>
 #include <cstring>
+#include <exception>
+#include <new>
 #include <string>
 
 #include "cli.h"
@@ -53,7 +55,17 @@ int main(int argc, char** argv) {
     return gab::cli::kExitOk;
   }
   if (!std::strcmp(command, "--version")) command = "version";
-  if (const gab::cli::Command* c = gab::cli::find_command(command)) return c->run(argc - 2, argv + 2);
+  if (const gab::cli::Command* c = gab::cli::find_command(command)) {
+    // The library reports failures as Status; what escapes as an exception
+    // (memory exhausted, above all) is still one line and exit 1.
+    try {
+      return c->run(argc - 2, argv + 2);
+    } catch (const std::bad_alloc&) {
+      return gab::cli::fail(std::string("out of memory (") + command + ")");
+    } catch (const std::exception& e) {
+      return gab::cli::fail(std::string(command) + ": " + e.what());
+    }
+  }
   std::fprintf(stderr, "gab: unknown command '%s' (try 'gab help')\n", command);
   return gab::cli::kExitUsage;
 }

@@ -70,6 +70,16 @@ TEST(CliTest, BadInputExitsOneWithOneLine) {
   EXPECT_EQ(r2.err, "gab: error: " + bad + ":6: face 0: vertex index 7 out of range [0, 3)\n");
 }
 
+TEST(CliTest, MemoryExhaustionExitsOneWithOneLine) {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+  GTEST_SKIP() << "a sanitizer's shadow memory does not start under an address-space cap";
+#endif
+  // /dev/zero never ends: reading it as a file runs out of a 200 MB address space.
+  const CommandResult r = run_gab("info /dev/zero", "ulimit -v 200000 &&");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "gab: error: out of memory (info)\n");
+}
+
 TEST(CliTest, NotPositiveDefiniteIsAFailureNamingTheColumn) {
   const std::string path = write_scratch_file(
       "indef.mtx", "%%MatrixMarket matrix coordinate real symmetric\n2 2 2\n1 1 1\n2 2 -1\n");
