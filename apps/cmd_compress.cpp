@@ -99,7 +99,7 @@ int run_compress(int argc, char** argv) {
   status = encode_mesh(std::move(mesh), options, &file, &stats);  // not read again here
   if (tty) std::fprintf(stderr, "\n");
   if (!status.ok()) return fail(in + ": " + status.message());
-  status = write_file_atomically(out, std::string_view(reinterpret_cast<const char*>(file.data()), file.size()));
+  status = write_output_file(out, std::string_view(reinterpret_cast<const char*>(file.data()), file.size()));
   if (!status.ok()) return fail(status.message());
   if (!stats.target_met && stats.detail) {
     std::fprintf(stderr,
@@ -158,16 +158,19 @@ int run_compress(int argc, char** argv) {
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }
-  std::printf("%s -> %s: %d vertices, %d triangles, %d anchors in %d chunks%s, q = %d\n", in.c_str(), out.c_str(),
-              stats.num_vertices, stats.num_triangles, stats.anchors, stats.chunks,
-              stats.refined  ? " (the last a least-squares refinement)"
-              : stats.detail ? " (the last the detail layer)"
-                             : "",
-              stats.bits);
-  std::printf("%zu bytes (geometry %zu = %.3f bits/vertex, connectivity %zu, vertex order %zu); error rms %.3g, max "
-              "%.3g of the bounding-box diagonal; %.2f s\n",
-              stats.bytes, stats.geometry_bytes, bpv, stats.connectivity_bytes, stats.order_bytes, stats.rms_rel,
-              stats.linf_rel, stats.encode_s);
+  // The summary goes to stderr when the file itself goes to stdout.
+  FILE* summary = out == "/dev/stdout" || out == "/dev/fd/1" || out == "/proc/self/fd/1" ? stderr : stdout;
+  std::fprintf(summary, "%s -> %s: %d vertices, %d triangles, %d anchors in %d chunks%s, q = %d\n", in.c_str(),
+               out.c_str(), stats.num_vertices, stats.num_triangles, stats.anchors, stats.chunks,
+               stats.refined  ? " (the last a least-squares refinement)"
+               : stats.detail ? " (the last the detail layer)"
+                              : "",
+               stats.bits);
+  std::fprintf(summary,
+               "%zu bytes (geometry %zu = %.3f bits/vertex, connectivity %zu, vertex order %zu); error rms %.3g, max "
+               "%.3g of the bounding-box diagonal; %.2f s\n",
+               stats.bytes, stats.geometry_bytes, bpv, stats.connectivity_bytes, stats.order_bytes, stats.rms_rel,
+               stats.linf_rel, stats.encode_s);
   return kExitOk;
 }
 

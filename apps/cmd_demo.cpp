@@ -89,7 +89,7 @@ int run_demo(int argc, char** argv) {
       return fail("decoded shape differs from the encoder's reconstruction");
     }
     const std::string stem = std::string(kOutDir) + "/anchors-" + std::to_string(es.anchors);
-    status = write_file_atomically(stem + ".gab", std::string_view(reinterpret_cast<const char*>(file.data()), file.size()));
+    status = write_output_file(stem + ".gab", std::string_view(reinterpret_cast<const char*>(file.data()), file.size()));
     if (status.ok()) status = write_mesh(stem + ".off", decoded);
     if (!status.ok()) return fail(status.message());
     std::printf("%8d %10zu %10zu %10.3f %11.3e %11.3e %9.2f %9.2f\n", es.anchors, es.bytes, es.geometry_bytes,

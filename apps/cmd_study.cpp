@@ -424,7 +424,7 @@ int run_study(int argc, char** argv) {
   for (const auto& [option, text] : {std::pair<const char*, std::string>("--csv", csv(results)),
                                      std::pair<const char*, std::string>("--svg", svg(results, growth))}) {
     if (!args.has(option)) continue;
-    const Status written = write_file_atomically(args.get(option), text);
+    const Status written = write_output_file(args.get(option), text);
     if (!written.ok()) return fail(written.message());
   }
   return kExitOk;

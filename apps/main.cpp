@@ -1,5 +1,6 @@
 // gab: the command-line tool. Dispatches to one function per sub-command
 // (the contract: exit 0 ok, 1 failure, 2 usage; JSON on stdout only).
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -8,6 +9,7 @@
 
 #include "cli.h"
 #include "commands.h"
+#include "gab/mesh/file_io.h"
 #include "malloc_tuning.h"
 
 namespace {
@@ -41,10 +43,20 @@ std::string help_text() {
          "factorizations (compress/decompress default: all cores; factor: 1); results never depend on it.\n";
 }
 
+// Ctrl-C, SIGTERM, SIGHUP: the output files being written leave no
+// temporary behind; then the signal's default action (the exit status a
+// shell expects).
+extern "C" void on_stop_signal(int signal) {
+  gab::remove_partial_outputs();
+  std::signal(signal, SIG_DFL);
+  std::raise(signal);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   gab::cli::tune_malloc();
+  for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, on_stop_signal);
   if (argc < 2) {
     std::fputs(help_text().c_str(), stderr);
     return gab::cli::kExitUsage;

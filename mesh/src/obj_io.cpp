@@ -255,7 +255,7 @@ std::string format_obj(const Mesh& mesh) {
 
 Status write_obj(const std::string& path, const Mesh& mesh) {
   GAB_RETURN_IF_ERROR(validate_mesh(mesh, path));
-  return write_file_atomically(path, format_obj(mesh));
+  return write_output_file(path, format_obj(mesh));
 }
 
 }  // namespace gab

@@ -178,7 +178,7 @@ std::string format_off(const Mesh& mesh) {
 
 Status write_off(const std::string& path, const Mesh& mesh) {
   GAB_RETURN_IF_ERROR(validate_mesh(mesh, path));
-  return write_file_atomically(path, format_off(mesh));
+  return write_output_file(path, format_off(mesh));
 }
 
 }  // namespace gab

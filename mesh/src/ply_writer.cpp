@@ -87,7 +87,7 @@ Status write_ply(const std::string& path, const Mesh& mesh, const PlyWriteOption
       }
     }
   }
-  return write_file_atomically(path, format_ply(mesh, options));
+  return write_output_file(path, format_ply(mesh, options));
 }
 
 }  // namespace gab

@@ -49,6 +49,21 @@ bool is_one_json_line(const std::string& out) {
   return !out.empty() && out.front() == '{' && out.find('\n') == out.size() - 1 && out[out.size() - 2] == '}';
 }
 
+TEST(CodecCliTest, CompressWritesStdoutAndDevicesInPlace) {
+  const std::string in = write_scratch_file("stdout.off", torus_off(20, 10));
+  const std::string gab = write_scratch_file("stdout.gab", "");
+  ASSERT_EQ(run_gab("compress -i " + in + " -o " + gab + " --anchors 30").exit_code, 0);
+  // The file alone on stdout: the summary moves to stderr.
+  const CommandResult piped = run_gab("compress -i " + in + " -o /dev/stdout --anchors 30");
+  ASSERT_EQ(piped.exit_code, 0) << piped.err;
+  EXPECT_EQ(piped.out, read_all(gab));
+  EXPECT_NE(piped.err.find(" -> /dev/stdout: 200 vertices"), std::string::npos) << piped.err;
+  EXPECT_EQ(run_gab("compress -i " + in + " -o /dev/null --anchors 30").exit_code, 0);
+  const CommandResult full = run_gab("compress -i " + in + " -o /dev/full --anchors 30");
+  EXPECT_EQ(full.exit_code, 1);
+  EXPECT_EQ(full.err, "gab: error: /dev/full: cannot write: No space left on device\n");
+}
+
 TEST(CodecCliTest, CompressDecompressInfoRoundTrip) {
   const std::string in = write_scratch_file("rt.off", torus_off(40, 20));
   const std::string gab = write_scratch_file("rt.gab", "");

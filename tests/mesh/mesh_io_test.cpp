@@ -30,7 +30,7 @@ TEST(MeshIoTest, WriteThenReadEveryFormatByExtension) {
     for (size_t i = 0; i < m.positions.size(); ++i) {
       EXPECT_NEAR(back.positions[i], m.positions[i], 1e-15) << ext;  // OBJ: tinyobjloader's rounding
     }
-    EXPECT_TRUE(gab_test::scratch_entries(base_name(path) + ".tmp").empty()) << "temporary file left behind";
+    EXPECT_TRUE(gab_test::scratch_entries(base_name(path) + ".gab-partial").empty()) << "temporary file left behind";
     std::remove(path.c_str());
   }
 }
@@ -70,7 +70,7 @@ TEST(MeshIoTest, AtomicWriteReplacesWholeOrNothing) {
   s = write_mesh(dir, back);
   EXPECT_EQ(s.code(), StatusCode::kIoError);
   EXPECT_EQ(s.message(), dir + ": cannot write: Is a directory");
-  EXPECT_TRUE(gab_test::scratch_entries(base_name(dir) + ".tmp").empty());
+  EXPECT_TRUE(gab_test::scratch_entries(base_name(dir) + ".gab-partial").empty());
   ::rmdir(dir.c_str());
 
   Mesh invalid = back;

@@ -1,4 +1,4 @@
-// Whole-file reads and atomic writes (temporary file + rename), shared by the
+// Whole-file reads and output writes (atomic for regular files), shared by the
 // mesh readers and writers and by anything above that writes output files.
 #pragma once
 
@@ -13,10 +13,23 @@ namespace gab {
 // path and the system's reason. O(file size).
 Status read_file(const std::string& path, std::string* bytes);
 
-// Writes `bytes` to `path` atomically: a temporary file in the same folder
-// (created exclusively, mode 0666 less the umask), flushed to disk, then
-// renamed over `path`. On any failure the temporary is removed and `path` is
-// untouched. O(size).
-Status write_file_atomically(const std::string& path, std::string_view bytes);
+// Writes `bytes` to the output `path` the way its user means it:
+// - a new path or a regular file: atomically. A temporary file beside the
+//   target (PATH.gab-partial-PID-N, created exclusively) is flushed to disk,
+//   then renamed over it, keeping a replaced file's permission bits: a reader
+//   sees the old file or the new one, and on failure the target is untouched.
+// - a symbolic link: followed (a dangling one too); its target is written.
+// - anything else that exists (a device such as /dev/null, /dev/stdout, a
+//   FIFO): opened and written in place, every write error reported (ENOSPC
+//   from /dev/full).
+// A directory is refused, and so is a regular file without write permission
+// for the caller or with none at all, root included (a read-only file is a
+// decision its owner made: make it writable or remove it first).
+// Errors: kIoError naming `path` and the reason. O(size).
+Status write_output_file(const std::string& path, std::string_view bytes);
+
+// Removes the temporary files of the writes in progress: for a program's
+// SIGINT / SIGTERM handler (the library installs none). Async-signal-safe.
+void remove_partial_outputs() noexcept;
 
 }  // namespace gab
