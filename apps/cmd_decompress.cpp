@@ -67,6 +67,10 @@ int run_decompress(int argc, char** argv) {
   if (!status.ok()) return fail(in + ": " + status.message());
   status = write_mesh(out, mesh);
   if (!status.ok()) return fail(status.message());
+  if (options.connectivity != nullptr && !stats.geometry_only) {
+    std::fprintf(stderr, "gab decompress: warning: --connectivity ignored: %s carries its own connectivity\n",
+                 in.c_str());
+  }
   if (stats.truncated) {
     std::fprintf(stderr, "gab decompress: warning: %s is truncated: decoded %d of %d chunks (%d of %d anchors)\n",
                  in.c_str(), stats.chunks, stats.chunks_in_file, stats.anchors, stats.anchors_in_file);

@@ -4,6 +4,7 @@
 // the bounding-box diagonal of A.
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "cli.h"
 #include "commands.h"
@@ -82,19 +83,24 @@ int run_diff(int argc, char** argv) {
     std::printf("%s\n", out.str().c_str());
     return kExitOk;
   }
-  std::printf("A %s: %d vertices, %d triangles, bounding-box diagonal %.6g\n", path_a.c_str(), a.num_vertices(),
-              a.num_triangles(), diagonal);
+  // Relative to the diagonal, or "n/a" for a box of no size (one point).
+  auto rel = [diagonal](double value) {
+    char text[32] = "n/a";
+    if (diagonal > 0) std::snprintf(text, sizeof(text), "%.6g", value / diagonal);
+    return std::string(text);
+  };
+  std::printf("A %s: %d vertices, %d triangles, bounding-box diagonal %.6g%s\n", path_a.c_str(), a.num_vertices(),
+              a.num_triangles(), diagonal, diagonal > 0 ? "" : " (no size: no relative distances)");
   std::printf("B %s: %d vertices, %d triangles\n", path_b.c_str(), b.num_vertices(), b.num_triangles());
   if (same_count) {
-    std::printf("vertex distance: max %.6g (%.6g of the diagonal), rms %.6g (%.6g)\n", vd.linf,
-                relative(vd.linf, diagonal), vd.rms, relative(vd.rms, diagonal));
+    std::printf("vertex distance: max %.6g (%s of the diagonal), rms %.6g (%s)\n", vd.linf, rel(vd.linf).c_str(),
+                vd.rms, rel(vd.rms).c_str());
   } else {
     std::printf("vertex distance: n/a (vertex counts differ)\n");
   }
-  std::printf("surface distance (%lld + %lld samples): mean %.6g (%.6g), rms %.6g (%.6g), Hausdorff %.6g (%.6g)\n",
+  std::printf("surface distance (%lld + %lld samples): mean %.6g (%s), rms %.6g (%s), Hausdorff %.6g (%s)\n",
               static_cast<long long>(sd.a_to_b.samples), static_cast<long long>(sd.b_to_a.samples), sd.mean,
-              relative(sd.mean, diagonal), sd.rms, relative(sd.rms, diagonal), sd.hausdorff,
-              relative(sd.hausdorff, diagonal));
+              rel(sd.mean).c_str(), sd.rms, rel(sd.rms).c_str(), sd.hausdorff, rel(sd.hausdorff).c_str());
   std::printf("  A to B: mean %.6g, max %.6g; B to A: mean %.6g, max %.6g\n", sd.a_to_b.mean, sd.a_to_b.max,
               sd.b_to_a.mean, sd.b_to_a.max);
   return kExitOk;

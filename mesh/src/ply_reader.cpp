@@ -359,6 +359,13 @@ Status parse_ply(std::string_view bytes, const std::string& name, Mesh* mesh) {
     BinarySource src(body, h.encoding == PlyEncoding::kBinaryBigEndian, name);
     BodyDecoder<BinarySource> decoder(&src, h, roles, name, &m);
     GAB_RETURN_IF_ERROR(decoder.run());
+    // What the header declares is the whole body: more bytes than a line
+    // end or blanks mean a header that does not describe the file.
+    const std::string_view rest = body.substr(body.size() - src.remaining());
+    if (rest.find_first_not_of(" \t\r\n") != std::string_view::npos) {
+      return Status::Error(StatusCode::kParseError, name + ": " + std::to_string(rest.size()) +
+                                                        " bytes after the last element the header declares");
+    }
   }
   *mesh = std::move(m);
   return Status::Ok();

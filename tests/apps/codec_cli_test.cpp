@@ -97,6 +97,11 @@ TEST(CodecCliTest, CompressDecompressInfoRoundTrip) {
   EXPECT_NEAR(json_number(diff.out, "rms_rel"), json_number(c.out, "rms_rel"), 1e-9);
   EXPECT_NEAR(json_number(diff.out, "linf_rel"), json_number(c.out, "linf_rel"), 1e-9);
 
+  // A file with its own connectivity: --connectivity is ignored, and said so.
+  const CommandResult ignored = run_gab("decompress -i " + gab + " -o " + out + " --connectivity " + in);
+  ASSERT_EQ(ignored.exit_code, 0) << ignored.err;
+  EXPECT_EQ(ignored.err, "gab decompress: warning: --connectivity ignored: " + gab + " carries its own connectivity\n");
+
   CommandResult i = run_gab("info " + gab + " --json");
   ASSERT_EQ(i.exit_code, 0) << i.err;
   EXPECT_EQ(json_number(i.out, "anchors"), 60);

@@ -83,6 +83,15 @@ TEST(DiffCliTest, HumanReadableOutput) {
   EXPECT_NE(r.out.find("Hausdorff 0.5"), std::string::npos) << r.out;
 }
 
+TEST(DiffCliTest, ABoxOfNoSizeHasNoRelativeDistances) {
+  const std::string p = write_scratch_file("point.off", "OFF\n3 1 0\n1 1 1\n1 1 1\n1 1 1\n3 0 1 2\n");
+  const CommandResult r = run_gab("diff " + p + " " + p + " --samples 10");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("bounding-box diagonal 0 (no size: no relative distances)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("vertex distance: max 0 (n/a of the diagonal), rms 0 (n/a)"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("nan"), std::string::npos) << r.out;
+}
+
 TEST(DiffCliTest, BadInputExitsOneWithOneLine) {
   const std::string a = write_scratch_file("a4.off", square_off(0));
   const std::string bad = write_scratch_file("bad.ply", square_off(0));

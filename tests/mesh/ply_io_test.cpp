@@ -79,6 +79,16 @@ TEST(PlyTest, BinaryEveryByteOrderAndTypeGivesTheSameMesh) {
   EXPECT_EQ(cases, 360);
 }
 
+TEST(PlyTest, BinaryBytesBeyondTheHeadersElementsAreAnError) {
+  const std::string square = binary_square(false, "float", "uchar", "int");
+  Mesh m;
+  // A line end after the body, as some exporters write, is fine.
+  ASSERT_TRUE(parse_ply(square + "\r\n", "b.ply", &m).ok());
+  const Status s = parse_ply(square + "garbage", "b.ply", &m);
+  EXPECT_EQ(s.code(), StatusCode::kParseError);
+  EXPECT_EQ(s.message(), "b.ply: 7 bytes after the last element the header declares");
+}
+
 TEST(PlyTest, AsciiSkipsExtraPropertiesAndElements) {
   const std::string text =
       "ply\r\nformat ascii 1.0\r\ncomment made by hand\r\nobj_info none\r\nelement material 1\r\n"

@@ -281,6 +281,11 @@ bool better(bool a_met, double a_bytes, bool b_met, double b_bytes) {
 Status encode_numbered(const Mesh& mesh, const EncodeOptions& options, const CodedConnectivity& coded,
                        std::vector<uint8_t>* file, EncodeStats* stats) {
   EncodeContext ctx(mesh, options, coded);
+  if (!std::isfinite(ctx.box.diagonal)) {
+    return Status::Error(StatusCode::kInvalidArgument,
+                         "mesh: its bounding box is too large to measure (the diagonal overflows a double): scale "
+                         "the coordinates down");
+  }
   MeshSize size;
   size.num_vertices = mesh.num_vertices();
   size.extent = ctx.box.extent;

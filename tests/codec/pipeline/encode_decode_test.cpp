@@ -313,6 +313,15 @@ TEST(EncodeDecode, FlatAndPointLikeMeshes) {
   file = encode_or_die(point, options, &es);
   out = decode_or_die(file, DecodeOptions(), &ds);
   for (double x : out.positions) EXPECT_DOUBLE_EQ(x, 1.5);
+  // Finite coordinates whose box overflows: refused, saying why.
+  Mesh huge = testing_util::grid(3, 3);
+  huge.positions[0] = -1e308;
+  huge.positions[3] = 1e308;
+  const Status s = encode_mesh(huge, options, &file, &es);
+  EXPECT_EQ(s.code(), StatusCode::kInvalidArgument);
+  EXPECT_EQ(s.message(),
+            "mesh: its bounding box is too large to measure (the diagonal overflows a double): scale the coordinates "
+            "down");
 }
 
 TEST(EncodeDecode, DecoderRefusesAFactorOverItsLimit) {

@@ -362,6 +362,42 @@ TEST(FileSafety, ForgedCountsCannotForceHugeAllocations) {
                              std::to_string(block) + " bytes can describe");
 }
 
+TEST(FileSafety, EveryOtherDeclaredCountIsBoundedByTheFile) {
+  // The anchors, chunks and sections a real file's header (checksum made
+  // whole) declares, forged one at a time.
+  const std::vector<uint8_t> file = small_file(false);
+  ByteReader in(file.data(), file.size());
+  GabHeader real;
+  ASSERT_TRUE(read_gab_header(&in, file.size(), &real).ok());
+  const size_t rest = in.offset();
+  auto decode_with = [&](const GabHeader& h) {
+    ByteWriter w;
+    write_gab_header(h, &w);
+    std::vector<uint8_t> forged = w.take();
+    forged.insert(forged.end(), file.begin() + static_cast<std::ptrdiff_t>(rest), file.end());
+    Mesh out;
+    DecodeStats ds;
+    return decode_mesh(forged.data(), forged.size(), DecodeOptions(), &out, &ds).message();
+  };
+  GabHeader h = real;
+  h.anchors = real.num_vertices + 1;  // at most one anchor per vertex
+  EXPECT_EQ(decode_with(h), "bad .gab header: anchor count out of range");
+  h = real;
+  h.chunks = real.anchors + 2;  // at most one chunk per anchor, and the detail or refinement chunk
+  EXPECT_EQ(decode_with(h), "bad .gab header: chunk count out of range");
+  h = real;
+  ASSERT_GT(real.anchors, real.chunks);
+  h.chunks = real.anchors;  // in range, but the level layout's first chunk says how many follow
+  const std::string message = decode_with(h);
+  EXPECT_EQ(message.rfind("chunk 0: level plan makes ", 0), 0u) << message;
+  EXPECT_NE(message.find("levels; the header declares "), std::string::npos) << message;
+  h = real;
+  h.sections = 100000000;  // each a frame the file would have to hold: the first missing ends the walk
+  EXPECT_EQ(decode_with(h), "");
+  h.sections = 0x7FFFFFFF;
+  EXPECT_EQ(decode_with(h), "bad .gab header: section count out of range");
+}
+
 TEST(FileSafety, HeaderCountsAreMinimal32BitVarints) {
   const std::vector<uint8_t> file = small_file(false);
   Mesh out;
