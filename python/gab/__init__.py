@@ -45,10 +45,37 @@ def _array(values, dtype, name, columns=None):
 
 
 def _int32(values, name, columns=None):
+    """values as int32: integers only (floats are not truncated), each within int32."""
     a = np.asarray(values)
-    if a.size and a.dtype.kind in "iu" and (a.max() > np.iinfo(np.int32).max or a.min() < np.iinfo(np.int32).min):
+    if a.size and a.dtype.kind not in "iu":
+        raise TypeError(f"{name} must hold integers, got dtype {a.dtype}")
+    if a.size and (a.max() > np.iinfo(np.int32).max or a.min() < np.iinfo(np.int32).min):
         raise ValueError(f"{name} has entries beyond int32")
     return _array(a, np.int32, name, columns)
+
+
+def _reals(values, dtype, name, columns=None):
+    """values as float64: real numbers only (no complex, no strings)."""
+    a = np.asarray(values)
+    if a.size and a.dtype.kind not in "iuf":
+        raise TypeError(f"{name} must hold real numbers, got dtype {a.dtype}")
+    return _array(a, dtype, name, columns)
+
+
+def _int_arg(value, name, low, high=np.iinfo(np.int32).max):
+    """An integer argument within [low, high] (the C type's range at most)."""
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
+        raise TypeError(f"{name} must be an integer, got {type(value).__name__}")
+    if not low <= int(value) <= high:
+        raise ValueError(f"{name} must be in {low}..{high}, got {value}")
+    return int(value)
+
+
+def _real_arg(value, name):
+    """A real-number argument (no strings, no complex)."""
+    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
+        raise TypeError(f"{name} must be a number, got {type(value).__name__}")
+    return float(value)
 
 
 def _take_mesh(positions, n, triangles, t):
@@ -93,7 +120,7 @@ def compress(V, F, error=None, anchors=None, linf=None, bits=None, weight=None, 
     as the CLI's --ordering; speed only). The decoded mesh keeps the vertex
     numbering (unless reorder) and the triangles as a set of oriented
     triangles."""
-    V = _array(V, np.float64, "V", 3)
+    V = _reals(V, np.float64, "V", 3)
     F = _int32(F, "F", 3)
     if detail not in _DETAIL:
         raise ValueError(f"detail must be 'auto', 'on' or 'off', got {detail!r}")
@@ -104,14 +131,14 @@ def compress(V, F, error=None, anchors=None, linf=None, bits=None, weight=None, 
     LIB.gab_compress_options_init(ctypes.byref(options), ctypes.sizeof(options))
     if error is None and anchors is None and linf is None:
         error = _DEFAULT_ERROR
-    options.target_rms_rel = 0.0 if error is None else float(error)
-    options.target_linf_rel = 0.0 if linf is None else float(linf)
-    options.max_anchors = 0 if anchors is None else int(anchors)
-    options.bits = 0 if bits is None else int(bits)
+    options.target_rms_rel = 0.0 if error is None else _real_arg(error, "error")
+    options.target_linf_rel = 0.0 if linf is None else _real_arg(linf, "linf")
+    options.max_anchors = 0 if anchors is None else _int_arg(anchors, "anchors", 1)
+    options.bits = 0 if bits is None else _int_arg(bits, "bits", 0)
     if weight is not None:
-        options.weight = float(weight)
+        options.weight = _real_arg(weight, "weight")
     options.reorder = int(bool(reorder))
-    options.threads = int(threads)
+    options.threads = _int_arg(threads, "threads", 0)
     options.detail = _DETAIL[detail]
     options.refine = int(bool(refine))
     options.ordering = ordering_code
@@ -133,9 +160,10 @@ def decompress(data, anchors=None):
     first K anchors (a coarser level). A file cut short decodes to its complete
     chunks; damaged or forged bytes raise GabError."""
     data = bytes(data)
+    anchors = -1 if anchors is None else _int_arg(anchors, "anchors", 1)
     positions, n, triangles, t = _mesh_outputs()
     message = message_buffer()
-    code = LIB.gab_decompress(data, len(data), -1 if anchors is None else int(anchors), ctypes.byref(positions),
+    code = LIB.gab_decompress(data, len(data), anchors, ctypes.byref(positions),
                               ctypes.byref(n), ctypes.byref(triangles), ctypes.byref(t), message, len(message))
     check(code, message)
     return _take_mesh(positions, n, triangles, t)
@@ -164,7 +192,7 @@ def _csc(A):
     if indptr.shape[0] and (indptr[-1] != indices.shape[0] or indptr[0] != 0):
         raise ValueError(f"indptr must run from 0 to len(indices) = {indices.shape[0]}")
     if data is not None:
-        data = _array(data, np.float64, "data")
+        data = _reals(data, np.float64, "data")
         if data.shape != indices.shape:
             raise ValueError(f"data has {data.shape[0]} entries, indices {indices.shape[0]}")
     return n, indptr, indices, data
@@ -220,7 +248,7 @@ class Cholesky:
         alone (a 1-D array in the pattern's order). Discards earlier updates."""
         self._require()
         if isinstance(A, np.ndarray) and A.ndim == 1:
-            data = _array(A, np.float64, "values")
+            data = _reals(A, np.float64, "values")
         else:
             n, indptr, indices, data = _csc(A)
             if data is None:
@@ -237,7 +265,7 @@ class Cholesky:
     def solve(self, b):
         """x with A x = b: b of shape (n,) or (n, k); returns a new array of b's shape."""
         self._require()
-        b = np.asarray(b, dtype=np.float64)
+        b = _reals(b, np.float64, "b")
         if b.shape[:1] != (self.n,) or b.ndim > 2:
             raise ValueError(f"b must have shape ({self.n},) or ({self.n}, k), got {b.shape}")
         x = np.array(b, dtype=np.float64, order="F", copy=True)
@@ -249,7 +277,8 @@ class Cholesky:
     def add_anchor(self, j, w):
         """The factor of A + w^2 e_j e_j^T, in place (j 0-based)."""
         self._require()
-        code = LIB.gab_cholesky_add_anchor(self._handle, int(j), float(w))
+        j = _int_arg(j, "j", np.iinfo(np.int32).min)  # the library checks it against n
+        code = LIB.gab_cholesky_add_anchor(self._handle, j, _real_arg(w, "w"))
         check(code, LIB.gab_cholesky_message(self._handle))
         return self
 

@@ -89,6 +89,21 @@ class CholeskyTest(unittest.TestCase):
         with self.assertRaises(ValueError):
             chol.factorize((np.array([0, 1, 2]), np.array([0, 1]), np.array([1.0, 1.0])))
 
+    def test_arguments_are_checked_not_coerced(self):
+        chol = gab.Cholesky((np.array([0, 2, 3]), np.array([0, 1, 1]), np.array([2.0, -1, 2])))
+        with self.assertRaisesRegex(ValueError, "j must be in"):
+            chol.add_anchor(2**32 + 1, 1.0)  # not vertex 1
+        with self.assertRaisesRegex(TypeError, "j must be an integer"):
+            chol.add_anchor(1.7, 1.0)
+        with self.assertRaisesRegex(TypeError, "w must be a number"):
+            chol.add_anchor(1, "1.0")
+        with self.assertRaisesRegex(TypeError, "indptr must hold integers"):
+            gab.Cholesky((np.array([0.0, 2.0, 3.0]), np.array([0, 1, 1]), np.array([2.0, -1, 2])))
+        with self.assertRaisesRegex(TypeError, "data must hold real numbers"):
+            gab.Cholesky((np.array([0, 2, 3]), np.array([0, 1, 1]), np.array([2.0, -1, 2 + 1j])))
+        with self.assertRaisesRegex(TypeError, "b must hold real numbers"):
+            chol.solve(np.array([1.0, 1j]))
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -109,6 +109,22 @@ class CodecTest(unittest.TestCase):
             gab.decompress(bytes(data))
         self.assertEqual(e.exception.code, 3)
 
+    def test_arguments_are_checked_not_coerced(self):
+        V, F = bumpy_torus(8, 6)
+        with self.assertRaisesRegex(ValueError, "anchors must be in 1.."):
+            gab.compress(V, F, anchors=2**32 + 5)  # not 5
+        with self.assertRaisesRegex(TypeError, "error must be a number"):
+            gab.compress(V, F, error="1e-3")
+        with self.assertRaisesRegex(TypeError, "F must hold integers"):
+            gab.compress(V, F + 0.7)  # not truncated to F
+        with self.assertRaisesRegex(TypeError, "V must hold real numbers"):
+            gab.compress(V + 0j, F)
+        data = gab.compress(V, F)
+        with self.assertRaisesRegex(ValueError, "anchors must be in 1.."):
+            gab.decompress(data, anchors=-5)  # not the whole file
+        with self.assertRaisesRegex(TypeError, "anchors must be an integer"):
+            gab.decompress(data, anchors=2.5)
+
     def test_read_mesh(self):
         with tempfile.TemporaryDirectory() as folder:
             path = os.path.join(folder, "quad.off")
