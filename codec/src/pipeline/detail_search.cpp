@@ -115,10 +115,6 @@ class Search {
   int trials_ = 0;
 };
 
-}  // namespace
-
-namespace {
-
 // The checks every entry makes.
 Status check_search(const DetailFrame& frame, const std::vector<double>& smooth, double scale, double target_rms_rel,
                     double target_linf_rel) {
