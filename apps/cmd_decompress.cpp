@@ -3,6 +3,8 @@
 // and writes the mesh (.obj .off .ply by extension), vertex order kept.
 #include <unistd.h>
 
+#include <cctype>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 
@@ -17,11 +19,35 @@ namespace cli {
 
 namespace {
 
+// --max-memory SIZE: bytes, or a number with K, M, G or T (powers of 1024),
+// or "none" (no budget: -1). False for anything else.
+bool parse_memory(const std::string& text, int64_t* bytes) {
+  if (text == "none") {
+    *bytes = -1;
+    return true;
+  }
+  size_t digits = 0;
+  while (digits < text.size() && text[digits] >= '0' && text[digits] <= '9') ++digits;
+  if (digits == 0 || digits > 15 || text.size() > digits + 1) return false;
+  int shift = 0;
+  if (text.size() == digits + 1) {
+    const std::string units = "KMGT";
+    const size_t unit = units.find(static_cast<char>(std::toupper(static_cast<unsigned char>(text.back()))));
+    if (unit == std::string::npos) return false;
+    shift = 10 * static_cast<int>(unit + 1);
+  }
+  const int64_t value = std::stoll(text.substr(0, digits));
+  if (value < 1 || value > (INT64_MAX >> shift)) return false;
+  *bytes = value << shift;
+  return true;
+}
+
 }  // namespace
 
 int run_decompress(int argc, char** argv) {
   Args args;
-  if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--connectivity", "--threads", "--ordering"}, {"--json"})) {
+  if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--connectivity", "--threads", "--ordering", "--max-memory"},
+                  {"--json"})) {
     return usage_error("decompress", args.error());
   }
   if (!args.positionals().empty()) {
@@ -34,6 +60,11 @@ int run_decompress(int argc, char** argv) {
   if (!args.get_int("--anchors", 0, 0x7FFFFFFF, &anchors) || !args.get_threads(&threads) ||
       !args.get_ordering(kCodecOrderings, Ordering::kAuto, &ordering)) {
     return usage_error("decompress", args.error());
+  }
+  int64_t max_memory = 0;
+  if (args.has("--max-memory") && !parse_memory(args.get("--max-memory"), &max_memory)) {
+    return usage_error("decompress", "--max-memory must be a size in bytes (e.g. 512M, 4G) or 'none', got '" +
+                                         args.get("--max-memory") + "'");
   }
   const std::string in = args.get("-i"), out = args.get("-o");
   const std::string ext = extension(out);
@@ -49,6 +80,7 @@ int run_decompress(int argc, char** argv) {
   options.max_anchors = static_cast<int32_t>(anchors);
   options.threads = threads;
   options.ordering = ordering;
+  options.max_memory = max_memory;
   if (args.has("--connectivity")) {
     status = read_mesh(args.get("--connectivity"), &connectivity);
     if (!status.ok()) return fail(status.message());
@@ -92,6 +124,9 @@ int run_decompress(int argc, char** argv) {
     o.add_bool("refined", stats.refined);
     o.add_bool("reordered", stats.reordered);
     o.add("connectivity_s", stats.connectivity_s);
+    o.add("matrix_entries", stats.matrix_entries);
+    o.add("factor_entries", stats.factor_entries);
+    o.add("memory_limit", stats.memory_limit);
     o.add_bool("detail", stats.detail);
     o.add("detail_s", stats.detail_s);
     o.add("ordering", std::string(ordering_name(stats.ordering)));

@@ -22,9 +22,10 @@ const std::vector<Command>& commands() {
        "the factorizations' (speed only; recorded in the file; auto: nested dissection from 100k vertices)"},
       {"decompress", run_decompress,
        {"-i IN.gab -o OUT [--anchors K] [--connectivity MESH] [--threads T] [--ordering auto|amd|nd]",
-        "[--json]"},
+        "[--max-memory SIZE] [--json]"},
        "decode a .gab file (its first K anchors only: a coarser level of detail); --ordering auto\n"
-       "uses the file's"},
+       "uses the file's; --max-memory bounds the decode's memory (bytes, or with K, M, G; 'none';\n"
+       "default: 32 KiB per byte of the file, at least 64 MiB)"},
       {"info", run_info, {"IN.gab [--json]"}, "what a .gab file holds (checksums verified, nothing decoded)"},
       {"demo", run_demo, {""}, "compress a real mesh at several anchor counts, print a table, write the meshes"},
       {"factor", run_factor, {"IN [--ordering amd|nd|natural] [--anchors K] [--repeat R] [--threads T] [--json]"},

@@ -104,6 +104,9 @@ GAB_WEB_EXPORT int32_t gab_web_decode(size_t size, int32_t max_anchors) {
   options.threads = 1;  // no pthreads in this build: the engine's serial paths only
   options.max_matrix_entries = kMaxMatrixEntries;
   options.max_factor_entries = kMaxFactorEntries;
+  // Those entry limits bound the decode by the browser's memory; the
+  // budget by the file's size would judge a prefix, not the file.
+  options.max_memory = -1;
   gab::Mesh mesh;
   const gab::Status status = gab::decode_mesh(s.input.data(), size, options, &mesh, &s.stats);
   s.positions.clear();

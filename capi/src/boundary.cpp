@@ -1,7 +1,11 @@
 // Status codes and messages at the C boundary (boundary.h).
 #include "boundary.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <thread>
+
+#include "gab/sparse/symbolic.h"
 
 namespace gab {
 namespace capi {
@@ -33,6 +37,29 @@ void write_message(const char* function, const char* text, char* message, size_t
 Status invalid(const std::string& what) { return Status::Error(StatusCode::kInvalidArgument, what); }
 
 Status require(bool ok, const std::string& what) { return ok ? Status::Ok() : invalid(what); }
+
+Status options_threads(int32_t given, int32_t* threads) {
+  GAB_RETURN_IF_ERROR(require(given >= 0 && given <= kMaxFactorThreads,
+                              "options->threads is " + std::to_string(given) + ": must be in 0.." +
+                                  std::to_string(kMaxFactorThreads) + " (0: every core)"));
+  const unsigned cores = std::thread::hardware_concurrency();
+  *threads = given > 0 ? given : static_cast<int32_t>(std::min<unsigned>(std::max(1u, cores), kMaxFactorThreads));
+  return Status::Ok();
+}
+
+Status check_options_size(const void* options, size_t size, size_t known, const char* init) {
+  GAB_RETURN_IF_ERROR(
+      require(size >= sizeof(size_t), "options->size is " + std::to_string(size) + ": set it with " + init));
+  const unsigned char* bytes = static_cast<const unsigned char*>(options);
+  for (size_t i = known; i < size; ++i) {
+    if (bytes[i] != 0) {
+      return Status::Error(StatusCode::kUnsupported, "options->size is " + std::to_string(size) + " and byte " +
+                                                         std::to_string(i) + " is set: gab " GAB_VERSION_STRING
+                                                         " knows " + std::to_string(known) + " bytes of options");
+    }
+  }
+  return Status::Ok();
+}
 
 int report(const char* function, const Status& status, char* message, size_t size) {
   write_message(function, status.ok() ? "" : status.message().c_str(), message, size);

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <exception>
 #include <new>
 #include <string>
@@ -57,6 +58,35 @@ int guarded(const char* function, char* message, size_t size, Body&& body) {
 // every mesh reader's output is (validate_mesh): counts, NULL pointers,
 // finite coordinates, indices in range. O(n + t).
 Status import_mesh(const double* positions, int32_t n, const int32_t* triangles, int32_t t, Mesh* mesh);
+
+// An options struct from the caller (gab.h's ABI rule): its first field,
+// `size`, holds at least a size_t, and its bytes beyond the `known` this
+// library has are zero (kUnsupported otherwise: a newer caller's field this
+// library would ignore). `init` names the function that fills it.
+Status check_options_size(const void* options, size_t size, size_t known, const char* init);
+
+// gab.h's *_options_init: writes `defaults` (zeroed, then its known
+// defaults set) into the caller's `size` bytes, its size field min(size,
+// sizeof), the rest of `size` zeroed; nothing when not even the size field
+// fits.
+template <class Options>
+void init_options(Options defaults, Options* out, size_t size) {
+  if (out == nullptr || size < sizeof(size_t)) return;
+  defaults.size = size < sizeof defaults ? size : sizeof defaults;
+  std::memset(static_cast<void*>(out), 0, size);
+  std::memcpy(static_cast<void*>(out), &defaults, defaults.size);
+}
+
+// An options struct's `threads`: 1..kMaxFactorThreads as given, 0 every
+// core (at most kMaxFactorThreads); kInvalidArgument otherwise.
+Status options_threads(int32_t given, int32_t* threads);
+
+// Copies one field of the caller's struct (`size` bytes of it valid) when
+// that size covers it; the field keeps its default otherwise.
+template <class T>
+void take_field(const void* options, size_t size, size_t offset, T* field) {
+  if (offset + sizeof(T) <= size) std::memcpy(field, static_cast<const char*>(options) + offset, sizeof(T));
+}
 
 // Sets the output arrays of a function returning a mesh to NULL / 0, and
 // fails when one of the four pointers is NULL.

@@ -1,14 +1,11 @@
 // gab_compress, gab_compress_ex, gab_compress_options_init: the encoder
 // (gab/codec/encoder.h) behind the C door.
-#include <algorithm>
 #include <cstddef>
 #include <cstring>
-#include <thread>
 
 #include "boundary.h"
 #include "gab/codec/encoder.h"
 #include "ordering_codes.h"
-#include "gab/sparse/symbolic.h"
 
 namespace gab {
 namespace capi {
@@ -17,12 +14,6 @@ namespace {
 
 constexpr double kDefaultError = 1e-3;  // as the CLI's compress without a stopping rule
 
-// Copies one field of the caller's struct when the caller's size covers it.
-template <class T>
-void take(const gab_compress_options* in, size_t offset, T* field) {
-  if (offset + sizeof(T) <= in->size) std::memcpy(field, reinterpret_cast<const char*>(in) + offset, sizeof(T));
-}
-
 // The caller's options (NULL: the defaults) as the encoder's. Fields beyond
 // in->size keep their defaults; bytes beyond what this library knows must
 // be zero. The encoder checks the values it owns (targets, bits, weight).
@@ -30,18 +21,8 @@ Status read_options(const gab_compress_options* in, EncodeOptions* out) {
   gab_compress_options o;
   gab_compress_options_init(&o, sizeof o);
   if (in != nullptr) {
-    GAB_RETURN_IF_ERROR(require(in->size >= sizeof(size_t), "options->size is " + std::to_string(in->size) +
-                                                                ": set it with gab_compress_options_init"));
-    const unsigned char* bytes = reinterpret_cast<const unsigned char*>(in);
-    for (size_t i = sizeof o; i < in->size; ++i) {
-      if (bytes[i] != 0) {
-        return Status::Error(StatusCode::kUnsupported, "options->size is " + std::to_string(in->size) +
-                                                           " and byte " + std::to_string(i) + " is set: gab " +
-                                                           GAB_VERSION_STRING " knows " + std::to_string(sizeof o) +
-                                                           " bytes of options");
-      }
-    }
-#define GAB_TAKE(field) take(in, offsetof(gab_compress_options, field), &o.field)
+    GAB_RETURN_IF_ERROR(check_options_size(in, in->size, sizeof o, "gab_compress_options_init"));
+#define GAB_TAKE(field) take_field(in, in->size, offsetof(gab_compress_options, field), &o.field)
     GAB_TAKE(target_rms_rel);
     GAB_TAKE(target_linf_rel);
     GAB_TAKE(weight);
@@ -54,9 +35,7 @@ Status read_options(const gab_compress_options* in, EncodeOptions* out) {
     GAB_TAKE(ordering);
 #undef GAB_TAKE
   }
-  GAB_RETURN_IF_ERROR(require(o.threads >= 0 && o.threads <= kMaxFactorThreads,
-                              "options->threads is " + std::to_string(o.threads) + ": must be in 0.." +
-                                  std::to_string(kMaxFactorThreads) + " (0: every core)"));
+  GAB_RETURN_IF_ERROR(options_threads(o.threads, &out->threads));
   GAB_RETURN_IF_ERROR(require(o.detail == GAB_DETAIL_AUTO || o.detail == GAB_DETAIL_ON || o.detail == GAB_DETAIL_OFF,
                               "options->detail is " + std::to_string(o.detail) +
                                   ": must be GAB_DETAIL_AUTO, GAB_DETAIL_ON or GAB_DETAIL_OFF"));
@@ -73,9 +52,6 @@ Status read_options(const gab_compress_options* in, EncodeOptions* out) {
   out->weight = o.weight;
   out->reorder = o.reorder != 0;
   out->refine = o.refine != 0;
-  const unsigned cores = std::thread::hardware_concurrency();
-  out->threads =
-      o.threads > 0 ? o.threads : static_cast<int32_t>(std::min<unsigned>(std::max(1u, cores), kMaxFactorThreads));
   out->detail = o.detail == GAB_DETAIL_ON    ? DetailMode::kOn
                 : o.detail == GAB_DETAIL_OFF ? DetailMode::kOff
                                              : DetailMode::kAuto;
@@ -111,15 +87,12 @@ int compress(const char* function, const double* positions, int32_t n, const int
 }  // namespace gab
 
 extern "C" void gab_compress_options_init(gab_compress_options* options, size_t size) {
-  if (options == nullptr || size < sizeof(size_t)) return;  // not even the size field fits
   gab_compress_options o;
   std::memset(&o, 0, sizeof o);
-  o.size = size < sizeof o ? size : sizeof o;
   o.weight = gab::EncodeOptions().weight;
   o.threads = 1;
   o.detail = GAB_DETAIL_AUTO;
-  std::memset(options, 0, size);
-  std::memcpy(options, &o, o.size);
+  gab::capi::init_options(o, options, size);
 }
 
 extern "C" int gab_compress_ex(const double* positions, int32_t n, const int32_t* triangles, int32_t t,

@@ -20,7 +20,7 @@ import os
 
 import numpy as np
 
-from ._capi import LIB, CompressOptions, GabError, check, message_buffer
+from ._capi import LIB, CompressOptions, DecompressOptions, GabError, check, message_buffer
 
 __all__ = ["Cholesky", "GabError", "compress", "decompress", "read_mesh", "version"]
 
@@ -155,16 +155,26 @@ def compress(V, F, error=None, anchors=None, linf=None, bits=None, weight=None, 
         LIB.gab_free(out)
 
 
-def decompress(data, anchors=None):
+def decompress(data, anchors=None, max_memory=None, threads=1):
     """Decodes a .gab file (bytes-like) into (V, F); anchors=K decodes only the
-    first K anchors (a coarser level). A file cut short decodes to its complete
-    chunks; damaged or forged bytes raise GabError."""
+    first K anchors (a coarser level). max_memory: the bytes the decode may
+    take (None: 32 KiB per byte of the file, at least 64 MiB; -1: no limit;
+    over it GabError GAB_E_RESOURCE_EXHAUSTED says how much it needs).
+    threads: for the factorizations (0: every core; same shape for any
+    count). A file cut short decodes to its complete chunks; damaged or
+    forged bytes raise GabError."""
     data = bytes(data)
-    anchors = -1 if anchors is None else _int_arg(anchors, "anchors", 1)
+    options = DecompressOptions()
+    LIB.gab_decompress_options_init(ctypes.byref(options), ctypes.sizeof(options))
+    if anchors is not None:
+        options.max_anchors = _int_arg(anchors, "anchors", 1)
+    if max_memory is not None:
+        options.max_memory = _int_arg(max_memory, "max_memory", -1, np.iinfo(np.int64).max)
+    options.threads = _int_arg(threads, "threads", 0)
     positions, n, triangles, t = _mesh_outputs()
     message = message_buffer()
-    code = LIB.gab_decompress(data, len(data), anchors, ctypes.byref(positions),
-                              ctypes.byref(n), ctypes.byref(triangles), ctypes.byref(t), message, len(message))
+    code = LIB.gab_decompress_ex(data, len(data), ctypes.byref(options), ctypes.byref(positions),
+                                 ctypes.byref(n), ctypes.byref(triangles), ctypes.byref(t), message, len(message))
     check(code, message)
     return _take_mesh(positions, n, triangles, t)
 

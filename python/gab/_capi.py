@@ -3,7 +3,7 @@ turning an error code and message into a GabError."""
 
 import ctypes
 import os
-from ctypes import POINTER, c_char_p, c_double, c_int, c_int32, c_size_t, c_ubyte, c_void_p
+from ctypes import POINTER, c_char_p, c_double, c_int, c_int32, c_int64, c_size_t, c_ubyte, c_void_p
 
 MESSAGE_SIZE = 1024
 
@@ -33,6 +33,17 @@ class CompressOptions(ctypes.Structure):
         ("detail", c_int32),
         ("refine", c_int32),
         ("ordering", c_int32),
+    ]
+
+
+class DecompressOptions(ctypes.Structure):
+    """gab_decompress_options, field for field (gab.h)."""
+
+    _fields_ = [
+        ("size", c_size_t),
+        ("max_memory", c_int64),
+        ("max_anchors", c_int32),
+        ("threads", c_int32),
     ]
 
 
@@ -80,9 +91,11 @@ def _declare(lib):
             [P(c_double), c_int32, P(c_int32), c_int32, P(CompressOptions), P(P(c_ubyte)), P(c_size_t), c_char_p,
              c_size_t],
         ),
-        "gab_decompress": (
+        "gab_decompress_options_init": (None, [P(DecompressOptions), c_size_t]),
+        "gab_decompress_ex": (
             c_int,
-            [c_char_p, c_size_t, c_int32, P(P(c_double)), P(c_int32), P(P(c_int32)), P(c_int32), c_char_p, c_size_t],
+            [c_char_p, c_size_t, P(DecompressOptions), P(P(c_double)), P(c_int32), P(P(c_int32)), P(c_int32),
+             c_char_p, c_size_t],
         ),
         "gab_cholesky_create": (
             c_int,

@@ -102,7 +102,7 @@ class CodecTest(unittest.TestCase):
         with self.assertRaises(gab.GabError) as e:
             gab.decompress(b"not a gab file at all")
         self.assertEqual(e.exception.name, "GAB_E_PARSE")
-        self.assertTrue(str(e.exception).startswith("gab_decompress: "))
+        self.assertTrue(str(e.exception).startswith("gab_decompress_ex: "))
         data = bytearray(gab.compress(V, F))
         data[-1] ^= 0x55  # inside the last chunk's payload: its checksum fails
         with self.assertRaises(gab.GabError) as e:
@@ -124,6 +124,16 @@ class CodecTest(unittest.TestCase):
             gab.decompress(data, anchors=-5)  # not the whole file
         with self.assertRaisesRegex(TypeError, "anchors must be an integer"):
             gab.decompress(data, anchors=2.5)
+
+    def test_max_memory_bounds_the_decode(self):
+        V, F = bumpy_torus(12, 10)
+        data = gab.compress(V, F)
+        with self.assertRaises(gab.GabError) as e:
+            gab.decompress(data, max_memory=100000)
+        self.assertEqual(e.exception.name, "GAB_E_RESOURCE_EXHAUSTED")
+        self.assertIn("over its memory limit of 1 MiB", str(e.exception))
+        self.assertEqual(gab.decompress(data, max_memory=-1)[0].tolist(), gab.decompress(data)[0].tolist())
+        self.assertEqual(gab.decompress(data, threads=2)[0].tolist(), gab.decompress(data)[0].tolist())
 
     def test_read_mesh(self):
         with tempfile.TemporaryDirectory() as folder:

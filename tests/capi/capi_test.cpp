@@ -210,6 +210,47 @@ TEST(CapiTest, OptionsStructIsReadUpToItsSize) {
   EXPECT_EQ(compress(&o, nullptr).message, "gab_compress_ex: options->size is 4: set it with gab_compress_options_init");
 }
 
+TEST(CapiTest, DecompressOptionsBoundTheMemoryAndPickTheLevel) {
+  const Mesh mesh = bumpy_torus(40, 20);
+  char message[512];
+  unsigned char* file = nullptr;
+  size_t size = 0;
+  ASSERT_EQ(gab_compress(mesh.positions.data(), mesh.num_vertices(), mesh.triangles.data(), mesh.num_triangles(),
+                         1e-3, &file, &size, message, sizeof message),
+            GAB_OK)
+      << message;
+  auto decode = [&](const gab_decompress_options* o, int32_t* n_out) {
+    double* positions = nullptr;
+    int32_t n = 0, t = 0;
+    int32_t* triangles = nullptr;
+    const int code = gab_decompress_ex(file, size, o, &positions, &n, &triangles, &t, message, sizeof message);
+    gab_free(positions);
+    gab_free(triangles);
+    if (n_out != nullptr) *n_out = n;
+    return Outcome{code, message};
+  };
+  int32_t n = 0;
+  ASSERT_EQ(decode(nullptr, &n).code, GAB_OK) << message;
+  EXPECT_EQ(n, mesh.num_vertices());
+  gab_decompress_options o;
+  gab_decompress_options_init(&o, sizeof o);
+  EXPECT_EQ(o.size, sizeof o);
+  EXPECT_EQ(o.max_memory, 0);
+  EXPECT_EQ(o.max_anchors, -1);
+  EXPECT_EQ(o.threads, 1);
+  o.max_memory = 100000;  // under what even the mesh's arrays take
+  const Outcome refused = decode(&o, nullptr);
+  EXPECT_EQ(refused.code, GAB_E_RESOURCE_EXHAUSTED);
+  EXPECT_EQ(refused.message.rfind("gab_decompress_ex: decoding needs about ", 0), 0u) << refused.message;
+  EXPECT_NE(refused.message.find("over its memory limit of 1 MiB"), std::string::npos) << refused.message;
+  o.max_memory = -1;  // no limit
+  EXPECT_EQ(decode(&o, nullptr).code, GAB_OK);
+  o.threads = 65;
+  EXPECT_EQ(decode(&o, nullptr).message,
+            "gab_decompress_ex: options->threads is 65: must be in 0..64 (0: every core)");
+  gab_free(file);
+}
+
 TEST(CapiTest, CompressRejectsBadArgumentsWithClearMessages) {
   const Mesh mesh = bumpy_torus(8, 6);
   const double* p = mesh.positions.data();

@@ -121,10 +121,30 @@ int gab_compress_ex(const double* positions, int32_t n, const int32_t* triangles
                     char* message, size_t message_size);
 
 /* max_anchors < 0: the whole file, else the first max_anchors anchors (a
-   coarser level). A file cut short decodes to its complete chunks. */
+   coarser level). A file cut short decodes to its complete chunks. The
+   decode's memory is bounded as gab_decompress_options' default says. */
 int gab_decompress(const unsigned char* data, size_t size, int32_t max_anchors,
                    double** positions, int32_t* n, int32_t** triangles, int32_t* t,
                    char* message, size_t message_size);
+
+/* Options of gab_decompress_ex; ABI-stable as gab_compress_options (fill
+   with gab_decompress_options_init, then set fields). */
+typedef struct gab_decompress_options {
+  size_t size;          /* sizeof(gab_decompress_options) as the caller compiled it */
+  int64_t max_memory;   /* bytes the decode may take (--max-memory); 0 (default): 32 KiB per byte of the
+                           file, at least 64 MiB; negative: no limit. Over it: GAB_E_RESOURCE_EXHAUSTED,
+                           the message saying how much the decode needs */
+  int32_t max_anchors;  /* < 0 (default -1): the whole file, else its first max_anchors anchors */
+  int32_t threads;      /* threads for the factorizations (default 1; 0: every core); same shape for any count */
+} gab_decompress_options;
+
+/* Sets the defaults, as gab_compress_options_init does. */
+void gab_decompress_options_init(gab_decompress_options* options, size_t size);
+
+/* gab_decompress with options (NULL: the defaults). */
+int gab_decompress_ex(const unsigned char* data, size_t size, const gab_decompress_options* options,
+                      double** positions, int32_t* n, int32_t** triangles, int32_t* t,
+                      char* message, size_t message_size);
 
 /* ---- Sparse Cholesky -------------------------------------------------------- */
 

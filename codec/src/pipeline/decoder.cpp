@@ -49,6 +49,34 @@ int64_t matrix_entries_bound(const EdgeGraph& g) {
   return total;
 }
 
+// What a decode holds at its peak, per factor entry (values, supernode
+// structure, update workspace), matrix entry, vertex (positions, graph,
+// right-hand sides, solutions) and triangle: measured peaks of igea, horse
+// and a 90,000-vertex torus lie 0-17% under it (docs/tuning-codec.md).
+constexpr int64_t kBytesPerFactorEntry = 11;
+constexpr int64_t kBytesPerMatrixEntry = 12;
+constexpr int64_t kBytesPerVertex = 150;
+constexpr int64_t kBytesPerTriangle = 12;
+
+// The budget options give a file of `size` bytes (INT64_MAX: none).
+int64_t memory_budget(const DecodeOptions& options, size_t size) {
+  if (options.max_memory < 0) return INT64_MAX;
+  if (options.max_memory > 0) return options.max_memory;
+  const int64_t by_size = static_cast<int64_t>(std::min<size_t>(size, size_t{1} << 40)) * kDecodeMemoryPerFileByte;
+  return std::max(kMinDecodeMemory, by_size);
+}
+
+int64_t mebibytes(int64_t bytes) { return (bytes + (int64_t{1} << 20) - 1) >> 20; }
+
+// kResourceExhausted when `needed` bytes exceed the budget.
+Status check_memory(int64_t needed, int64_t budget, const std::string& what) {
+  if (needed <= budget) return Status::Ok();
+  return Status::Error(StatusCode::kResourceExhausted,
+                       "decoding needs about " + std::to_string(mebibytes(needed)) + " MiB (" + what +
+                           "), over its memory limit of " + std::to_string(mebibytes(budget)) +
+                           " MiB: raise it (DecodeOptions::max_memory, gab decompress --max-memory)");
+}
+
 // What the chunk loops build: the reconstruction, the shape that predicts
 // the next chunk, every decoded anchor's grid indices in file order.
 struct ChunkDecoding {
@@ -103,6 +131,7 @@ Status add_chunk(int32_t chunk, const std::vector<int32_t>& anchors, const std::
     if (s.code() == StatusCode::kResourceExhausted || s.code() == StatusCode::kOutOfMemory) return s;
     if (!s.ok()) return corrupt("chunk 0: " + s.message());
     st->stats->factor_s += seconds_since(t);
+    st->stats->factor_entries = st->rec.cholesky().symbolic().stored_L;
   } else {
     bool refactor = false;
     const Status s = st->rec.add_anchors_cheapest(anchors, coefficients, &refactor);
@@ -255,6 +284,12 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
   stats->weight = header.weight;
   stats->geometry_only = header.geometry_only();
   stats->reordered = header.reordered();
+  const int64_t budget = memory_budget(options, size);
+  stats->memory_limit = budget == INT64_MAX ? 0 : budget;
+  int64_t held = kBytesPerVertex * n + kBytesPerTriangle * header.num_triangles;
+  GAB_RETURN_IF_ERROR(check_memory(held, budget,
+                                   std::to_string(n) + " vertices, " + std::to_string(header.num_triangles) +
+                                       " triangles"));
 
   Mesh out;
   ConnectivitySection connectivity;
@@ -264,24 +299,39 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
   stats->connectivity_s = seconds_since(connectivity_start);
   out.positions.assign(static_cast<size_t>(n) * 3, 0.0);
   const EdgeGraph graph = build_edge_graph(out);
-  if (matrix_entries_bound(graph) > options.max_matrix_entries) {
+  stats->matrix_entries = matrix_entries_bound(graph);
+  if (stats->matrix_entries > options.max_matrix_entries) {
     return Status::Error(StatusCode::kResourceExhausted,
                          "connectivity is too irregular: its least-squares matrix would exceed " +
                              std::to_string(options.max_matrix_entries) + " entries");
   }
+  held += kBytesPerMatrixEntry * stats->matrix_entries;
+  GAB_RETURN_IF_ERROR(check_memory(held, budget,
+                                   std::to_string(n) + " vertices and a matrix of " +
+                                       std::to_string(stats->matrix_entries) + " entries"));
+  // What is left of the budget bounds the factor, checked by its symbolic
+  // analysis before any of it is allocated.
+  const int64_t factor_entries =
+      budget == INT64_MAX ? options.max_factor_entries
+                          : std::min(options.max_factor_entries, (budget - held) / kBytesPerFactorEntry);
 
   AnchorModels models;
   ChunkDecoding state(header, graph, options, stats);
   AnchorChunkCoder coder(state.quantizer, &models);
   state.rec.set_threads(options.threads);
-  state.rec.set_max_factor_entries(options.max_factor_entries);
+  state.rec.set_max_factor_entries(factor_entries);
   stats->ordering = decoder_ordering(options.ordering, header.ordering);
   OrderingPlan(stats->ordering).apply(&state.rec);
-  if (header.levels()) {
-    GAB_RETURN_IF_ERROR(decode_level_chunks(&in, &coder, &state));
-  } else {
-    GAB_RETURN_IF_ERROR(decode_selection_chunks(&in, &coder, &state));
+  const Status chunks =
+      header.levels() ? decode_level_chunks(&in, &coder, &state) : decode_selection_chunks(&in, &coder, &state);
+  const int64_t wanted = state.rec.cholesky().symbolic().stored_L;  // analysed, even when refused
+  if (chunks.code() == StatusCode::kResourceExhausted && wanted > factor_entries &&
+      factor_entries < options.max_factor_entries) {
+    // The budget, not the caller's factor limit, refused the factor.
+    return check_memory(held + kBytesPerFactorEntry * wanted, budget,
+                        "a factor of " + std::to_string(wanted) + " entries");
   }
+  GAB_RETURN_IF_ERROR(chunks);
   // The refinement and the detail belong to the whole anchor set: skipped for a level of detail.
   const bool whole = state.decoded == header.anchors;
   if (header.refined() && !stats->truncated && whole) {

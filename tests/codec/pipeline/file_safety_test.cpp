@@ -356,7 +356,17 @@ TEST(FileSafety, ForgedCountsCannotForceHugeAllocations) {
   GabFileInfo info;
   ASSERT_TRUE(read_gab_info(file.data(), file.size(), &info).ok());
   const size_t block = info.connectivity_bytes - kGabFrameBytes;
-  const Status s = decode_mesh(forged.data(), forged.size(), DecodeOptions(), &out, &ds);
+  // The default memory budget (64 MiB for a file this small) refuses the
+  // count from the header alone.
+  Status s = decode_mesh(forged.data(), forged.size(), DecodeOptions(), &out, &ds);
+  EXPECT_EQ(s.code(), StatusCode::kResourceExhausted);
+  EXPECT_EQ(s.message(), "decoding needs about 1145 MiB (" + std::to_string(h.num_vertices) +
+                             " vertices, 100000000 triangles), over its memory limit of 64 MiB: raise it "
+                             "(DecodeOptions::max_memory, gab decompress --max-memory)");
+  // Without a budget, the connectivity block's size refuses it.
+  DecodeOptions unbounded;
+  unbounded.max_memory = -1;
+  s = decode_mesh(forged.data(), forged.size(), unbounded, &out, &ds);
   EXPECT_EQ(s.code(), StatusCode::kParseError);
   EXPECT_EQ(s.message(), "connectivity block: connectivity: the header's 100000000 triangles are more than a block of " +
                              std::to_string(block) + " bytes can describe");

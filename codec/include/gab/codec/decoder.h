@@ -23,6 +23,11 @@
 
 namespace gab {
 
+// The automatic decode budget (DecodeOptions::max_memory = 0): bytes of
+// memory per byte of the file, and the least.
+constexpr int64_t kDecodeMemoryPerFileByte = int64_t{32} << 10;
+constexpr int64_t kMinDecodeMemory = int64_t{64} << 20;
+
 struct DecodeOptions {
   int32_t max_anchors = -1;            // decode only the first K anchors (level of detail); -1: all
   // Apply the detail chunk when the file has one and every anchor is decoded
@@ -34,6 +39,15 @@ struct DecodeOptions {
   // forged fan of triangles from asking for gigabytes.
   int64_t max_matrix_entries = int64_t{1} << 31;
   int64_t max_factor_entries = int64_t{3} << 30;
+  // The decode's memory budget in bytes: its factor, matrix and per-vertex
+  // arrays, estimated from the header, then the connectivity, then the
+  // symbolic analysis, each before what it sizes is built; over it,
+  // kResourceExhausted. 0: automatic, kDecodeMemoryPerFileByte per byte of
+  // the file and at least kMinDecodeMemory, so an ordinary file gets what its
+  // decode needs (igea's 58 KB file: 1.8 GB allowed, 0.33 GB used) and a
+  // small file cannot claim gigabytes (a 3.3 KB file of a regular 1M-vertex
+  // torus needs 2.9 GB: refused unless raised). Negative: no budget.
+  int64_t max_memory = 0;
   // Threads for the factorizations; the shape is bit-identical for any count.
   int32_t threads = 1;
   // The factorization's ordering (matrix_ordering.h); kAuto: the file's. Any other decodes the same anchors
@@ -60,6 +74,9 @@ struct DecodeStats {
   int32_t refactorizations = 0;  // chunks added by refactoring rather than updates
   int32_t skipped_sections = 0;  // trailing sections of kinds this build does not know (gab_format.h)
   Ordering ordering = Ordering::kAmd;  // the factorization's ordering (never kAuto)
+  int64_t matrix_entries = 0;          // the least-squares matrix's lower triangle, bounded from the connectivity
+  int64_t factor_entries = 0;          // the factor's stored entries (0 before chunk 0 is decoded)
+  int64_t memory_limit = 0;            // the budget the decode ran under (DecodeOptions::max_memory resolved)
 };
 
 // Decodes `data` into `mesh` (positions and triangles).
