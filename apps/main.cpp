@@ -56,7 +56,10 @@ extern "C" void on_stop_signal(int signal) {
 
 int main(int argc, char** argv) {
   gab::cli::tune_malloc();
-  for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, on_stop_signal);
+  for (int signal : {SIGINT, SIGTERM, SIGHUP}) {
+    // A signal the caller ignores (nohup, a background job) stays ignored.
+    if (std::signal(signal, on_stop_signal) == SIG_IGN) std::signal(signal, SIG_IGN);
+  }
   if (argc < 2) {
     std::fputs(help_text().c_str(), stderr);
     return gab::cli::kExitUsage;
