@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <string>
 #include <utility>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "cli.h"
@@ -158,8 +159,12 @@ int run_compress(int argc, char** argv) {
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }
-  // The summary goes to stderr when the file itself goes to stdout.
-  FILE* summary = out == "/dev/stdout" || out == "/dev/fd/1" || out == "/proc/self/fd/1" ? stderr : stdout;
+  // The summary goes to stderr when the file itself went to stdout (any
+  // name of it: /dev/stdout, /dev/fd/1, the file stdout is redirected to).
+  struct stat written, standard_out;
+  const bool to_stdout = ::stat(out.c_str(), &written) == 0 && ::fstat(STDOUT_FILENO, &standard_out) == 0 &&
+                         written.st_dev == standard_out.st_dev && written.st_ino == standard_out.st_ino;
+  FILE* summary = to_stdout ? stderr : stdout;
   std::fprintf(summary, "%s -> %s: %d vertices, %d triangles, %d anchors in %d chunks%s, q = %d\n", in.c_str(),
                out.c_str(), stats.num_vertices, stats.num_triangles, stats.anchors, stats.chunks,
                stats.refined  ? " (the last a least-squares refinement)"

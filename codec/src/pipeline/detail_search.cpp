@@ -30,12 +30,8 @@ constexpr double kRateStepGuess = 0.9;
 // detail lattice (kMinDetailStep / kSmoothDivisions) then stays under 2^52.
 constexpr double kMaxSmoothReach = 1 << 20;
 
-struct Trial {
-  std::vector<uint8_t> chunk;
-  DetailParams params;
-  double rms_rel = 0, linf_rel = 0;
-  bool met = false;
-};
+// One encoding tried: what the search returns (its `trials` set at the end).
+using Trial = DetailChoice;
 
 class Search {
  public:
@@ -131,25 +127,6 @@ Status check_search(const DetailFrame& frame, const std::vector<double>& smooth,
   return Status::Ok();
 }
 
-Trial to_trial(DetailChoice&& c) {
-  Trial t;
-  t.chunk = std::move(c.chunk);
-  t.params = c.params;
-  t.rms_rel = c.rms_rel;
-  t.linf_rel = c.linf_rel;
-  t.met = c.met;
-  return t;
-}
-
-void to_choice(Trial&& t, int trials, DetailChoice* out) {
-  out->chunk = std::move(t.chunk);
-  out->params = t.params;
-  out->rms_rel = t.rms_rel;
-  out->linf_rel = t.linf_rel;
-  out->met = t.met;
-  out->trials = trials;
-}
-
 }  // namespace
 
 Status fit_detail(const DetailTopology& topo, const DetailFrame& frame, const std::vector<double>& smooth,
@@ -164,8 +141,8 @@ Status fit_detail(const DetailTopology& topo, const DetailFrame& frame, const st
   DetailParams params;
   params.alpha_normal16 = kNormalBlends[0];
   params.alpha_tangent16 = kTangentBlends[0];
-  Trial fitted = search.largest_step(params, start, kMinDetailStep * frame.extent, kMaxDetailStep * frame.extent);
-  to_choice(std::move(fitted), search.trials(), out);
+  *out = search.largest_step(params, start, kMinDetailStep * frame.extent, kMaxDetailStep * frame.extent);
+  out->trials = search.trials();
   return Status::Ok();
 }
 
@@ -177,7 +154,7 @@ Status improve_detail(const DetailTopology& topo, const DetailFrame& frame, cons
   Search search(topo, frame, smooth, mesh, scale, target_rms_rel, target_linf_rel);
   const double lo = kMinDetailStep * frame.extent, hi = kMaxDetailStep * frame.extent;
   const int trials_before = choice->trials;
-  Trial best = to_trial(std::move(*choice));
+  Trial& best = *choice;
   // The blend that codes smallest at that step: the normal weight first,
   // then the tangential one (the two interact little). Each weight's values
   // are tried from the best parameters so far.
@@ -207,7 +184,7 @@ Status improve_detail(const DetailTopology& topo, const DetailFrame& frame, cons
     Trial t = search.largest_step(p, plain.step * kRateStepGuess, lo, hi);
     if (t.met && t.chunk.size() < best.chunk.size()) best = std::move(t);
   }
-  to_choice(std::move(best), trials_before + search.trials(), choice);
+  best.trials = trials_before + search.trials();
   return Status::Ok();
 }
 

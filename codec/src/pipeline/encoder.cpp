@@ -236,14 +236,14 @@ Status finish(EncodeContext& ctx, Estimate* e, std::vector<uint8_t>* file, Encod
   if (selection.refined) stats->refinement_bytes = e->layout.chunks.back().size() + kGabFrameBytes;
   stats->target_met = e->target_met;
 
-  std::vector<std::vector<uint8_t>> chunks = e->layout.chunks;
+  std::vector<std::vector<uint8_t>> chunks = std::move(e->layout.chunks);  // the estimate is spent
   GabHeader header = grid_header(e->quantizer, e->candidate.anchors.bits, ctx.ordering.choice());
   if (e->candidate.detail) {
     GAB_RETURN_IF_ERROR(improve_detail(ctx.detail_topology(), detail_frame_of(header), selection.shape, mesh,
                                        ctx.scale(), options.target_rms_rel, options.target_linf_rel, &e->detail));
-    chunks.push_back(e->detail.chunk);
     stats->detail = true;
     stats->detail_bytes = e->detail_bytes();
+    chunks.push_back(std::move(e->detail.chunk));
     stats->detail_step_rel = e->detail.params.step / ctx.box.diagonal;
     stats->anchor_rms_rel = stats->rms_rel;
     stats->rms_rel = e->detail.rms_rel;
