@@ -16,7 +16,7 @@ FrameRead read_framed(ByteReader* in, const uint8_t** payload, size_t* size) {
   if (length > in->remaining()) return FrameRead::kTruncated;
   in->bytes(length, payload);
   *size = length;
-  return crc32(*payload, length) == crc ? FrameRead::kOk : FrameRead::kCorrupt;
+  return checksum_matches(crc, crc32(*payload, length)) ? FrameRead::kOk : FrameRead::kCorrupt;
 }
 
 }  // namespace gab

@@ -107,7 +107,7 @@ Status read_gab_header(ByteReader* in, size_t file_size, GabHeader* h) {
   if (f.malformed) return header_error("a count in the header is not a minimal 32-bit varint");
   const size_t covered = in->offset();
   if (!in->u32(&crc)) return header_error("file ends inside the header");
-  if (crc != crc32(raw, covered)) return header_error("checksum mismatch (the header is corrupt)");
+  if (!checksum_matches(crc, crc32(raw, covered))) return header_error("checksum mismatch (the header is corrupt)");
   // The header's checksum holds, so an unknown value comes from a newer
   // writer, not from damage.
   const unsigned known = known_gab_flags();
