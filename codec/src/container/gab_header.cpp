@@ -1,5 +1,6 @@
 #include "container/gab_header.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -131,11 +132,18 @@ Status read_gab_header(ByteReader* in, size_t file_size, GabHeader* h) {
   if (n < 1 || n > 0x7FFFFFFFu || faces < 1 || faces > 0x7FFFFFFFu / 3) {
     return header_error("vertex or triangle count out of range");
   }
-  if (!(weight > 0) || !std::isfinite(weight)) return header_error("anchor weight is not positive and finite");
+  if (!(weight > 0) || !(weight <= kGabMaxMagnitude)) return header_error("anchor weight is not in (0, 1e100]");
   for (double m : min) {
     if (!std::isfinite(m)) return header_error("bounding box is not finite");
   }
   if (!(step >= 0) || !std::isfinite(step)) return header_error("grid step is not finite and non-negative");
+  // The grid's coordinates lie between min and min + step (2^bits - 1).
+  const double span = step * static_cast<double>((uint32_t{1} << bits) - 1);
+  for (double m : min) {
+    if (!(std::max(std::fabs(m), std::fabs(m + span)) <= 2 * kGabMaxMagnitude)) {
+      return header_error("the grid reaches past 2e100");
+    }
+  }
   if (anchors < 1 || anchors > n) return header_error("anchor count out of range");
   const uint32_t trailing = ((flags & kGabFlagRefined) != 0 ? 1 : 0) + ((flags & kGabFlagDetail) != 0 ? 1 : 0);
   if (chunks < 1 + trailing || chunks - trailing > anchors) return header_error("chunk count out of range");

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <string>
 
 #include "anchors/anchor_chunk.h"
@@ -349,6 +350,12 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
   const bool read_all = whole && (!header.detail() || detail);
   if (!stats->truncated && read_all) {
     GAB_RETURN_IF_ERROR(skip_trailing_sections(&in, header.sections, &stats->skipped_sections, &stats->truncated));
+  }
+  // The header bounds the grid and the weight so that every file a writer
+  // makes decodes to finite coordinates; a forged one must not hand out
+  // others either.
+  for (double x : out.positions) {
+    if (!std::isfinite(x)) return corrupt("decoded coordinates are not finite");
   }
   *mesh = std::move(out);
   stats->anchors = state.decoded;

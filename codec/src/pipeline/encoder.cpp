@@ -47,7 +47,7 @@ Status check_options(const EncodeOptions& o) {
   if (o.bits != 0 && (o.bits < kGabMinBits || o.bits > kGabMaxBits)) {
     return bad("bits must be in " + std::to_string(kGabMinBits) + ".." + std::to_string(kGabMaxBits));
   }
-  if (!(o.weight > 0) || !std::isfinite(o.weight)) return bad("anchor weight must be positive and finite");
+  if (!(o.weight > 0) || !(o.weight <= kGabMaxMagnitude)) return bad("anchor weight must be in (0, 1e100]");
   if (!(o.batch_fraction <= 1)) return bad("batch fraction must be at most 1");
   if (o.chunk_growth > 0 && !(o.chunk_growth > 1)) return bad("chunk growth must be above 1");
   if (!std::isfinite(o.chunk_growth)) return bad("chunk growth must be finite");
@@ -281,10 +281,12 @@ bool better(bool a_met, double a_bytes, bool b_met, double b_bytes) {
 Status encode_numbered(const Mesh& mesh, const EncodeOptions& options, const CodedConnectivity& coded,
                        std::vector<uint8_t>* file, EncodeStats* stats) {
   EncodeContext ctx(mesh, options, coded);
-  if (!std::isfinite(ctx.box.diagonal)) {
+  double magnitude = 0;
+  for (int c = 0; c < 3; ++c) magnitude = std::max({magnitude, std::fabs(ctx.box.lo[c]), std::fabs(ctx.box.hi[c])});
+  if (!std::isfinite(ctx.box.diagonal) || !(magnitude <= kGabMaxMagnitude)) {
     return Status::Error(StatusCode::kInvalidArgument,
-                         "mesh: its bounding box is too large to measure (the diagonal overflows a double): scale "
-                         "the coordinates down");
+                         "mesh: a coordinate's magnitude is over 1e100 (the format's bound): scale the coordinates "
+                         "down");
   }
   MeshSize size;
   size.num_vertices = mesh.num_vertices();

@@ -36,7 +36,9 @@ TEST(ConnectivitySectionTest, DecodesWhatWasCodedInEitherNumbering) {
     const Status s = decode(coded, torus, reorder, &triangles);
     ASSERT_TRUE(s.ok()) << s.message();
     EXPECT_EQ(triangles, coded.triangles);
-    if (!reorder) EXPECT_EQ(oriented_triangle_set(triangles), oriented_triangle_set(torus.triangles));
+    if (!reorder) {
+      EXPECT_EQ(oriented_triangle_set(triangles), oriented_triangle_set(torus.triangles));
+    }
   }
 }
 

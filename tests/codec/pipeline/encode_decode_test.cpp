@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "common/gab_files.h"
@@ -313,15 +314,22 @@ TEST(EncodeDecode, FlatAndPointLikeMeshes) {
   file = encode_or_die(point, options, &es);
   out = decode_or_die(file, DecodeOptions(), &ds);
   for (double x : out.positions) EXPECT_DOUBLE_EQ(x, 1.5);
-  // Finite coordinates whose box overflows: refused, saying why.
-  Mesh huge = testing_util::grid(3, 3);
-  huge.positions[0] = -1e308;
-  huge.positions[3] = 1e308;
-  const Status s = encode_mesh(huge, options, &file, &es);
-  EXPECT_EQ(s.code(), StatusCode::kInvalidArgument);
-  EXPECT_EQ(s.message(),
-            "mesh: its bounding box is too large to measure (the diagonal overflows a double): scale the coordinates "
-            "down");
+  // Finite coordinates whose box overflows, or just past the format's
+  // bound: refused, saying why; at the bound: a file that decodes.
+  for (double far : {1e308, 1.0000001e100, 1e100}) {
+    Mesh huge = testing_util::grid(3, 3);
+    huge.positions[0] = -far;
+    huge.positions[3] = far;
+    const Status s = encode_mesh(huge, options, &file, &es);
+    if (far == 1e100) {
+      ASSERT_TRUE(s.ok()) << s.message();
+      out = decode_or_die(file, DecodeOptions(), &ds);
+      EXPECT_NEAR(out.positions[3], far, 1e-2 * far);
+      continue;
+    }
+    EXPECT_EQ(s.code(), StatusCode::kInvalidArgument);
+    EXPECT_EQ(s.message(), "mesh: a coordinate's magnitude is over 1e100 (the format's bound): scale the coordinates down");
+  }
 }
 
 TEST(EncodeDecode, DecoderRefusesAFactorOverItsLimit) {
@@ -399,8 +407,10 @@ TEST(EncodeDecode, OptionErrors) {
             "a reordered file codes its connectivity: not with geometry only");
   EncodeOptions weight;
   weight.max_anchors = 5;
-  weight.weight = 0;
-  EXPECT_EQ(encode_mesh(mesh, weight, &file, &es).message(), "anchor weight must be positive and finite");
+  for (double w : {0.0, 2e100, std::numeric_limits<double>::infinity()}) {
+    weight.weight = w;
+    EXPECT_EQ(encode_mesh(mesh, weight, &file, &es).message(), "anchor weight must be in (0, 1e100]") << w;
+  }
   Mesh empty;
   EXPECT_FALSE(encode_mesh(empty, bits, &file, &es).ok());
 }

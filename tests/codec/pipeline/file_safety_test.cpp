@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <cmath>
 #include <string>
 
@@ -265,6 +266,27 @@ TEST(FileSafety, HeaderErrorsNameTheProblem) {
     EXPECT_EQ(s.code(), StatusCode::kUnsupported) << n.at;
     EXPECT_EQ(s.message(), n.message);
   }
+  // Fields each finite but whose products would overflow the solve: a
+  // weight past 1e100, a grid reaching past 2e100 (its origin, or its step
+  // times 2^bits - 1).
+  size_t weight_at = 14;  // past the magic, version and five bytes: then the n and faces varints
+  for (int varint = 0; varint < 2; ++varint) {
+    while (file[weight_at++] & 0x80) {
+    }
+  }
+  const auto with_f64 = [&](size_t at, double value) {
+    std::vector<uint8_t> f = file;
+    uint64_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    for (int b = 0; b < 8; ++b) f[at + b] = static_cast<uint8_t>(bits >> (8 * b));
+    return with_header_crc(f);
+  };
+  EXPECT_EQ(message(with_f64(weight_at, 1e101)), "bad .gab header: anchor weight is not in (0, 1e100]");
+  EXPECT_EQ(message(with_f64(weight_at + 8, -3e100)), "bad .gab header: the grid reaches past 2e100");
+  EXPECT_EQ(message(with_f64(weight_at + 32, 1e99)), "bad .gab header: the grid reaches past 2e100");
+  GabFileInfo at_bound;  // an origin at -1e100: the header reads (its anchors then lie off the moved grid)
+  const std::vector<uint8_t> moved = with_f64(weight_at + 8, -1e100);
+  EXPECT_TRUE(read_gab_info(moved.data(), moved.size(), &at_bound).ok());
   bad = file;
   bad[24] ^= 1;  // inside the weight
   EXPECT_EQ(message(bad), "bad .gab header: checksum mismatch (the header is corrupt)");

@@ -52,6 +52,12 @@ constexpr uint8_t kGabOrderingNestedDissection = 1;
 // share (header byte 12). 0: the paper's global relaxed least squares.
 constexpr uint8_t kGabReconstructionGlobal = 0;
 
+// The largest anchor weight and coordinate magnitude a file holds: w^2
+// times a coordinate, the relaxed system's right-hand side, stays finite
+// with a wide margin. A header's grid may reach twice as far (its far
+// corner rounds past the mesh's box).
+constexpr double kGabMaxMagnitude = 1e100;
+
 constexpr int kGabMinBits = 2;
 constexpr int kGabMaxBits = 24;
 
