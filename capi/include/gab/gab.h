@@ -90,7 +90,7 @@ typedef struct gab_compress_options {
   size_t size;            /* sizeof(gab_compress_options) as the caller compiled it */
   double target_rms_rel;  /* relative vertex RMS over the bounding-box diagonal (CLI --error); 0: none */
   double target_linf_rel; /* relative max vertex error (--linf); 0: none */
-  double weight;          /* anchor weight w of the relaxed basis, > 0 (default 100) */
+  double weight;          /* anchor weight w of the relaxed basis, in (0, 1e100] (default 100) */
   int32_t max_anchors;    /* anchors in the file (--anchors); 0: no count limit */
   int32_t bits;           /* q, bits per coordinate, 2..24 (--bits); 0: chosen from the target */
   int32_t reorder;        /* nonzero: number the decoded mesh in the coder's order, smaller file (--reorder) */

@@ -63,7 +63,7 @@ struct EncodeOptions {
   double target_linf_rel = 0;  // relative max vertex error; 0: none
   // q, bits per coordinate (kGabMinBits..kGabMaxBits); 0: the encoder's, from the target (12 for a count alone).
   int bits = 0;
-  double weight = 100;           // anchor weight w of the relaxed basis (positive)
+  double weight = 100;           // anchor weight w of the relaxed basis, in (0, 1e100]
   bool geometry_only = false;    // store a connectivity hash: the decoder must be given the same mesh
   // Drop the input's vertex numbering (flag kGabFlagReordered): the decoded mesh is numbered in the
   // connectivity coder's traversal order (EncodeStats::new_index maps input vertices to decoded ones), which
