@@ -1,0 +1,176 @@
+// The relaxed basis by a fixed number of conjugate-gradient steps
+// (iterative_reconstruction.h), against the factored global solve.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "common/test_meshes.h"
+#include "gab/mesh/edge_graph.h"
+#include "gab/mesh/iterative_reconstruction.h"
+#include "gab/mesh/relaxed_reconstruction.h"
+
+namespace gab {
+namespace {
+
+std::vector<double> coefficients(const Mesh& m, const std::vector<int32_t>& anchors) {
+  std::vector<double> c;
+  for (int32_t a : anchors) {
+    for (int k = 0; k < 3; ++k) c.push_back(m.positions[3 * static_cast<size_t>(a) + k]);
+  }
+  return c;
+}
+
+// Every `stride`-th vertex from `first`.
+std::vector<int32_t> every(int32_t n, int32_t stride, int32_t first = 0) {
+  std::vector<int32_t> anchors;
+  for (int32_t v = first; v < n; v += stride) anchors.push_back(v);
+  return anchors;
+}
+
+double max_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  double worst = 0;
+  for (size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::fabs(a[i] - b[i]));
+  return worst;
+}
+
+std::vector<double> global_shape(const EdgeGraph& g, double w, const std::vector<int32_t>& anchors,
+                                 const std::vector<double>& c) {
+  RelaxedReconstruction rec;
+  EXPECT_TRUE(rec.init(g, w, anchors, c).ok());
+  std::vector<double> x;
+  EXPECT_TRUE(rec.reconstruct(&x).ok());
+  return x;
+}
+
+TEST(IterativeReconstructionTest, StepsApproachTheGlobalLeastSquares) {
+  const Mesh m = testing_util::bumpy_torus(24, 16);
+  const EdgeGraph g = build_edge_graph(m);
+  const std::vector<int32_t> anchors = every(m.num_vertices(), 7);
+  const std::vector<double> c = coefficients(m, anchors);
+  const std::vector<double> global = global_shape(g, 100, anchors, c);
+  double previous = INFINITY;
+  for (int32_t steps : {0, 10, 40, 160}) {
+    IterativeReconstruction rec;
+    ASSERT_TRUE(rec.init(g, 100, anchors, c).ok());
+    std::vector<double> x;
+    ASSERT_TRUE(rec.solve(steps, &x).ok());
+    const double distance = max_difference(x, global);
+    EXPECT_LT(distance, previous) << steps;
+    previous = distance;
+  }
+  EXPECT_LT(previous, 1e-10);
+}
+
+// Hops from `source` to every vertex (one breadth-first search).
+std::vector<int32_t> hops_from(const EdgeGraph& g, int32_t source) {
+  std::vector<int32_t> hops(g.num_vertices(), -1), queue = {source};
+  hops[source] = 0;
+  for (size_t i = 0; i < queue.size(); ++i) {
+    for (int32_t p = g.offsets[queue[i]]; p < g.offsets[queue[i] + 1]; ++p) {
+      const int32_t w = g.neighbors[p];
+      if (hops[w] < 0) {
+        hops[w] = hops[queue[i]] + 1;
+        queue.push_back(w);
+      }
+    }
+  }
+  return hops;
+}
+
+TEST(IterativeReconstructionTest, ZeroStepsPutEachVertexAtItsNearestAnchor) {
+  const Mesh m = testing_util::grid(9, 4);
+  const EdgeGraph g = build_edge_graph(m);
+  // Anchors 35 then 0, in that order: a vertex as near to both takes 35's.
+  const std::vector<int32_t> anchors = {35, 0};
+  const std::vector<double> c = {5, 6, 7, 1, 2, 3};
+  IterativeReconstruction rec;
+  ASSERT_TRUE(rec.init(g, 100, anchors, c).ok());
+  std::vector<double> x;
+  ASSERT_TRUE(rec.solve(0, &x).ok());
+  const std::vector<int32_t> to_35 = hops_from(g, 35), to_0 = hops_from(g, 0);
+  int ties = 0;
+  for (int32_t v = 0; v < m.num_vertices(); ++v) {
+    const bool first = to_35[v] <= to_0[v];
+    ties += to_35[v] == to_0[v];
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(x[3 * v + k], first ? c[k] : c[3 + k]) << v;
+  }
+  EXPECT_GT(ties, 0);
+}
+
+TEST(IterativeReconstructionTest, AddedAnchorsContinueFromTheShapeSoFar) {
+  const Mesh m = testing_util::bumpy_torus(20, 12);
+  const EdgeGraph g = build_edge_graph(m);
+  const std::vector<int32_t> first = every(m.num_vertices(), 12), more = every(m.num_vertices(), 12, 5);
+  IterativeReconstruction rec;
+  ASSERT_TRUE(rec.init(g, 100, first, coefficients(m, first)).ok());
+  std::vector<double> coarse, x;
+  ASSERT_TRUE(rec.solve(30, &coarse).ok());
+  ASSERT_TRUE(rec.add_anchors(more, coefficients(m, more)).ok());
+  // No steps: the shape so far, unchanged by the new anchors.
+  ASSERT_TRUE(rec.solve(0, &x).ok());
+  EXPECT_EQ(x, coarse);
+  ASSERT_TRUE(rec.solve(800, &x).ok());
+  std::vector<int32_t> all = first;
+  all.insert(all.end(), more.begin(), more.end());
+  EXPECT_LT(max_difference(x, global_shape(g, 100, all, coefficients(m, all))), 1e-10);
+  EXPECT_EQ(rec.num_anchors(), static_cast<int32_t>(all.size()));
+}
+
+TEST(IterativeReconstructionTest, TheSameCallsGiveTheSameBits) {
+  const Mesh m = testing_util::bumpy_torus(30, 20);
+  const EdgeGraph g = build_edge_graph(m);
+  const std::vector<int32_t> first = every(m.num_vertices(), 9), more = every(m.num_vertices(), 9, 4);
+  std::vector<double> shapes[2];
+  for (std::vector<double>& x : shapes) {
+    IterativeReconstruction rec;
+    ASSERT_TRUE(rec.init(g, 100, first, coefficients(m, first)).ok());
+    ASSERT_TRUE(rec.solve(7, &x).ok());
+    ASSERT_TRUE(rec.add_anchors(more, coefficients(m, more)).ok());
+    ASSERT_TRUE(rec.solve(13, &x).ok());
+  }
+  EXPECT_EQ(shapes[0], shapes[1]);
+}
+
+TEST(IterativeReconstructionTest, TranslatedCoefficientsTranslateTheShape) {
+  // L annihilates constants, so moving every coefficient by t moves the
+  // least-squares shape by t; after enough steps the iterate agrees.
+  const Mesh m = testing_util::bumpy_torus(16, 10);
+  const EdgeGraph g = build_edge_graph(m);
+  const std::vector<int32_t> anchors = every(m.num_vertices(), 6);
+  std::vector<double> c = coefficients(m, anchors);
+  IterativeReconstruction rec;
+  ASSERT_TRUE(rec.init(g, 100, anchors, c).ok());
+  std::vector<double> before, after;
+  ASSERT_TRUE(rec.solve(600, &before).ok());
+  for (size_t i = 0; i < c.size(); ++i) c[i] += (i % 3 == 1) ? 2.5 : 0.0;
+  ASSERT_TRUE(rec.set_coefficients(0, c).ok());
+  ASSERT_TRUE(rec.solve(600, &after).ok());
+  for (size_t i = 0; i < before.size(); ++i) EXPECT_NEAR(after[i], before[i] + (i % 3 == 1 ? 2.5 : 0.0), 1e-9);
+}
+
+TEST(IterativeReconstructionTest, BadArgumentsNameTheProblem) {
+  Mesh two = testing_util::grid(2, 2);
+  const int32_t offset = two.num_vertices();
+  const Mesh other = testing_util::grid(2, 2);
+  for (double p : other.positions) two.positions.push_back(p);
+  for (int32_t t : other.triangles) two.triangles.push_back(t + offset);
+  const EdgeGraph g = build_edge_graph(two);
+  IterativeReconstruction rec;
+  std::vector<double> x;
+  EXPECT_EQ(rec.solve(1, &x).message(), "solve before init");
+  EXPECT_EQ(rec.init(g, 100, {0}, {0, 0, 0}).message(),
+            "the connected component of vertex 9 has no anchor (every component needs one)");
+  EXPECT_EQ(rec.init(g, 0, {0, 9}, std::vector<double>(6, 0)).message(), "anchor weight must be positive and finite");
+  EXPECT_EQ(rec.init(g, 100, {0, 0}, std::vector<double>(6, 0)).message(), "anchor 0 given twice");
+  EXPECT_EQ(rec.init(g, 100, {0, 18}, std::vector<double>(6, 0)).message(), "anchor 18 is not a vertex (n = 18)");
+  EXPECT_EQ(rec.init(g, 100, {0, 9}, std::vector<double>(5, 0)).message(),
+            "need 3 coefficients per anchor: got 5 for 2 anchors");
+  ASSERT_TRUE(rec.init(g, 100, {0, 9}, std::vector<double>(6, 0)).ok());
+  EXPECT_EQ(rec.add_anchors({9}, {1, 1, 1}).message(), "vertex 9 is already an anchor");
+  EXPECT_EQ(rec.set_coefficients(1, std::vector<double>(6, 0)).message(), "coefficients past the last anchor");
+  EXPECT_EQ(rec.solve(-1, &x).message(), "negative step count");
+}
+
+}  // namespace
+}  // namespace gab
