@@ -4,7 +4,9 @@
 #include "gab/mesh/normal_matrix.h"
 
 #include <algorithm>
+#include <exception>
 #include <string>
+#include <system_error>
 #include <thread>
 
 #include "gab/mesh/edge_graph.h"
@@ -31,16 +33,34 @@ void for_each_two_ring_entry(const EdgeGraph& graph, int32_t j, F f) {
 constexpr int32_t kColumnsWorthASecondThread = 20000;
 
 // work(0, split) here and work(split, n) on a second thread (none when
-// split == n).
+// split == n, or when the system refuses one: an address-space cap maps
+// each stack; then both here). What the other thread raises (its
+// allocations failing) is rethrown here after the join.
 template <typename F>
 void on_two_threads(int32_t split, int32_t n, const F& work) {
-  if (split == n) {
-    work(0, n);
-    return;
+  std::exception_ptr error;
+  std::thread other;
+  if (split < n) {
+    try {
+      other = std::thread([&work, &error, split, n] {
+        try {
+          work(split, n);
+        } catch (...) {
+          error = std::current_exception();
+        }
+      });
+    } catch (const std::system_error&) {
+      split = n;
+    }
   }
-  std::thread other([&work, split, n] { work(split, n); });
-  work(0, split);
-  other.join();
+  try {
+    work(0, split);
+  } catch (...) {
+    if (other.joinable()) other.join();
+    throw;
+  }
+  if (other.joinable()) other.join();
+  if (error) std::rethrow_exception(error);
 }
 
 }  // namespace

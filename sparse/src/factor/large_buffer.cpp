@@ -11,6 +11,8 @@
 #include <unistd.h>
 #endif
 
+#include "factor/start_thread.h"
+
 namespace gab {
 
 namespace {
@@ -95,7 +97,8 @@ void PagePopulator::start(const std::vector<std::pair<void*, size_t>>& ranges) {
   }
   if (total < kWorthAThread) return;
   work_ = std::move(work);
-  helper_ = std::thread([w = work_.get()] { w->run(); });
+  // A helper the system refuses (start_thread.h) leaves finish() the work.
+  try_start_thread(&helper_, [w = work_.get()] { w->run(); });
 #else
   (void)ranges;
 #endif
@@ -104,7 +107,7 @@ void PagePopulator::start(const std::vector<std::pair<void*, size_t>>& ranges) {
 void PagePopulator::finish() {
   if (!work_) return;
   work_->run();
-  helper_.join();
+  if (helper_.joinable()) helper_.join();
   work_.reset();
 }
 

@@ -30,6 +30,7 @@
 
 #include "gab/sparse/supernodal.h"
 #include "factor/kernel_team.h"
+#include "factor/start_thread.h"
 
 namespace gab {
 
@@ -170,31 +171,50 @@ Status factorize_supernodal(const SymbolicFactor& f, const FactorSchedule& plan,
     // part here, the other threads helping inside its large kernel calls.
     // The first failure in (post)order is the serial one: each group stops
     // at its first, and a front fails or not whatever ran before it.
+    // The helpers wait at a gate until every one has started: a team short
+    // of a member would wait for it forever. When the system refuses a
+    // thread (start_thread.h) the started ones leave, and the groups and
+    // the top part run here one after another: the same fronts in an order
+    // the schedule allows, so the same factor.
     int32_t failed[kMaxFactorThreads], bad_cols[kMaxFactorThreads];
     dense_detail::KernelTeam team(threads);
     std::atomic<int32_t> groups_done{0};
+    std::atomic<int32_t> gate{0};  // 0: wait, 1: work, -1: leave
     std::thread pool[kMaxFactorThreads];
-    for (int32_t g = 1; g < threads; ++g) {
-      pool[g] = std::thread([&, g] {
-        failed[g] = run(g, g, &bad_cols[g]);
-        groups_done.fetch_add(1, std::memory_order_release);
-        team.serve(g);
-      });
+    int32_t started = 1;
+    while (started < threads && try_start_thread(&pool[started], [&, g = started] {
+             int32_t state;
+             while ((state = gate.load(std::memory_order_acquire)) == 0) std::this_thread::yield();
+             if (state < 0) return;
+             failed[g] = run(g, g, &bad_cols[g]);
+             groups_done.fetch_add(1, std::memory_order_release);
+             team.serve(g);
+           })) {
+      ++started;
+    }
+    const bool alone = started < threads;
+    gate.store(alone ? -1 : 1, std::memory_order_release);
+    if (alone) {
+      for (int32_t g = 1; g < started; ++g) pool[g].join();
+      for (int32_t g = 1; g < threads; ++g) failed[g] = run(g, 0, &bad_cols[g]);
     }
     failed[0] = run(0, 0, &bad_cols[0]);
-    while (groups_done.load(std::memory_order_acquire) < threads - 1) std::this_thread::yield();
+    while (!alone && groups_done.load(std::memory_order_acquire) < threads - 1) std::this_thread::yield();
     for (int32_t g = 0; g < threads; ++g) {
       if (failed[g] != -1 && (fail == -1 || failed[g] < fail)) {
         fail = failed[g];
         bad = bad_cols[g];
       }
     }
-    if (fail == -1) {
+    if (fail == -1 && alone) fail = run(threads, 0, &bad);
+    if (fail == -1 && !alone) {
       dense_detail::LeadTeam lead(&team);
       fail = run(threads, 0, &bad);
     }
     team.stop();
-    for (int32_t g = 1; g < threads; ++g) pool[g].join();
+    if (!alone) {
+      for (int32_t g = 1; g < threads; ++g) pool[g].join();
+    }
   }
   if (fail != -1) {
     const int32_t col = f.first_col[fail] + bad;

@@ -19,6 +19,7 @@
 #include <thread>
 
 #include "gab/sparse/supernodal.h"
+#include "factor/start_thread.h"
 #include "kernels/solve_kernels.h"
 
 namespace gab {
@@ -68,13 +69,22 @@ void backward_step(const SymbolicFactor& f, const solve_detail::SolveKernels& ke
   kern.trsm_lower_trans(k, nrhs, l, m, x1, ldx);
 }
 
-// Runs body(g) for the schedule's groups 0..threads-1 concurrently.
+// Runs body(g) for the schedule's groups 0..threads-1 concurrently; a
+// group whose thread the system refuses (start_thread.h) runs here after
+// group 0 (the groups are independent subtrees).
 template <class F>
 void run_groups(int32_t threads, const F& body) {
   std::thread pool[kMaxFactorThreads];
-  for (int32_t g = 1; g < threads; ++g) pool[g] = std::thread([&body, g] { body(g); });
+  bool started[kMaxFactorThreads] = {};
+  for (int32_t g = 1; g < threads; ++g) started[g] = try_start_thread(&pool[g], [&body, g] { body(g); });
   body(0);
-  for (int32_t g = 1; g < threads; ++g) pool[g].join();
+  for (int32_t g = 1; g < threads; ++g) {
+    if (started[g]) {
+      pool[g].join();
+    } else {
+      body(g);
+    }
+  }
 }
 
 }  // namespace

@@ -1,10 +1,16 @@
 #include "ordering/fork_join.h"
 
+#include "factor/start_thread.h"
+
 namespace gab {
 namespace nd {
 
 ForkJoinPool::ForkJoinPool(int32_t size) : size_(size < 1 ? 1 : size) {
-  for (int32_t w = 1; w < size_; ++w) helpers_.emplace_back([this, w] { serve(w); });
+  for (int32_t w = 1; w < size_; ++w) {
+    std::thread helper;
+    if (!try_start_thread(&helper, [this, w] { serve(w); })) break;  // fewer helpers: joins run the tasks
+    helpers_.push_back(std::move(helper));
+  }
 }
 
 ForkJoinPool::~ForkJoinPool() {
@@ -24,8 +30,25 @@ void ForkJoinPool::fork(Task* task) {
   changed_.notify_one();
 }
 
+void ForkJoinPool::fork_run_join(Task* task, const std::function<void()>& here, int32_t worker) {
+  fork(task);
+  std::exception_ptr error;
+  try {
+    here();
+  } catch (...) {
+    error = std::current_exception();
+  }
+  join(task, worker);
+  if (error) std::rethrow_exception(error);
+  if (task->error) std::rethrow_exception(task->error);
+}
+
 void ForkJoinPool::run(Task* task, int32_t worker) {
-  task->fn(worker);
+  try {
+    task->fn(worker);
+  } catch (...) {
+    task->error = std::current_exception();
+  }
   {
     std::lock_guard<std::mutex> lock(mutex_);
     task->done = true;

@@ -3,12 +3,15 @@
 // 60/40, and the split below it again): a thread that forks one side and
 // works on the other, then joins, runs queued tasks while it waits, and
 // idle helpers take the oldest (largest) queued task. Which thread runs a
-// task never changes what it computes.
+// task never changes what it computes. An exception a task raises (an
+// allocation failing) reaches the thread that joins it; a helper the system
+// will not start leaves fewer threads to do the same work.
 #pragma once
 
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
+#include <exception>
 #include <functional>
 #include <mutex>
 #include <thread>
@@ -23,7 +26,8 @@ class ForkJoinPool {
   // thread that runs it.
   struct Task {
     std::function<void(int32_t)> fn;
-    bool done = false;  // guarded by the pool's mutex
+    bool done = false;         // guarded by the pool's mutex
+    std::exception_ptr error;  // what fn raised, rethrown by join
   };
 
   // `size` workers: the calling thread (worker 0) and size - 1 helpers.
@@ -33,13 +37,16 @@ class ForkJoinPool {
   ForkJoinPool& operator=(const ForkJoinPool&) = delete;
 
   int32_t size() const { return size_; }
-  // Queues *task (which must outlive its join).
-  void fork(Task* task);
-  // Returns once *task has run, running queued tasks on this thread (as
-  // `worker`) meanwhile: the newest first, most often task itself.
-  void join(Task* task, int32_t worker);
+  // Queues *task, runs here() on this thread (as `worker`), then joins
+  // *task: returns once it has run, running queued tasks meanwhile (the
+  // newest first, most often task itself). Rethrows what here() raised,
+  // else what the task raised, but only after the join: a task never
+  // outlives the frame that made it.
+  void fork_run_join(Task* task, const std::function<void()>& here, int32_t worker);
 
  private:
+  void fork(Task* task);
+  void join(Task* task, int32_t worker);
   void run(Task* task, int32_t worker);
   void serve(int32_t worker);
 

@@ -157,13 +157,13 @@ class Dissection {
         left_status = order(std::move(part[0]), std::move(part_label[0]), std::move(part_hierarchy[0]), false,
                             part_begin[0], child_seed(seed, 0), w, &left_nodes, &left_roots);
       };
-      pool_->fork(&left);
-      build_part(1, &ws);
-      if (built.fetch_add(1) == 1) release_graph();
-      const Status right_status =
-          order(std::move(part[1]), std::move(part_label[1]), std::move(part_hierarchy[1]), false, part_begin[1],
-                child_seed(seed, 1), worker, &right_nodes, &right_roots);
-      pool_->join(&left, worker);
+      Status right_status = Status::Ok();
+      pool_->fork_run_join(&left, [&] {
+        build_part(1, &ws);
+        if (built.fetch_add(1) == 1) release_graph();
+        right_status = order(std::move(part[1]), std::move(part_label[1]), std::move(part_hierarchy[1]), false,
+                             part_begin[1], child_seed(seed, 1), worker, &right_nodes, &right_roots);
+      }, worker);
       GAB_RETURN_IF_ERROR(left_status);
       GAB_RETURN_IF_ERROR(right_status);
       append_nodes(left_nodes, left_roots, nodes, &children);

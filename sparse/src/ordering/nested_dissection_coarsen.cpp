@@ -145,11 +145,11 @@ void coarsen(const Graph& fine, int64_t max_vertex_weight, size_t thread_entries
     q2 = contract_rows(fine, pairs, fine_to_coarse->data(), c_split, v_split, n, slot2.data(), adj2.data(),
                        adjw2.data(), xadj2.data(), coarse->vw.data() + c_split);
   };
-  ws->pool->fork(&second);
-  const int32_t q1 = contract_rows(fine, pairs, fine_to_coarse->data(), 0, 0, v_split, ws->slot.data(),
-                                   coarse->adj.data(), coarse->adjw.data(), coarse->xadj.data() + 1,
-                                   coarse->vw.data());
-  ws->pool->join(&second, ws->worker);
+  int32_t q1 = 0;
+  ws->pool->fork_run_join(&second, [&] {
+    q1 = contract_rows(fine, pairs, fine_to_coarse->data(), 0, 0, v_split, ws->slot.data(), coarse->adj.data(),
+                       coarse->adjw.data(), coarse->xadj.data() + 1, coarse->vw.data());
+  }, ws->worker);
   std::copy(adj2.begin(), adj2.begin() + q2, coarse->adj.begin() + q1);
   std::copy(adjw2.begin(), adjw2.begin() + q2, coarse->adjw.begin() + q1);
   for (int32_t c = c_split; c < nc; ++c) coarse->xadj[c + 1] = q1 + xadj2[c - c_split];

@@ -1,12 +1,14 @@
 // The nested dissection's fork-join pool: every task runs exactly once, on a
 // worker index in range, joins return only after their task ran, and
 // nested forks (tasks forking tasks, joins running other queued tasks)
-// neither deadlock nor lose work.
+// neither deadlock nor lose work; an exception raised on either side reaches
+// the joining thread after the join.
 #include "ordering/fork_join.h"
 
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <new>
 #include <cstdint>
 #include <vector>
 
@@ -30,9 +32,8 @@ int64_t range_sum(nd::ForkJoinPool* pool, int64_t lo, int64_t hi, int32_t worker
   int64_t left = -1;
   nd::ForkJoinPool::Task task;
   task.fn = [&](int32_t w) { left = range_sum(pool, lo, mid, w, bad_worker, runs); };
-  pool->fork(&task);
-  const int64_t right = range_sum(pool, mid, hi, worker, bad_worker, runs);
-  pool->join(&task, worker);
+  int64_t right = -1;
+  pool->fork_run_join(&task, [&] { right = range_sum(pool, mid, hi, worker, bad_worker, runs); }, worker);
   EXPECT_GE(left, 0);  // the task ran before join returned
   return left + right;
 }
@@ -49,6 +50,30 @@ TEST(ForkJoinPool, NestedForksRunEveryTaskOnceAndJoinAfterIt) {
     int32_t wrong = 0;
     for (auto& r : runs) wrong += r.load() != 1;
     EXPECT_EQ(wrong, 0) << size << " workers";
+  }
+}
+
+TEST(ForkJoinPool, ExceptionsReachTheJoinerAfterTheJoin) {
+  for (int32_t size : {1, 2}) {
+    nd::ForkJoinPool pool(size);
+    for (bool in_task : {true, false}) {
+      std::atomic<bool> task_ran{false};
+      nd::ForkJoinPool::Task task;
+      task.fn = [&](int32_t) {
+        task_ran = true;
+        if (in_task) throw std::bad_alloc();
+      };
+      bool caught = false;
+      try {
+        pool.fork_run_join(&task, [&] {
+          if (!in_task) throw std::bad_alloc();
+        }, 0);
+      } catch (const std::bad_alloc&) {
+        caught = true;
+      }
+      EXPECT_TRUE(caught) << size << (in_task ? " in the task" : " here");
+      EXPECT_TRUE(task_ran) << size;  // joined before the rethrow
+    }
   }
 }
 
