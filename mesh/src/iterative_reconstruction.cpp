@@ -102,11 +102,9 @@ Status IterativeReconstruction::set_coefficients(int32_t first, const std::vecto
 
 void IterativeReconstruction::nearest_anchor_start() {
   const EdgeGraph& g = *graph_;
-  std::vector<int32_t> source(n_, -1), frontier(anchors_.size()), next;
-  for (size_t i = 0; i < anchors_.size(); ++i) {
-    frontier[i] = anchors_[i];
-    source[anchors_[i]] = static_cast<int32_t>(i);
-  }
+  std::vector<int32_t> source(n_, -1), frontier = anchors_, next;
+  std::sort(frontier.begin(), frontier.end());
+  for (int32_t a : frontier) source[a] = anchor_of_[a];
   while (!frontier.empty()) {
     next.clear();
     for (int32_t u : frontier) {

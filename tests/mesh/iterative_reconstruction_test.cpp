@@ -81,7 +81,8 @@ std::vector<int32_t> hops_from(const EdgeGraph& g, int32_t source) {
 TEST(IterativeReconstructionTest, ZeroStepsPutEachVertexAtItsNearestAnchor) {
   const Mesh m = testing_util::grid(9, 4);
   const EdgeGraph g = build_edge_graph(m);
-  // Anchors 35 then 0, in that order: a vertex as near to both takes 35's.
+  // Anchors given as 35 then 0: a vertex as near to both takes 0's (the
+  // search starts from the anchors in vertex order, not in the given one).
   const std::vector<int32_t> anchors = {35, 0};
   const std::vector<double> c = {5, 6, 7, 1, 2, 3};
   IterativeReconstruction rec;
@@ -91,7 +92,7 @@ TEST(IterativeReconstructionTest, ZeroStepsPutEachVertexAtItsNearestAnchor) {
   const std::vector<int32_t> to_35 = hops_from(g, 35), to_0 = hops_from(g, 0);
   int ties = 0;
   for (int32_t v = 0; v < m.num_vertices(); ++v) {
-    const bool first = to_35[v] <= to_0[v];
+    const bool first = to_35[v] < to_0[v];
     ties += to_35[v] == to_0[v];
     for (int k = 0; k < 3; ++k) EXPECT_EQ(x[3 * v + k], first ? c[k] : c[3 + k]) << v;
   }
@@ -115,6 +116,24 @@ TEST(IterativeReconstructionTest, AddedAnchorsContinueFromTheShapeSoFar) {
   all.insert(all.end(), more.begin(), more.end());
   EXPECT_LT(max_difference(x, global_shape(g, 100, all, coefficients(m, all))), 1e-10);
   EXPECT_EQ(rec.num_anchors(), static_cast<int32_t>(all.size()));
+}
+
+TEST(IterativeReconstructionTest, RestartForgetsTheShapeSoFar) {
+  const Mesh m = testing_util::bumpy_torus(20, 12);
+  const EdgeGraph g = build_edge_graph(m);
+  const std::vector<int32_t> first = every(m.num_vertices(), 12), more = every(m.num_vertices(), 12, 5);
+  std::vector<int32_t> all = more;  // the same set, another order
+  all.insert(all.end(), first.begin(), first.end());
+  IterativeReconstruction warm, fresh;
+  ASSERT_TRUE(warm.init(g, 100, first, coefficients(m, first)).ok());
+  std::vector<double> a, b;
+  ASSERT_TRUE(warm.solve(25, &a).ok());
+  ASSERT_TRUE(warm.add_anchors(more, coefficients(m, more)).ok());
+  warm.restart();
+  ASSERT_TRUE(warm.solve(9, &a).ok());
+  ASSERT_TRUE(fresh.init(g, 100, all, coefficients(m, all)).ok());
+  ASSERT_TRUE(fresh.solve(9, &b).ok());
+  EXPECT_EQ(a, b);
 }
 
 TEST(IterativeReconstructionTest, TheSameCallsGiveTheSameBits) {

@@ -4,7 +4,7 @@
 
 #include "anchors/anchor_chunk.h"
 #include "anchors/anchor_levels.h"
-#include "gab/mesh/relaxed_reconstruction.h"
+#include "reconstruction/shape_operator.h"
 
 namespace gab {
 
@@ -26,8 +26,8 @@ ChunkLayout encode_selection_layout(const AnchorSchedule& schedule, const GridPo
 }
 
 Status encode_level_layout(const AnchorSchedule& schedule, const EdgeGraph& graph, double weight, double growth,
-                           int32_t threads, const OrderingPlan& ordering, const GridPositions& grid,
-                           ChunkLayout* out) {
+                           int32_t threads, const OrderingPlan& ordering, uint8_t reconstruction,
+                           const GridPositions& grid, ChunkLayout* out) {
   std::vector<int32_t> spread(schedule.order.begin(), schedule.order.begin() + schedule.spread);
   std::vector<int32_t> rest(schedule.order.begin() + schedule.spread, schedule.order.end());
   std::sort(spread.begin(), spread.end());
@@ -44,21 +44,26 @@ Status encode_level_layout(const AnchorSchedule& schedule, const EdgeGraph& grap
   out->add(coder.encode_level_head(plan, spread, rest, grid.index), spread);
 
   LevelMembers members(order, rest, graph.num_vertices());
-  RelaxedReconstruction levels;  // the decoder's reconstructions from level 2 on
+  // The decoder's shapes: the global operator's from level 2 on (level 1's
+  // prediction is the spread set's, the schedule's first shape: one
+  // factorization saved); the iterative operator's from the spread set on.
+  ShapeOperator levels(reconstruction);
   levels.set_threads(threads);
-  ordering.apply(&levels);
+  levels.apply(ordering);
+  const bool from_spread = !levels.global();
   std::vector<double> shape;
   std::vector<int32_t> before = spread, previous;  // before level 2: the spread set and level 1
+  if (from_spread) GAB_RETURN_IF_ERROR(levels.init(graph, weight, spread, grid.coefficients_of(spread)));
   for (size_t k = 0; k < sizes.size(); ++k) {
     std::vector<int32_t> level = members.next(sizes, k);
-    if (k == 1) {
+    if (k == 1 && !from_spread) {
       before.insert(before.end(), previous.begin(), previous.end());
       GAB_RETURN_IF_ERROR(levels.init(graph, weight, before, grid.coefficients_of(before)));
-    } else if (k > 1) {
-      GAB_RETURN_IF_ERROR(levels.add_anchors_cheapest(previous, grid.coefficients_of(previous)));
+    } else if (k > 0) {
+      GAB_RETURN_IF_ERROR(levels.add_anchors(previous, grid.coefficients_of(previous)));
     }
-    if (k > 0) GAB_RETURN_IF_ERROR(levels.reconstruct(&shape));
-    const double* prediction = k == 0 ? schedule.shapes[0].data() : shape.data();
+    if (k > 0 || from_spread) GAB_RETURN_IF_ERROR(levels.shape(&shape));
+    const double* prediction = k == 0 && !from_spread ? schedule.shapes[0].data() : shape.data();
     out->add(coder.encode_level(level, grid.index, prediction, graph), level);
     previous = std::move(level);
   }

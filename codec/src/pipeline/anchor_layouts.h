@@ -41,11 +41,11 @@ ChunkLayout encode_selection_layout(const AnchorSchedule& schedule, const GridPo
 // The level layout (anchor_levels.h) of the schedule's anchors: chunk 0 the
 // spread set and the rest's subset, then one level's positions per chunk,
 // each predicted by the reconstruction from the levels before it (level 1:
-// from the spread set, the schedule's first shape), factored in `ordering`.
-// Cost: the decoder's, less one factorization and one solve: levels - 1
-// solves and updates (or refactorizations).
+// from the spread set, the schedule's first shape) by the operator
+// `reconstruction` names (global: factored in `ordering`). Cost: the
+// decoder's, less the first shape: levels - 1 shapes and anchor additions.
 Status encode_level_layout(const AnchorSchedule& schedule, const EdgeGraph& graph, double weight, double growth,
-                           int32_t threads, const OrderingPlan& ordering, const GridPositions& grid,
-                           ChunkLayout* out);
+                           int32_t threads, const OrderingPlan& ordering, uint8_t reconstruction,
+                           const GridPositions& grid, ChunkLayout* out);
 
 }  // namespace gab

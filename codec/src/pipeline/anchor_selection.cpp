@@ -150,7 +150,7 @@ std::vector<double> GridPositions::coefficients_of(const std::vector<int32_t>& a
 
 Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const AnchorRules& rules,
                       const EncodeOptions& options, const GridPositions& grid, double scale,
-                      const OrderingPlan& ordering, RelaxedReconstruction* rec, Selection* out) {
+                      const OrderingPlan& ordering, ShapeOperator* rec, Selection* out) {
   const int32_t n = mesh.num_vertices();
   *out = Selection();
   int32_t components = 0;
@@ -166,9 +166,10 @@ Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const AnchorRule
   schedule.cuts.push_back(schedule.spread);
 
   rec->set_threads(options.threads);
-  ordering.apply(rec);
+  rec->apply(ordering);
   GAB_RETURN_IF_ERROR(rec->init(graph, options.weight, schedule.order, grid.coefficients_of(schedule.order)));
-  out->flops = rec->cholesky().symbolic().flops;
+  // Without a factor (the iterative operator) the cheap regime's defaults.
+  out->flops = rec->relaxed() ? rec->relaxed()->cholesky().symbolic().flops : 0.0;
   const double fraction = options.batch_fraction >= 0 ? options.batch_fraction : default_batch_fraction(out->flops);
   const double growth = options.chunk_growth > 0 ? options.chunk_growth : default_chunk_growth(out->flops);
 
@@ -181,9 +182,20 @@ Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const AnchorRule
                               scale);
   std::vector<double> shape, error2(n);
   while (true) {
-    GAB_RETURN_IF_ERROR(rec->reconstruct(&shape));
+    GAB_RETURN_IF_ERROR(rec->greedy_shape(&shape));
     VertexDistance distance;
     squared_vertex_errors(mesh, shape, &error2, &distance);
+    if (!rec->global()) {
+      // The greedy shape is not the decoder's: where a chunk ends (the next
+      // one's prediction) and where the loop may stop (the file's error),
+      // the decoder's shape instead.
+      const bool may_stop = (target_rms > 0 && distance.rms * scale <= target_rms) ||
+                            (target_linf > 0 && distance.linf * scale <= target_linf) || rec->num_anchors() >= cap;
+      if (may_stop || rec->num_anchors() == schedule.cuts.back()) {
+        GAB_RETURN_IF_ERROR(rec->shape(&shape));
+        squared_vertex_errors(mesh, shape, &error2, &distance);
+      }
+    }
     out->rms_rel = distance.rms * scale;
     out->linf_rel = distance.linf * scale;
     out->curve.push_back({rec->num_anchors(), out->rms_rel, out->linf_rel});
@@ -197,15 +209,15 @@ Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const AnchorRule
     const bool linf_met = target_linf > 0 && out->linf_rel <= target_linf;
     if (rms_met || linf_met) break;
     if (rec->num_anchors() >= cap) {
-      GAB_RETURN_IF_ERROR(refinement.at_cap(rec, out->rms_rel, out->linf_rel));
+      GAB_RETURN_IF_ERROR(refinement.at_cap(rec->relaxed(), out->rms_rel, out->linf_rel));
       break;
     }
     bool stop = false;
-    GAB_RETURN_IF_ERROR(refinement.before_step(rec, out->rms_rel, out->linf_rel, &stop));
+    GAB_RETURN_IF_ERROR(refinement.before_step(rec->relaxed(), out->rms_rel, out->linf_rel, &stop));
     if (stop) break;
     const std::vector<int32_t> next =
         pick_error_maxima(graph, error2, *rec, next_batch(refinement.position_target(), fraction, out->curve, cap));
-    GAB_RETURN_IF_ERROR(rec->add_anchors_cheapest(next, grid.coefficients_of(next)));
+    GAB_RETURN_IF_ERROR(rec->add_anchors(next, grid.coefficients_of(next)));
     schedule.order.insert(schedule.order.end(), next.begin(), next.end());
     const int32_t opened_at = schedule.cuts.back();
     if (rec->num_anchors() >= growth * opened_at) schedule.cuts.push_back(rec->num_anchors());

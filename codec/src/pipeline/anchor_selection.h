@@ -11,10 +11,10 @@
 #include "gab/codec/encoder.h"
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/mesh.h"
-#include "gab/mesh/relaxed_reconstruction.h"
 #include "gab/status.h"
 #include "pipeline/encode_candidates.h"
 #include "pipeline/ordering_choice.h"
+#include "reconstruction/shape_operator.h"
 
 namespace gab {
 
@@ -55,13 +55,16 @@ struct Selection {
 // Selects anchors on `mesh` (its edge graph `graph`) at their positions on
 // `grid` until `rules` stop the loop or every vertex is an anchor; `options`
 // give the loop's tuning only (weight, batch fraction, chunk growth,
-// refinement iterations, threads, progress), never its targets. `rec` is
-// left holding the anchors in schedule order at their quantized positions,
-// factored in `ordering`. `scale`: 1 / the bounding-box diagonal. Cost: a
-// factorization, then per step a solve and an update or refactorization
-// (and a refinement try: 2 * refine_iterations + 1 solves).
+// refinement iterations, threads, progress), never its targets. `rec` (a
+// fresh operator: the file's) is left holding the anchors in schedule order
+// at their quantized positions (global: factored in `ordering`); the
+// schedule's shapes, the last shape and its errors are the decoder's.
+// `scale`: 1 / the bounding-box diagonal. Cost, global: a factorization,
+// then per step a solve and an update or refactorization (and a refinement
+// try: 2 * refine_iterations + 1 solves); iterative: per step the greedy
+// shape's steps, and at each cut and stopping point the decoder's shape's.
 Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const AnchorRules& rules,
                       const EncodeOptions& options, const GridPositions& grid, double scale,
-                      const OrderingPlan& ordering, RelaxedReconstruction* rec, Selection* out);
+                      const OrderingPlan& ordering, ShapeOperator* rec, Selection* out);
 
 }  // namespace gab

@@ -23,8 +23,8 @@
 #include "container/trailing_sections.h"
 #include "detail/detail_chunk.h"
 #include "gab/mesh/edge_graph.h"
-#include "gab/mesh/relaxed_reconstruction.h"
 #include "pipeline/ordering_choice.h"
+#include "reconstruction/shape_operator.h"
 
 namespace gab {
 
@@ -58,6 +58,9 @@ constexpr int64_t kBytesPerFactorEntry = 11;
 constexpr int64_t kBytesPerMatrixEntry = 12;
 constexpr int64_t kBytesPerVertex = 150;
 constexpr int64_t kBytesPerTriangle = 12;
+// The iterative operator's vectors (IterativeReconstruction: five of 3
+// doubles per vertex and its bookkeeping), instead of a matrix and a factor.
+constexpr int64_t kBytesPerIterativeVertex = 160;
 
 // The budget options give a file of `size` bytes (INT64_MAX: none).
 int64_t memory_budget(const DecodeOptions& options, size_t size) {
@@ -82,7 +85,8 @@ Status check_memory(int64_t needed, int64_t budget, const std::string& what) {
 // the next chunk, every decoded anchor's grid indices in file order.
 struct ChunkDecoding {
   ChunkDecoding(const GabHeader& h, const EdgeGraph& g, const DecodeOptions& o, DecodeStats* s)
-      : header(h), quantizer(Quantizer::from_grid(h.box_min, h.step, h.bits)), graph(g), options(o), stats(s) {
+      : header(h), quantizer(Quantizer::from_grid(h.box_min, h.step, h.bits)), graph(g), options(o), stats(s),
+        rec(h.reconstruction) {
     wanted = o.max_anchors >= 0 ? std::min(o.max_anchors, h.anchors) : h.anchors;
   }
   const GabHeader& header;
@@ -91,7 +95,7 @@ struct ChunkDecoding {
   const DecodeOptions& options;
   DecodeStats* stats;
   int32_t wanted = 0;  // anchors to decode (level of detail)
-  RelaxedReconstruction rec;
+  ShapeOperator rec;
   std::vector<double> shape;
   std::vector<int32_t> file_grid;
   int32_t decoded = 0;
@@ -132,10 +136,10 @@ Status add_chunk(int32_t chunk, const std::vector<int32_t>& anchors, const std::
     if (s.code() == StatusCode::kResourceExhausted || s.code() == StatusCode::kOutOfMemory) return s;
     if (!s.ok()) return corrupt("chunk 0: " + s.message());
     st->stats->factor_s += seconds_since(t);
-    st->stats->factor_entries = st->rec.cholesky().symbolic().stored_L;
+    if (st->rec.relaxed()) st->stats->factor_entries = st->rec.relaxed()->cholesky().symbolic().stored_L;
   } else {
     bool refactor = false;
-    const Status s = st->rec.add_anchors_cheapest(anchors, coefficients, &refactor);
+    const Status s = st->rec.add_anchors(anchors, coefficients, &refactor);
     if (!s.ok()) return corrupt("chunk " + std::to_string(chunk) + ": " + s.message());
     (refactor ? st->stats->factor_s : st->stats->update_s) += seconds_since(t);
     st->stats->refactorizations += refactor ? 1 : 0;
@@ -145,7 +149,7 @@ Status add_chunk(int32_t chunk, const std::vector<int32_t>& anchors, const std::
   st->stats->chunks = chunk + 1;
   if (predict) {
     const auto t_solve = std::chrono::steady_clock::now();
-    GAB_RETURN_IF_ERROR(st->rec.reconstruct(&st->shape));
+    GAB_RETURN_IF_ERROR(st->rec.shape(&st->shape));
     st->stats->solve_s += seconds_since(t_solve);
   }
   return Status::Ok();
@@ -300,7 +304,14 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
   stats->connectivity_s = seconds_since(connectivity_start);
   out.positions.assign(static_cast<size_t>(n) * 3, 0.0);
   const EdgeGraph graph = build_edge_graph(out);
-  stats->matrix_entries = matrix_entries_bound(graph);
+  const bool factored = header.reconstruction == kGabReconstructionGlobal;
+  if (!factored) {
+    held += kBytesPerIterativeVertex * n;
+    GAB_RETURN_IF_ERROR(check_memory(held, budget,
+                                     std::to_string(n) + " vertices, " + std::to_string(header.num_triangles) +
+                                         " triangles"));
+  }
+  stats->matrix_entries = factored ? matrix_entries_bound(graph) : 0;
   if (stats->matrix_entries > options.max_matrix_entries) {
     return Status::Error(StatusCode::kResourceExhausted,
                          "connectivity is too irregular: its least-squares matrix would exceed " +
@@ -322,10 +333,11 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
   state.rec.set_threads(options.threads);
   state.rec.set_max_factor_entries(factor_entries);
   stats->ordering = decoder_ordering(options.ordering, header.ordering);
-  OrderingPlan(stats->ordering).apply(&state.rec);
+  state.rec.apply(OrderingPlan(stats->ordering));
   const Status chunks =
       header.levels() ? decode_level_chunks(&in, &coder, &state) : decode_selection_chunks(&in, &coder, &state);
-  const int64_t wanted = state.rec.cholesky().symbolic().stored_L;  // analysed, even when refused
+  // Analysed, even when refused.
+  const int64_t wanted = factored ? state.rec.relaxed()->cholesky().symbolic().stored_L : 0;
   if (chunks.code() == StatusCode::kResourceExhausted && wanted > factor_entries &&
       factor_entries < options.max_factor_entries) {
     // The budget, not the caller's factor limit, refused the factor.
@@ -339,7 +351,7 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
     GAB_RETURN_IF_ERROR(apply_refinement(&in, &state));
   }
   const auto t_solve = std::chrono::steady_clock::now();
-  GAB_RETURN_IF_ERROR(state.rec.reconstruct(&out.positions));
+  GAB_RETURN_IF_ERROR(state.rec.shape(&out.positions));
   stats->solve_s += seconds_since(t_solve);
   const bool detail = header.detail() && options.detail && !stats->truncated && whole;
   if (detail) {

@@ -53,6 +53,10 @@ Status check_options(const EncodeOptions& o) {
   if (!std::isfinite(o.chunk_growth)) return bad("chunk growth must be finite");
   if (o.refine_iterations < 1) return bad("refinement iterations must be positive");
   if (o.reorder && o.geometry_only) return bad("a reordered file codes its connectivity: not with geometry only");
+  if (o.reconstruction > kGabReconstructionIterative) return bad("unknown reconstruction operator");
+  if (o.reconstruction == kGabReconstructionIterative && o.refine) {
+    return bad("the refinement chunk needs the global reconstruction operator");
+  }
   return check_codec_ordering(o.ordering);
 }
 
@@ -121,11 +125,12 @@ struct EncodeContext {
   bool has_detail_topology_ = false;
 };
 
-// The header's grid fields and ordering; the rest is set when the file is assembled.
-GabHeader grid_header(const Quantizer& quantizer, int bits, Ordering ordering) {
+// The header's grid fields, ordering and reconstruction operator; the rest is set when the file is assembled.
+GabHeader grid_header(const Quantizer& quantizer, int bits, Ordering ordering, uint8_t reconstruction) {
   GabHeader header;
   header.bits = bits;
   header.ordering = ordering_code(ordering);
+  header.reconstruction = reconstruction;
   for (int c = 0; c < 3; ++c) header.box_min[c] = quantizer.min[c];
   header.step = quantizer.step;
   return header;
@@ -169,10 +174,10 @@ Status estimate(EncodeContext& ctx, const EncodeCandidate& candidate, Estimate* 
   {
     // The selection's factor goes before the level layout's is made: at
     // 2.4M vertices each is gigabytes.
-    RelaxedReconstruction rec;
+    ShapeOperator rec(options.reconstruction);
     GAB_RETURN_IF_ERROR(select_anchors(mesh, ctx.graph, candidate.anchors, options, grid, ctx.scale(), ctx.ordering,
                                        &rec, &e->selection));
-    ctx.ordering.remember(rec);
+    if (rec.relaxed()) ctx.ordering.remember(*rec.relaxed());
     e->anchors = rec.num_anchors();
   }
   const Selection& selection = e->selection;
@@ -182,7 +187,7 @@ Status estimate(EncodeContext& ctx, const EncodeCandidate& candidate, Estimate* 
   if (try_levels) {
     const double growth = options.chunk_growth > 0 ? options.chunk_growth : default_level_growth(selection.flops);
     GAB_RETURN_IF_ERROR(encode_level_layout(selection.schedule, ctx.graph, options.weight, growth, options.threads,
-                                            ctx.ordering, grid, &in_levels));
+                                            ctx.ordering, options.reconstruction, grid, &in_levels));
   }
   e->levels = try_levels &&
               (options.layout == FileLayout::kLevels || in_levels.bytes() <= in_selection_order.bytes());
@@ -194,7 +199,8 @@ Status estimate(EncodeContext& ctx, const EncodeCandidate& candidate, Estimate* 
   if (candidate.detail) {
     // Over the decoder's shape of all the anchors: the selection's last
     // (unrefined: detail candidates never refine).
-    const GabHeader header = grid_header(e->quantizer, candidate.anchors.bits, ctx.ordering.choice());
+    const GabHeader header =
+        grid_header(e->quantizer, candidate.anchors.bits, ctx.ordering.choice(), options.reconstruction);
     GAB_RETURN_IF_ERROR(fit_detail(ctx.detail_topology(), detail_frame_of(header), selection.shape, mesh,
                                    ctx.scale(), options.target_rms_rel, options.target_linf_rel, &e->detail));
     e->target_met = e->detail.met;
@@ -237,7 +243,8 @@ Status finish(EncodeContext& ctx, Estimate* e, std::vector<uint8_t>* file, Encod
   stats->target_met = e->target_met;
 
   std::vector<std::vector<uint8_t>> chunks = std::move(e->layout.chunks);  // the estimate is spent
-  GabHeader header = grid_header(e->quantizer, e->candidate.anchors.bits, ctx.ordering.choice());
+  GabHeader header =
+      grid_header(e->quantizer, e->candidate.anchors.bits, ctx.ordering.choice(), options.reconstruction);
   if (e->candidate.detail) {
     GAB_RETURN_IF_ERROR(improve_detail(ctx.detail_topology(), detail_frame_of(header), selection.shape, mesh,
                                        ctx.scale(), options.target_rms_rel, options.target_linf_rel, &e->detail));

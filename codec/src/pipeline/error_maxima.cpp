@@ -6,7 +6,7 @@
 namespace gab {
 
 std::vector<int32_t> pick_error_maxima(const EdgeGraph& graph, const std::vector<double>& error,
-                                       const RelaxedReconstruction& rec, int32_t count) {
+                                       const ShapeOperator& rec, int32_t count) {
   const int32_t n = graph.num_vertices();
   // Batches rank the maxima by the error's mean over the closed 1-ring: an
   // anchor pulls a neighbourhood into place, so a broad bump gains more than

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "gab/mesh/edge_graph.h"
-#include "gab/mesh/relaxed_reconstruction.h"
+#include "reconstruction/shape_operator.h"
 
 namespace gab {
 
@@ -19,6 +19,6 @@ namespace gab {
 // greedy loop always progresses. Needs a free vertex. O(V + E + c log c),
 // c the local maxima.
 std::vector<int32_t> pick_error_maxima(const EdgeGraph& graph, const std::vector<double>& error,
-                                       const RelaxedReconstruction& rec, int32_t count);
+                                       const ShapeOperator& rec, int32_t count);
 
 }  // namespace gab

@@ -255,7 +255,7 @@ TEST(FileSafety, HeaderErrorsNameTheProblem) {
     const char* message;
   } newer[] = {
       {11, 2, "unsupported .gab ordering 2 (this build knows 0: amd, 1: nd)"},
-      {12, 1, "unsupported .gab reconstruction operator 1 (this build knows 0: global least squares)"},
+      {12, 2, "unsupported .gab reconstruction operator 2 (this build knows 0: global least squares, 1: iterative)"},
       {13, 7, "unsupported .gab header: reserved byte 13 is 0x07"},
   };
   for (const auto& n : newer) {

@@ -10,8 +10,8 @@
 #include "common/test_meshes.h"
 #include "gab/codec/encoder.h"
 #include "gab/mesh/edge_graph.h"
-#include "gab/mesh/relaxed_reconstruction.h"
 #include "pipeline/error_maxima.h"
+#include "reconstruction/shape_operator.h"
 
 namespace gab {
 namespace {
@@ -71,7 +71,7 @@ TEST(GreedySelection, StopsWhenEveryVertexIsAnAnchor) {
 TEST(GreedySelection, BatchesRankMaximaByTheirOneRingMassOneAtATimeByThePeak) {
   const Mesh m = bumpy_torus(24, 16);
   const EdgeGraph g = build_edge_graph(m);
-  RelaxedReconstruction rec;
+  ShapeOperator rec(kGabReconstructionGlobal);
   ASSERT_TRUE(rec.init(g, 10.0, {0}, {m.positions[0], m.positions[1], m.positions[2]}).ok());
   // A one-vertex spike and, far from it, a lower but broad bump.
   const int32_t spike = 100, bump = 200;

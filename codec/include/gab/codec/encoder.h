@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "gab/codec/gab_format.h"
 #include "gab/codec/matrix_ordering.h"
 #include "gab/mesh/mesh.h"
 #include "gab/status.h"
@@ -89,6 +90,10 @@ struct EncodeOptions {
   // The factorizations' ordering (matrix_ordering.h), recorded in the file: a matter of speed (files from
   // different orderings differ by rounding-level choices of the greedy loop only).
   Ordering ordering = Ordering::kAuto;
+  // The reconstruction operator, recorded in the file (gab_format.h, header byte 12):
+  // kGabReconstructionGlobal (the paper's factored least squares) or kGabReconstructionIterative
+  // (in development: linear-cost conjugate-gradient steps; not with `refine`).
+  uint8_t reconstruction = kGabReconstructionGlobal;
   std::function<void(int32_t, double)> progress;  // after every reconstruction: (anchors so far, relative RMS)
 };
 

@@ -49,8 +49,12 @@ constexpr uint8_t kGabOrderingAmd = 0;
 constexpr uint8_t kGabOrderingNestedDissection = 1;
 
 // The reconstruction operator R(anchors) -> shape that encoder and decoder
-// share (header byte 12). 0: the paper's global relaxed least squares.
+// share (header byte 12). 0: the paper's global relaxed least squares,
+// factored. 1: the same system by a fixed number of conjugate-gradient steps
+// per shape, linear in n (docs/format.md) -- in development: its definition
+// may still change, and only EncodeOptions::reconstruction makes such files.
 constexpr uint8_t kGabReconstructionGlobal = 0;
+constexpr uint8_t kGabReconstructionIterative = 1;
 
 // The largest anchor weight and coordinate magnitude a file holds: w^2
 // times a coordinate, the relaxed system's right-hand side, stays finite

@@ -7,10 +7,11 @@
 // ordering: memory is about 150 bytes per vertex beside the graph.
 //
 // The result is a fixed computation, not "the solution to a tolerance": the
-// steps start from the previous shape (the first time from each vertex at
-// its nearest anchor's coefficients: breadth-first from the anchors in
-// their order, a vertex taking the first anchor that reaches it), and every
-// floating-point operation happens in one order. Sums over vertices add
+// steps start from the previous shape (the first time, and after restart,
+// from each vertex at its nearest anchor's coefficients: breadth-first from
+// the anchors in increasing vertex order, a vertex taking the anchor of the
+// first frontier vertex that reaches it, so the order anchors were given in
+// does not matter), and every floating-point operation happens in one order. Sums over vertices add
 // fixed blocks of kBlock vertices in vertex order, then the blocks in block
 // order, whatever the thread count; so two programs making the same calls
 // get the same bits on any machine with IEEE doubles and no contraction,
@@ -49,9 +50,12 @@ class IterativeReconstruction {
   Status set_coefficients(int32_t first, const std::vector<double>& coefficients);
 
   // `steps` conjugate-gradient steps (>= 0) from the shape so far (or, the
-  // first time, from the nearest-anchor start); *positions receives the
-  // shape (x0 y0 z0 x1 ...). O(steps (n + edges)).
+  // first time and after restart, from the nearest-anchor start);
+  // *positions receives the shape (x0 y0 z0 x1 ...). O(steps (n + edges)).
   Status solve(int32_t steps, std::vector<double>* positions);
+  // Forgets the shape: the next solve starts from the nearest-anchor start,
+  // so its result depends on the anchors and coefficients alone. O(1).
+  void restart() { shape_.clear(); }
 
   double weight() const { return weight_; }
   int32_t num_vertices() const { return n_; }

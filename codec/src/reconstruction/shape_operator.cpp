@@ -1,0 +1,73 @@
+#include "reconstruction/shape_operator.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "gab/codec/gab_format.h"
+#include "pipeline/ordering_choice.h"
+
+namespace gab {
+
+int32_t iterative_steps(int32_t n, int32_t k) {
+  const double steps = std::ceil(kIterativeStepsPerSpacing * static_cast<double>(n) / std::max(k, 1));
+  return static_cast<int32_t>(std::min<double>(steps, kIterativeMaxSteps));
+}
+
+ShapeOperator::ShapeOperator(uint8_t code) : code_(code) {
+  if (code == kGabReconstructionIterative) {
+    iterative_ = std::make_unique<IterativeReconstruction>();
+  } else {
+    global_ = std::make_unique<RelaxedReconstruction>();
+  }
+}
+
+void ShapeOperator::set_threads(int32_t threads) {
+  if (global_) global_->set_threads(threads);
+}
+
+void ShapeOperator::apply(const OrderingPlan& ordering) {
+  if (global_) ordering.apply(global_.get());
+}
+
+void ShapeOperator::set_max_factor_entries(int64_t entries) {
+  if (global_) global_->set_max_factor_entries(entries);
+}
+
+Status ShapeOperator::init(const EdgeGraph& graph, double weight, const std::vector<int32_t>& anchors,
+                           const std::vector<double>& coefficients) {
+  return global_ ? global_->init(graph, weight, anchors, coefficients)
+                 : iterative_->init(graph, weight, anchors, coefficients);
+}
+
+Status ShapeOperator::add_anchors(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients,
+                                  bool* refactored) {
+  if (refactored) *refactored = false;
+  return global_ ? global_->add_anchors_cheapest(anchors, coefficients, refactored)
+                 : iterative_->add_anchors(anchors, coefficients);
+}
+
+Status ShapeOperator::set_coefficients(int32_t first, const std::vector<double>& coefficients) {
+  return global_ ? global_->set_coefficients(first, coefficients) : iterative_->set_coefficients(first, coefficients);
+}
+
+Status ShapeOperator::shape(std::vector<double>* positions) {
+  if (global_) return global_->reconstruct(positions);
+  iterative_->restart();
+  return iterative_->solve(iterative_steps(iterative_->num_vertices(), iterative_->num_anchors()), positions);
+}
+
+Status ShapeOperator::greedy_shape(std::vector<double>* positions) {
+  if (global_) return global_->reconstruct(positions);
+  return iterative_->solve(iterative_steps(iterative_->num_vertices(), iterative_->num_anchors()), positions);
+}
+
+int32_t ShapeOperator::num_anchors() const { return global_ ? global_->num_anchors() : iterative_->num_anchors(); }
+bool ShapeOperator::is_anchor(int32_t v) const { return global_ ? global_->is_anchor(v) : iterative_->is_anchor(v); }
+const std::vector<int32_t>& ShapeOperator::anchors() const {
+  return global_ ? global_->anchors() : iterative_->anchors();
+}
+const std::vector<double>& ShapeOperator::coefficients() const {
+  return global_ ? global_->coefficients() : iterative_->coefficients();
+}
+
+}  // namespace gab

@@ -1,0 +1,76 @@
+// The reconstruction operator a .gab file names (header byte 12): the shape
+// its anchors make, evaluated the same way by the encoder and the decoder.
+// kGabReconstructionGlobal is the paper's relaxed least squares, factored
+// (RelaxedReconstruction: anchors join by updates or refactorizations);
+// kGabReconstructionIterative the same system by iterative_steps
+// conjugate-gradient steps from the nearest-anchor start
+// (IterativeReconstruction), linear in n: a function of the anchor set and
+// its coefficients alone, whatever order or chunks they came in.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "gab/mesh/edge_graph.h"
+#include "gab/mesh/iterative_reconstruction.h"
+#include "gab/mesh/relaxed_reconstruction.h"
+#include "gab/status.h"
+
+namespace gab {
+
+class OrderingPlan;
+
+// Conjugate-gradient steps of the iterative operator's shape for k anchors
+// on n vertices: ceil(kIterativeStepsPerSpacing * n / k), at most
+// kIterativeMaxSteps (the anchors' spacing squared, in hops, is about n / k;
+// at 2 n / k steps the shape is the least squares' to 1e-3 of its error,
+// bench/reconstruction_candidates).
+constexpr double kIterativeStepsPerSpacing = 2.0;
+constexpr int32_t kIterativeMaxSteps = 64;
+int32_t iterative_steps(int32_t n, int32_t k);
+
+class ShapeOperator {
+ public:
+  // `code`: a kGabReconstruction* value the header check accepted.
+  explicit ShapeOperator(uint8_t code);
+  uint8_t code() const { return code_; }
+  bool global() const { return global_ != nullptr; }
+
+  // Global only (no-ops otherwise): threads for the factorizations, the
+  // ordering, and a bound on the factor's entries (RelaxedReconstruction).
+  void set_threads(int32_t threads);
+  void apply(const OrderingPlan& ordering);
+  void set_max_factor_entries(int64_t entries);
+
+  Status init(const EdgeGraph& graph, double weight, const std::vector<int32_t>& anchors,
+              const std::vector<double>& coefficients);
+  // Anchors joining (global: update or refactorization, the cheaper by the
+  // cost model; *refactored says which).
+  Status add_anchors(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients,
+                     bool* refactored = nullptr);
+  Status set_coefficients(int32_t first, const std::vector<double>& coefficients);
+  // The shape of the anchors so far, 3 per vertex: the operator's, which
+  // the decoder computes.
+  Status shape(std::vector<double>* positions);
+  // A shape for the encoder's greedy loop, which only ranks vertices by
+  // error: iterative, iterative_steps steps from the shape before (warm,
+  // cheaper than shape's restart; not what a decoder computes); global,
+  // shape's.
+  Status greedy_shape(std::vector<double>* positions);
+
+  int32_t num_anchors() const;
+  bool is_anchor(int32_t v) const;
+  const std::vector<int32_t>& anchors() const;
+  const std::vector<double>& coefficients() const;
+  // The factored solver (global only; null otherwise).
+  RelaxedReconstruction* relaxed() { return global_.get(); }
+  const RelaxedReconstruction* relaxed() const { return global_.get(); }
+
+ private:
+  uint8_t code_;
+  std::unique_ptr<RelaxedReconstruction> global_;
+  std::unique_ptr<IterativeReconstruction> iterative_;
+};
+
+}  // namespace gab
