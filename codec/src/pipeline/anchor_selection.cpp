@@ -186,12 +186,11 @@ Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const AnchorRule
     VertexDistance distance;
     squared_vertex_errors(mesh, shape, &error2, &distance);
     if (!rec->global()) {
-      // The greedy shape is not the decoder's: where a chunk ends (the next
-      // one's prediction) and where the loop may stop (the file's error),
-      // the decoder's shape instead.
+      // The greedy shape is not the decoder's: where the loop may stop (the
+      // file's error), the decoder's shape instead.
       const bool may_stop = (target_rms > 0 && distance.rms * scale <= target_rms) ||
                             (target_linf > 0 && distance.linf * scale <= target_linf) || rec->num_anchors() >= cap;
-      if (may_stop || rec->num_anchors() == schedule.cuts.back()) {
+      if (may_stop) {
         GAB_RETURN_IF_ERROR(rec->shape(&shape));
         squared_vertex_errors(mesh, shape, &error2, &distance);
       }
@@ -203,7 +202,11 @@ Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const AnchorRule
     if (rec->num_anchors() == schedule.cuts.back()) {
       // No anchor since the last cut: what the decoder holds when the next chunk starts.
       schedule.shapes.resize(schedule.cuts.size());
-      schedule.shapes.back() = shape;
+      if (rec->global()) {
+        schedule.shapes.back() = shape;
+      } else {
+        GAB_RETURN_IF_ERROR(rec->shape(&schedule.shapes.back(), true));
+      }
     }
     const bool rms_met = target_rms > 0 && out->rms_rel <= target_rms;
     const bool linf_met = target_linf > 0 && out->linf_rel <= target_linf;

@@ -149,7 +149,7 @@ Status add_chunk(int32_t chunk, const std::vector<int32_t>& anchors, const std::
   st->stats->chunks = chunk + 1;
   if (predict) {
     const auto t_solve = std::chrono::steady_clock::now();
-    GAB_RETURN_IF_ERROR(st->rec.shape(&st->shape));
+    GAB_RETURN_IF_ERROR(st->rec.shape(&st->shape, true));
     st->stats->solve_s += seconds_since(t_solve);
   }
   return Status::Ok();

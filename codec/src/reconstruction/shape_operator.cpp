@@ -8,9 +8,9 @@
 
 namespace gab {
 
-int32_t iterative_steps(int32_t n, int32_t k) {
-  const double steps = std::ceil(kIterativeStepsPerSpacing * static_cast<double>(n) / std::max(k, 1));
-  return static_cast<int32_t>(std::min<double>(steps, kIterativeMaxSteps));
+int32_t iterative_steps(int32_t n, int32_t k, const IterativeSteps& rule) {
+  const double steps = std::ceil(rule.per_spacing * static_cast<double>(n) / std::max(k, 1));
+  return static_cast<int32_t>(std::min<double>(steps, rule.most));
 }
 
 ShapeOperator::ShapeOperator(uint8_t code) : code_(code) {
@@ -50,15 +50,17 @@ Status ShapeOperator::set_coefficients(int32_t first, const std::vector<double>&
   return global_ ? global_->set_coefficients(first, coefficients) : iterative_->set_coefficients(first, coefficients);
 }
 
-Status ShapeOperator::shape(std::vector<double>* positions) {
+Status ShapeOperator::shape(std::vector<double>* positions, bool prediction) {
   if (global_) return global_->reconstruct(positions);
   iterative_->restart();
-  return iterative_->solve(iterative_steps(iterative_->num_vertices(), iterative_->num_anchors()), positions);
+  const IterativeSteps& rule = prediction ? kIterativePredictionSteps : kIterativeFinalSteps;
+  return iterative_->solve(iterative_steps(iterative_->num_vertices(), iterative_->num_anchors(), rule), positions);
 }
 
 Status ShapeOperator::greedy_shape(std::vector<double>* positions) {
   if (global_) return global_->reconstruct(positions);
-  return iterative_->solve(iterative_steps(iterative_->num_vertices(), iterative_->num_anchors()), positions);
+  return iterative_->solve(
+      iterative_steps(iterative_->num_vertices(), iterative_->num_anchors(), kIterativeFinalSteps), positions);
 }
 
 int32_t ShapeOperator::num_anchors() const { return global_ ? global_->num_anchors() : iterative_->num_anchors(); }

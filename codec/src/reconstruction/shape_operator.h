@@ -22,13 +22,21 @@ namespace gab {
 class OrderingPlan;
 
 // Conjugate-gradient steps of the iterative operator's shape for k anchors
-// on n vertices: ceil(kIterativeStepsPerSpacing * n / k), at most
-// kIterativeMaxSteps (the anchors' spacing squared, in hops, is about n / k;
-// at 2 n / k steps the shape is the least squares' to 1e-3 of its error,
-// bench/reconstruction_candidates).
-constexpr double kIterativeStepsPerSpacing = 2.0;
-constexpr int32_t kIterativeMaxSteps = 64;
-int32_t iterative_steps(int32_t n, int32_t k);
+// on n vertices. The anchors' spacing squared, in hops, is about n / k; at
+// 2 n / k steps the shape is the least squares' to 1e-3 of its error
+// (bench/reconstruction_candidates). A shape that is the decoder's result
+// takes ceil(2 n / k), at most 64; a shape that only predicts the next
+// chunk, ceil(1.5 n / k), at most 32: a rougher prediction costs that chunk
+// bits, the steps cost every decode (horse at 1e-3: at most 16 steps,
+// +7.3% bytes against the global operator and 0.21 s; 32, +3.7% and 0.30 s;
+// 64, +4.4% and 0.75 s, a busy machine, bench/solver_compare).
+struct IterativeSteps {
+  double per_spacing;
+  int32_t most;
+};
+constexpr IterativeSteps kIterativeFinalSteps = {2.0, 64};
+constexpr IterativeSteps kIterativePredictionSteps = {1.5, 32};
+int32_t iterative_steps(int32_t n, int32_t k, const IterativeSteps& rule);
 
 class ShapeOperator {
  public:
@@ -51,12 +59,12 @@ class ShapeOperator {
                      bool* refactored = nullptr);
   Status set_coefficients(int32_t first, const std::vector<double>& coefficients);
   // The shape of the anchors so far, 3 per vertex: the operator's, which
-  // the decoder computes.
-  Status shape(std::vector<double>* positions);
+  // the decoder computes; `prediction`: one that only predicts the next
+  // chunk (the iterative operator's rougher one).
+  Status shape(std::vector<double>* positions, bool prediction = false);
   // A shape for the encoder's greedy loop, which only ranks vertices by
-  // error: iterative, iterative_steps steps from the shape before (warm,
-  // cheaper than shape's restart; not what a decoder computes); global,
-  // shape's.
+  // error: iterative, the final rule's steps from the shape before (warm;
+  // not what a decoder computes); global, shape's.
   Status greedy_shape(std::vector<double>* positions);
 
   int32_t num_anchors() const;
