@@ -6,8 +6,8 @@
 // RMS against the original, encode and decode seconds (median of --repeat
 // decodes), and the decode's parts.
 //
-//   bench/solver_compare [--error E] [--repeat R] [mesh.off ...]
-//   (defaults: 1e-3, 3, every shared mesh)
+//   bench/solver_compare [--error E] [--repeat R] [--threads T] [mesh.off ...]
+//   (defaults: 1e-3, 3, 1 (the decode's threads; the encode takes one), every shared mesh)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -35,10 +35,13 @@ double now() {
 int main(int argc, char** argv) {
   double error = 1e-3;
   int repeat = 3;
+  int threads = 1;
   std::vector<char*> rest = {argv[0]};
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--error") && i + 1 < argc) {
       error = std::atof(argv[++i]);
+    } else if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) {
+      threads = std::max(1, std::atoi(argv[++i]));
     } else if (!std::strcmp(argv[i], "--repeat") && i + 1 < argc) {
       repeat = std::max(1, std::atoi(argv[++i]));
     } else {
@@ -73,9 +76,11 @@ int main(int argc, char** argv) {
       std::vector<double> seconds;
       gab::Mesh decoded;
       gab::DecodeStats ds;
+      gab::DecodeOptions decode;
+      decode.threads = threads;
       for (int r = 0; r < repeat; ++r) {
         t = now();
-        const gab::Status s = gab::decode_mesh(file.data(), file.size(), gab::DecodeOptions(), &decoded, &ds);
+        const gab::Status s = gab::decode_mesh(file.data(), file.size(), decode, &decoded, &ds);
         seconds.push_back(now() - t);
         if (!s.ok()) {
           std::fprintf(stderr, "%s: decode: %s\n", name.c_str(), s.message().c_str());

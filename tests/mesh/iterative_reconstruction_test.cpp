@@ -151,6 +151,27 @@ TEST(IterativeReconstructionTest, TheSameCallsGiveTheSameBits) {
   EXPECT_EQ(shapes[0], shapes[1]);
 }
 
+TEST(IterativeReconstructionTest, AnyThreadCountGivesTheSameBits) {
+  // Three blocks of kBlock vertices and a part: every split of the blocks.
+  const Mesh m = testing_util::bumpy_torus(130, 80);
+  ASSERT_GT(m.num_vertices(), 2 * IterativeReconstruction::kBlock);
+  const EdgeGraph g = build_edge_graph(m);
+  const std::vector<int32_t> anchors = every(m.num_vertices(), 11);
+  std::vector<double> one;
+  for (int32_t threads : {1, 2, 3, 8}) {
+    IterativeReconstruction rec;
+    rec.set_threads(threads);
+    ASSERT_TRUE(rec.init(g, 100, anchors, coefficients(m, anchors)).ok());
+    std::vector<double> x;
+    ASSERT_TRUE(rec.solve(12, &x).ok());
+    if (threads == 1) {
+      one = x;
+    } else {
+      EXPECT_EQ(x, one) << threads << " threads";
+    }
+  }
+}
+
 TEST(IterativeReconstructionTest, TranslatedCoefficientsTranslateTheShape) {
   // L annihilates constants, so moving every coefficient by t moves the
   // least-squares shape by t; after enough steps the iterate agrees.

@@ -23,6 +23,7 @@ ShapeOperator::ShapeOperator(uint8_t code) : code_(code) {
 
 void ShapeOperator::set_threads(int32_t threads) {
   if (global_) global_->set_threads(threads);
+  if (iterative_) iterative_->set_threads(threads);
 }
 
 void ShapeOperator::apply(const OrderingPlan& ordering) {

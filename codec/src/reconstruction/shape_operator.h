@@ -45,9 +45,11 @@ class ShapeOperator {
   uint8_t code() const { return code_; }
   bool global() const { return global_ != nullptr; }
 
-  // Global only (no-ops otherwise): threads for the factorizations, the
-  // ordering, and a bound on the factor's entries (RelaxedReconstruction).
+  // Threads for the factorizations or the iterative steps (the same shapes
+  // for any count).
   void set_threads(int32_t threads);
+  // Global only (no-ops otherwise): the ordering, and a bound on the
+  // factor's entries (RelaxedReconstruction).
   void apply(const OrderingPlan& ordering);
   void set_max_factor_entries(int64_t entries);
 

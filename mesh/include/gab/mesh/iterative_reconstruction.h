@@ -22,6 +22,7 @@
 // it to 1e-3 of the error, bench/reconstruction_candidates).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -53,6 +54,8 @@ class IterativeReconstruction {
   // first time and after restart, from the nearest-anchor start);
   // *positions receives the shape (x0 y0 z0 x1 ...). O(steps (n + edges)).
   Status solve(int32_t steps, std::vector<double>* positions);
+  // Threads for solve (default 1); the shape is the same bits for any count.
+  void set_threads(int32_t threads) { threads_ = std::max(1, threads); }
   // Forgets the shape: the next solve starts from the nearest-anchor start,
   // so its result depends on the anchors and coefficients alone. O(1).
   void restart() { shape_.clear(); }
@@ -70,12 +73,11 @@ class IterativeReconstruction {
   Status check_new(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients) const;
   void record(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
   void nearest_anchor_start();
-  // y = L x (3 interleaved columns).
-  void laplacian(const std::vector<double>& x, std::vector<double>* y) const;
 
   const EdgeGraph* graph_ = nullptr;
   int32_t n_ = 0;
   double weight_ = 0.0;
+  int32_t threads_ = 1;
   std::vector<int32_t> anchors_;
   std::vector<double> coefficients_;  // 3 per anchor
   std::vector<int32_t> anchor_of_;    // vertex -> index in anchors_, or -1
