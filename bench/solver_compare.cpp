@@ -6,8 +6,9 @@
 // RMS against the original, encode and decode seconds (median of --repeat
 // decodes), and the decode's parts.
 //
-//   bench/solver_compare [--error E] [--repeat R] [--threads T] [mesh.off ...]
-//   (defaults: 1e-3, 3, 1 (the decode's threads; the encode takes one), every shared mesh)
+//   bench/solver_compare [--error E] [--repeat R] [--threads T] [--out DIR] [mesh.off ...]
+//   (defaults: 1e-3, 3, 1 (the decode's threads; the encode takes one), every shared mesh;
+//   --out writes each file as DIR/MESH-OPERATOR.gab, for `gab decompress` to measure its memory)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -15,10 +16,12 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "gab/codec/decoder.h"
 #include "gab/codec/encoder.h"
+#include "gab/mesh/file_io.h"
 #include "gab/mesh/mesh_io.h"
 #include "gab/mesh/metrics.h"
 #include "gab/mesh/renumber.h"
@@ -36,10 +39,13 @@ int main(int argc, char** argv) {
   double error = 1e-3;
   int repeat = 3;
   int threads = 1;
+  std::string out_dir;
   std::vector<char*> rest = {argv[0]};
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--error") && i + 1 < argc) {
       error = std::atof(argv[++i]);
+    } else if (!std::strcmp(argv[i], "--out") && i + 1 < argc) {
+      out_dir = argv[++i];
     } else if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) {
       threads = std::max(1, std::atoi(argv[++i]));
     } else if (!std::strcmp(argv[i], "--repeat") && i + 1 < argc) {
@@ -73,6 +79,16 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "%s: %s\n", name.c_str(), encoded.message().c_str());
         return 1;
       }
+      const char* op_name = op == gab::kGabReconstructionGlobal ? "global" : "iterative";
+      if (!out_dir.empty()) {
+        const std::string out = out_dir + "/" + name + "-" + op_name + ".gab";
+        const gab::Status written = gab::write_output_file(
+            out, std::string_view(reinterpret_cast<const char*>(file.data()), file.size()));
+        if (!written.ok()) {
+          std::fprintf(stderr, "%s\n", written.message().c_str());
+          return 1;
+        }
+      }
       std::vector<double> seconds;
       gab::Mesh decoded;
       gab::DecodeStats ds;
@@ -96,8 +112,8 @@ int main(int argc, char** argv) {
         sum += d * d;
       }
       const double rms = std::sqrt(sum / mesh.num_vertices()) / diagonal;
-      std::printf("%-12s %-9s %9zu %10.3e %8.2f %8.3f %8.3f %8.3f %8.3f\n", name.c_str(),
-                  op == gab::kGabReconstructionGlobal ? "global" : "iterative", file.size(), rms, encode_s,
+      std::printf("%-12s %-9s %9zu %10.3e %8.2f %8.3f %8.3f %8.3f %8.3f\n", name.c_str(), op_name, file.size(), rms,
+                  encode_s,
                   seconds[seconds.size() / 2], ds.connectivity_s, ds.factor_s, ds.solve_s);
       std::fflush(stdout);
     }
