@@ -61,7 +61,7 @@ Status ShapeOperator::shape(std::vector<double>* positions, bool prediction) {
 Status ShapeOperator::greedy_shape(std::vector<double>* positions) {
   if (global_) return global_->reconstruct(positions);
   return iterative_->solve(
-      iterative_steps(iterative_->num_vertices(), iterative_->num_anchors(), kIterativeFinalSteps), positions);
+      iterative_steps(iterative_->num_vertices(), iterative_->num_anchors(), kIterativeGreedySteps), positions);
 }
 
 int32_t ShapeOperator::num_anchors() const { return global_ ? global_->num_anchors() : iterative_->num_anchors(); }

@@ -36,6 +36,8 @@ struct IterativeSteps {
 };
 constexpr IterativeSteps kIterativeFinalSteps = {2.0, 64};
 constexpr IterativeSteps kIterativePredictionSteps = {1.5, 32};
+// The encoder's greedy shapes, each warm from the one before: fewer steps.
+constexpr IterativeSteps kIterativeGreedySteps = {0.5, 16};
 int32_t iterative_steps(int32_t n, int32_t k, const IterativeSteps& rule);
 
 class ShapeOperator {
