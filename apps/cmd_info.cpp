@@ -7,6 +7,7 @@
 #include "cli.h"
 #include "commands.h"
 #include "gab/codec/decoder.h"
+#include "gab/codec/gab_format.h"
 #include "gab/mesh/file_io.h"
 
 namespace gab {
@@ -60,11 +61,12 @@ int run_info(int argc, char** argv) {
   }
   std::printf("%s: .gab version %d, %d vertices, %d triangles%s\n", in.c_str(), info.version, info.num_vertices,
               info.num_triangles, info.geometry_only ? " (geometry only: decode with --connectivity MESH)" : "");
-  std::printf("%d anchors in %d chunks%s%s; q = %d bits, w = %g, ordered by %s\n", info.anchors, info.chunks,
+  std::printf("%d anchors in %d chunks%s%s; q = %d bits, w = %g, ordered by %s%s\n", info.anchors, info.chunks,
               info.levels ? " (chunk 0 codes the anchor set, later chunks are the decoder's levels)" : "",
               info.truncated ? (" (truncated: " + std::to_string(info.chunks_present) + " complete)").c_str() : "",
               info.bits, info.weight,
-              info.ordering == Ordering::kNestedDissection ? "nested dissection" : "AMD");
+              info.ordering == Ordering::kNestedDissection ? "nested dissection" : "AMD",
+              info.reconstruction == kGabReconstructionIterative ? "; iterative reconstruction (in development)" : "");
   std::printf("%zu bytes: geometry %zu (%.3f bits/vertex), connectivity %zu (%s)", info.bytes, info.geometry_bytes,
               bpv, info.connectivity_bytes,
               info.geometry_only ? "a hash" : "valence coded");
