@@ -30,24 +30,48 @@ void ForkJoinPool::fork(Task* task) {
   changed_.notify_one();
 }
 
+void ForkJoinPool::fail(std::exception_ptr error) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!first_error_) first_error_ = error;
+  failed_ = true;
+}
+
 void ForkJoinPool::fork_run_join(Task* task, const std::function<void()>& here, int32_t worker) {
   fork(task);
   std::exception_ptr error;
+#if defined(__cpp_exceptions)
   try {
     here();
   } catch (...) {
     error = std::current_exception();
+    fail(error);
   }
+#else
+  here();
+#endif
   join(task, worker);
   if (error) std::rethrow_exception(error);
   if (task->error) std::rethrow_exception(task->error);
 }
 
 void ForkJoinPool::run(Task* task, int32_t worker) {
-  try {
+  // After a failure no task body runs: the failed one may have left its
+  // worker's workspace half grown, and the caller is unwinding anyway.
+  // A skipped task carries the first failure to its joiner.
+  if (failed_.load()) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    task->error = first_error_;
+  } else {
+#if defined(__cpp_exceptions)
+    try {
+      task->fn(worker);
+    } catch (...) {
+      task->error = std::current_exception();
+      fail(task->error);
+    }
+#else
     task->fn(worker);
-  } catch (...) {
-    task->error = std::current_exception();
+#endif
   }
   {
     std::lock_guard<std::mutex> lock(mutex_);

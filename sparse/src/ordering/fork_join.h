@@ -4,10 +4,12 @@
 // works on the other, then joins, runs queued tasks while it waits, and
 // idle helpers take the oldest (largest) queued task. Which thread runs a
 // task never changes what it computes. An exception a task raises (an
-// allocation failing) reaches the thread that joins it; a helper the system
-// will not start leaves fewer threads to do the same work.
+// allocation failing) reaches the thread that joins it, and no task body
+// runs after it (the failed task's worker may hold a half-grown workspace);
+// a helper the system will not start leaves fewer threads to do the work.
 #pragma once
 
+#include <atomic>
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
@@ -45,6 +47,8 @@ class ForkJoinPool {
   void fork_run_join(Task* task, const std::function<void()>& here, int32_t worker);
 
  private:
+  // Records the first failure; from then on run() skips task bodies.
+  void fail(std::exception_ptr error);
   void fork(Task* task);
   void join(Task* task, int32_t worker);
   void run(Task* task, int32_t worker);
@@ -55,6 +59,8 @@ class ForkJoinPool {
   std::condition_variable changed_;  // a task queued or finished, or stopping
   std::deque<Task*> queue_;
   bool stopping_ = false;
+  std::atomic<bool> failed_{false};
+  std::exception_ptr first_error_;  // guarded by mutex_
   std::vector<std::thread> helpers_;
 };
 

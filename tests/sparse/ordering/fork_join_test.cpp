@@ -2,7 +2,7 @@
 // worker index in range, joins return only after their task ran, and
 // nested forks (tasks forking tasks, joins running other queued tasks)
 // neither deadlock nor lose work; an exception raised on either side reaches
-// the joining thread after the join.
+// the joining thread after the join, and no task body runs after it.
 #include "ordering/fork_join.h"
 
 #include <gtest/gtest.h>
@@ -53,14 +53,12 @@ TEST(ForkJoinPool, NestedForksRunEveryTaskOnceAndJoinAfterIt) {
   }
 }
 
-TEST(ForkJoinPool, ExceptionsReachTheJoinerAfterTheJoin) {
+TEST(ForkJoinPool, ExceptionsReachTheJoinerAfterTheJoinAndStopThePool) {
   for (int32_t size : {1, 2}) {
-    nd::ForkJoinPool pool(size);
     for (bool in_task : {true, false}) {
-      std::atomic<bool> task_ran{false};
+      nd::ForkJoinPool pool(size);
       nd::ForkJoinPool::Task task;
       task.fn = [&](int32_t) {
-        task_ran = true;
         if (in_task) throw std::bad_alloc();
       };
       bool caught = false;
@@ -72,7 +70,19 @@ TEST(ForkJoinPool, ExceptionsReachTheJoinerAfterTheJoin) {
         caught = true;
       }
       EXPECT_TRUE(caught) << size << (in_task ? " in the task" : " here");
-      EXPECT_TRUE(task_ran) << size;  // joined before the rethrow
+      EXPECT_TRUE(task.done) << size;  // joined (run or skipped) before the rethrow
+      // After a failure no task body runs; its joiner gets the failure.
+      bool ran = false;
+      nd::ForkJoinPool::Task later;
+      later.fn = [&](int32_t) { ran = true; };
+      caught = false;
+      try {
+        pool.fork_run_join(&later, [] {}, 0);
+      } catch (const std::bad_alloc&) {
+        caught = true;
+      }
+      EXPECT_TRUE(caught) << size;
+      EXPECT_FALSE(ran) << size;
     }
   }
 }
