@@ -147,17 +147,7 @@ Status IterativeReconstruction::init(const EdgeGraph& graph, double weight, cons
   shape_.clear();
   anchor_of_.assign(n_, -1);
   GAB_RETURN_IF_ERROR(check_new(anchors, coefficients));
-  int32_t ncomp = 0;
-  const std::vector<int32_t> comp = connected_components(graph, &ncomp);
-  std::vector<char> covered(ncomp, 0);
-  for (int32_t a : anchors) covered[comp[a]] = 1;
-  for (int32_t v = 0; v < n_; ++v) {
-    if (!covered[comp[v]]) {
-      return Status::Error(StatusCode::kInvalidArgument,
-                           "the connected component of vertex " + std::to_string(v) +
-                               " has no anchor (every component needs one)");
-    }
-  }
+  GAB_RETURN_IF_ERROR(check_components_anchored(graph, anchors));
   record(anchors, coefficients);
   return Status::Ok();
 }

@@ -59,17 +59,7 @@ Status RelaxedReconstruction::init(const EdgeGraph& graph, double weight,
   anchored_.assign(n_, 0);
   GAB_RETURN_IF_ERROR(check_new(anchors, coefficients));
   // Every component needs an anchor, or L^T L + w^2 E^T E is singular there.
-  int32_t ncomp = 0;
-  const std::vector<int32_t> comp = connected_components(graph, &ncomp);
-  std::vector<char> covered(ncomp, 0);
-  for (int32_t a : anchors) covered[comp[a]] = 1;
-  for (int32_t v = 0; v < n_; ++v) {
-    if (!covered[comp[v]]) {
-      return Status::Error(StatusCode::kInvalidArgument,
-                           "the connected component of vertex " + std::to_string(v) +
-                               " has no anchor (every component needs one)");
-    }
-  }
+  GAB_RETURN_IF_ERROR(check_components_anchored(graph, anchors));
   CscMatrix matrix;
   GAB_RETURN_IF_ERROR(assemble_normal_matrix(graph, anchors, weight, &matrix, threads_));
   AnalyzeOptions options;
