@@ -9,6 +9,9 @@
 //            conjugate gradients, matrix-free, from each vertex's nearest
 //            anchor; cg-0 is that start): a fixed amount of work whose
 //            result both sides of a codec compute alike.
+//   hS+cg-I  the same from a smoother start: S Jacobi sweeps of the
+//            harmonic interpolation (free vertices to their neighbours'
+//            mean) after the nearest-anchor start.
 // Prints per candidate the vertex RMS against the original over the box
 // diagonal, its ratio to the global's, the RMS distance to the global shape,
 // and seconds (one thread).
@@ -75,6 +78,26 @@ std::vector<int32_t> spread_anchors(const gab::EdgeGraph& g, int spread) {
     for (int32_t u : touched) hops[u] = -1;
   }
   return anchors;
+}
+
+// `sweeps` Jacobi sweeps of the harmonic interpolation (each free vertex to
+// its neighbours' mean, anchors fixed) from x.
+void harmonic_sweeps(const gab::EdgeGraph& g, const std::vector<char>& anchored, int sweeps, std::vector<double>* x) {
+  std::vector<double> next(x->size());
+  for (int s = 0; s < sweeps; ++s) {
+    for (int32_t v = 0; v < g.num_vertices(); ++v) {
+      for (int c = 0; c < 3; ++c) {
+        if (anchored[v] || g.degree(v) == 0) {
+          next[3 * v + c] = (*x)[3 * v + c];
+          continue;
+        }
+        double sum = 0;
+        for (int32_t p = g.offsets[v]; p < g.offsets[v + 1]; ++p) sum += (*x)[3 * g.neighbors[p] + c];
+        next[3 * v + c] = sum / g.degree(v);
+      }
+    }
+    x->swap(next);
+  }
 }
 
 double rms_between(const std::vector<double>& a, const std::vector<double>& b) {
@@ -152,6 +175,27 @@ int main(int argc, char** argv) {
     std::snprintf(name, sizeof name, "cg-%d", steps);
     std::printf("%-10s rms %.3e (%.3fx)  from global %.3e  %.3f s\n", name, rms, rms / global_rms,
                 rms_between(x, global) / diagonal, seconds);
+  }
+  std::vector<char> anchored(n, 0);
+  for (int32_t a : anchors) anchored[a] = 1;
+  for (int sweeps : {4, 16}) {
+    for (int steps : iterations) {
+      gab::IterativeReconstruction it;
+      std::vector<double> x;
+      t = now();
+      s = it.init(g, weight, anchors, coefficients);
+      std::vector<double> start = it.nearest_anchor_shape();
+      harmonic_sweeps(g, anchored, sweeps, &start);
+      if (s.ok()) s = it.set_start(start);
+      if (s.ok()) s = it.solve(steps, &x);
+      const double seconds = now() - t;
+      if (!s.ok()) return 1;
+      const double rms = rms_between(x, mesh.positions) / diagonal;
+      char name[32];
+      std::snprintf(name, sizeof name, "h%d+cg-%d", sweeps, steps);
+      std::printf("%-10s rms %.3e (%.3fx)  from global %.3e  %.3f s\n", name, rms, rms / global_rms,
+                  rms_between(x, global) / diagonal, seconds);
+    }
   }
   return 0;
 }

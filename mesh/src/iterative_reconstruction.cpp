@@ -169,6 +169,22 @@ Status IterativeReconstruction::set_coefficients(int32_t first, const std::vecto
   return Status::Ok();
 }
 
+Status IterativeReconstruction::set_start(const std::vector<double>& positions) {
+  if (positions.size() != 3 * static_cast<size_t>(n_)) {
+    return Status::Error(StatusCode::kInvalidArgument, "a start needs 3 coordinates per vertex");
+  }
+  for (double x : positions) {
+    if (!std::isfinite(x)) return Status::Error(StatusCode::kInvalidArgument, "a start coordinate is not finite");
+  }
+  shape_ = positions;
+  return Status::Ok();
+}
+
+std::vector<double> IterativeReconstruction::nearest_anchor_shape() {
+  nearest_anchor_start();
+  return shape_;
+}
+
 void IterativeReconstruction::nearest_anchor_start() {
   const EdgeGraph& g = *graph_;
   std::vector<int32_t> source(n_, -1), frontier = anchors_, next;

@@ -136,6 +136,26 @@ TEST(IterativeReconstructionTest, RestartForgetsTheShapeSoFar) {
   EXPECT_EQ(a, b);
 }
 
+TEST(IterativeReconstructionTest, AGivenStartIsKeptAndTheSolutionIsAFixedPoint) {
+  const Mesh m = testing_util::bumpy_torus(20, 12);
+  const EdgeGraph g = build_edge_graph(m);
+  const std::vector<int32_t> anchors = every(m.num_vertices(), 8);
+  const std::vector<double> c = coefficients(m, anchors);
+  const std::vector<double> global = global_shape(g, 100, anchors, c);
+  IterativeReconstruction rec;
+  ASSERT_TRUE(rec.init(g, 100, anchors, c).ok());
+  EXPECT_EQ(rec.set_start(std::vector<double>(5, 0.0)).message(), "a start needs 3 coordinates per vertex");
+  std::vector<double> nan_start = global;
+  nan_start[7] = NAN;
+  EXPECT_EQ(rec.set_start(nan_start).message(), "a start coordinate is not finite");
+  ASSERT_TRUE(rec.set_start(global).ok());
+  std::vector<double> x;
+  ASSERT_TRUE(rec.solve(0, &x).ok());
+  EXPECT_EQ(x, global);
+  ASSERT_TRUE(rec.solve(5, &x).ok());
+  EXPECT_LT(max_difference(x, global), 1e-12);
+}
+
 TEST(IterativeReconstructionTest, TheSameCallsGiveTheSameBits) {
   const Mesh m = testing_util::bumpy_torus(30, 20);
   const EdgeGraph g = build_edge_graph(m);

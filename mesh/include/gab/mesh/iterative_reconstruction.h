@@ -56,6 +56,11 @@ class IterativeReconstruction {
   Status solve(int32_t steps, std::vector<double>* positions);
   // Threads for solve (default 1); the shape is the same bits for any count.
   void set_threads(int32_t threads) { threads_ = std::max(1, threads); }
+  // The next solve starts from `positions` (3 per vertex, finite) instead
+  // of the shape so far. O(n).
+  Status set_start(const std::vector<double>& positions);
+  // The nearest-anchor start itself (3 per vertex), without solving. O(n + edges).
+  std::vector<double> nearest_anchor_shape();
   // Forgets the shape: the next solve starts from the nearest-anchor start,
   // so its result depends on the anchors and coefficients alone. O(1).
   void restart() { shape_.clear(); }
