@@ -29,11 +29,15 @@ class StepTeam {
         vertices_(vertices) {
     const int32_t wanted = std::max(1, std::min(threads, blocks_));
     for (int32_t member = 1; member < wanted; ++member) {
+#if defined(__cpp_exceptions)
       try {
         helpers_.emplace_back([this, member] { serve(member); });
       } catch (const std::system_error&) {
         break;
       }
+#else
+      helpers_.emplace_back([this, member] { serve(member); });  // built without exceptions: a refusal ends the process
+#endif
     }
     size_ = 1 + static_cast<int32_t>(helpers_.size());
   }

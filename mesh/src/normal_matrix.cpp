@@ -35,9 +35,16 @@ constexpr int32_t kColumnsWorthASecondThread = 20000;
 // work(0, split) here and work(split, n) on a second thread (none when
 // split == n, or when the system refuses one: an address-space cap maps
 // each stack; then both here). What the other thread raises (its
-// allocations failing) is rethrown here after the join.
+// allocations failing) is rethrown here after the join. Built without
+// exceptions (the web decoder, which asks for one thread), a plain thread.
 template <typename F>
 void on_two_threads(int32_t split, int32_t n, const F& work) {
+#if !defined(__cpp_exceptions)
+  std::thread other;
+  if (split < n) other = std::thread([&work, split, n] { work(split, n); });
+  work(0, split);
+  if (other.joinable()) other.join();
+#else
   std::exception_ptr error;
   std::thread other;
   if (split < n) {
@@ -61,6 +68,7 @@ void on_two_threads(int32_t split, int32_t n, const F& work) {
   }
   if (other.joinable()) other.join();
   if (error) std::rethrow_exception(error);
+#endif
 }
 
 }  // namespace
