@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <condition_variable>
+#include <cstddef>
 #include <functional>
 #include <mutex>
 #include <string>
@@ -208,7 +209,8 @@ void IterativeReconstruction::nearest_anchor_start() {
   }
   shape_.assign(3 * static_cast<size_t>(n_), 0.0);
   for (int32_t v = 0; v < n_; ++v) {
-    for (int c = 0; c < 3; ++c) shape_[3 * static_cast<size_t>(v) + c] = coefficients_[3 * static_cast<size_t>(source[v]) + c];
+    const double* c = &coefficients_[3 * static_cast<size_t>(source[v])];
+    std::copy(c, c + 3, shape_.begin() + 3 * static_cast<std::ptrdiff_t>(v));
   }
 }
 

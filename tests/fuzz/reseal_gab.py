@@ -7,9 +7,10 @@ any stored CRC-32). Use it to replay what such a fuzzer found:
 
 --options-byte drops the leading byte the gab and capi fuzzers read as their
 options. The header's CRC is rewritten when the header parses as far as its
-CRC; then (past a geometry-only file's connectivity hash) every whole frame (u32 length, u32 CRC-32, payload) gets its CRC
-rewritten, up to the first frame the file ends inside. Bytes are otherwise
-unchanged: the structure the decoder sees is the fuzzer's.
+CRC; then (past a geometry-only file's connectivity hash) every whole frame
+(u32 length, u32 CRC-32, payload) gets its CRC rewritten, up to the first
+frame the file ends inside. Bytes are otherwise unchanged: the structure the
+decoder sees is the fuzzer's.
 """
 import struct
 import sys

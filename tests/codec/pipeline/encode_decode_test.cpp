@@ -328,7 +328,8 @@ TEST(EncodeDecode, FlatAndPointLikeMeshes) {
       continue;
     }
     EXPECT_EQ(s.code(), StatusCode::kInvalidArgument);
-    EXPECT_EQ(s.message(), "mesh: a coordinate's magnitude is over 1e100 (the format's bound): scale the coordinates down");
+    EXPECT_EQ(s.message(),
+              "mesh: a coordinate's magnitude is over 1e100 (the format's bound): scale the coordinates down");
   }
 }
 
