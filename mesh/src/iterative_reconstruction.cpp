@@ -19,8 +19,8 @@ namespace {
 // The threads of one solve: run(job) calls job(begin, end, b) for every
 // block b of kBlock vertices (vertices [begin, end)), each member of the team
 // taking a fixed range of blocks, and returns when all are done. Helpers the
-// system refuses (an address-space cap maps each stack) leave their blocks
-// to the calling thread: the same calls, the same results.
+// system refuses (an address-space cap maps each stack) leave a smaller
+// team: the blocks split among fewer members, the same results.
 class StepTeam {
  public:
   using Job = std::function<void(int32_t, int32_t, int32_t)>;
