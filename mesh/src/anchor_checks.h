@@ -24,6 +24,37 @@ inline Status check_anchor_coefficients(size_t anchors, const std::vector<double
   return Status::Ok();
 }
 
+// New anchors with their coefficients (check_anchor_coefficients) for a
+// reconstruction whose per-vertex `state` is `free` for a vertex that is not
+// an anchor: each anchor a vertex, not an anchor yet, not given twice; the
+// first problem in the given order is named. New anchors are marked `mark`
+// while checking, then set back to `free`. O(anchors).
+template <class T>
+Status check_new_anchors(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients,
+                         std::vector<T>* state, T free, T mark) {
+  GAB_RETURN_IF_ERROR(check_anchor_coefficients(anchors.size(), coefficients));
+  const int32_t n = static_cast<int32_t>(state->size());
+  Status status;
+  size_t marked = 0;
+  for (; marked < anchors.size(); ++marked) {
+    const int32_t a = anchors[marked];
+    if (a < 0 || a >= n) {
+      status = Status::Error(StatusCode::kInvalidArgument,
+                             "anchor " + std::to_string(a) + " is not a vertex (n = " + std::to_string(n) + ")");
+      break;
+    }
+    if ((*state)[a] != free) {
+      status = Status::Error(StatusCode::kInvalidArgument, (*state)[a] == mark
+                                                               ? "anchor " + std::to_string(a) + " given twice"
+                                                               : "vertex " + std::to_string(a) + " is already an anchor");
+      break;
+    }
+    (*state)[a] = mark;
+  }
+  for (size_t i = 0; i < marked; ++i) (*state)[anchors[i]] = free;
+  return status;
+}
+
 // Every connected component holds one of `anchors` (valid vertices), or the
 // relaxed system is singular there: the error names a vertex of the first
 // component without one. O(V + E).

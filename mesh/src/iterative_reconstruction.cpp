@@ -111,24 +111,8 @@ class StepTeam {
 }  // namespace
 
 Status IterativeReconstruction::check_new(const std::vector<int32_t>& anchors,
-                                          const std::vector<double>& coefficients) const {
-  GAB_RETURN_IF_ERROR(check_anchor_coefficients(anchors.size(), coefficients));
-  std::vector<int32_t> sorted = anchors;
-  std::sort(sorted.begin(), sorted.end());
-  for (size_t i = 0; i < sorted.size(); ++i) {
-    const int32_t a = sorted[i];
-    if (a < 0 || a >= n_) {
-      return Status::Error(StatusCode::kInvalidArgument,
-                           "anchor " + std::to_string(a) + " is not a vertex (n = " + std::to_string(n_) + ")");
-    }
-    if (anchor_of_[a] >= 0) {
-      return Status::Error(StatusCode::kInvalidArgument, "vertex " + std::to_string(a) + " is already an anchor");
-    }
-    if (i > 0 && sorted[i - 1] == a) {
-      return Status::Error(StatusCode::kInvalidArgument, "anchor " + std::to_string(a) + " given twice");
-    }
-  }
-  return Status::Ok();
+                                          const std::vector<double>& coefficients) {
+  return check_new_anchors<int32_t>(anchors, coefficients, &anchor_of_, -1, -2);
 }
 
 void IterativeReconstruction::record(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients) {

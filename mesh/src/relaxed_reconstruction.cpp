@@ -11,27 +11,7 @@ namespace gab {
 
 Status RelaxedReconstruction::check_new(const std::vector<int32_t>& anchors,
                                         const std::vector<double>& coefficients) {
-  GAB_RETURN_IF_ERROR(check_anchor_coefficients(anchors.size(), coefficients));
-  // Mark the new anchors 2 while checking (1 = anchored before), then unmark.
-  Status status;
-  size_t marked = 0;
-  for (; marked < anchors.size(); ++marked) {
-    const int32_t a = anchors[marked];
-    if (a < 0 || a >= n_) {
-      status = Status::Error(StatusCode::kInvalidArgument,
-                             "anchor " + std::to_string(a) + " is not a vertex (n = " + std::to_string(n_) + ")");
-      break;
-    }
-    if (anchored_[a] != 0) {
-      status = Status::Error(StatusCode::kInvalidArgument,
-                             anchored_[a] == 1 ? "vertex " + std::to_string(a) + " is already an anchor"
-                                               : "anchor " + std::to_string(a) + " given twice");
-      break;
-    }
-    anchored_[a] = 2;
-  }
-  for (size_t i = 0; i < marked; ++i) anchored_[anchors[i]] = 0;
-  return status;
+  return check_new_anchors<char>(anchors, coefficients, &anchored_, 0, 2);
 }
 
 void RelaxedReconstruction::add_to_matrix(const std::vector<int32_t>& anchors) {

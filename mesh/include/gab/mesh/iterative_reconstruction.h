@@ -75,7 +75,7 @@ class IterativeReconstruction {
   bool has_shape() const { return !shape_.empty(); }
 
  private:
-  Status check_new(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients) const;
+  Status check_new(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
   void record(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
   void nearest_anchor_start();
 
