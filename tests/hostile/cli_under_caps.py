@@ -18,12 +18,13 @@ one line per violation and a summary; exits 1 when any.
 """
 import argparse
 import os
-import resource
 import subprocess
 import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from capped import address_space_cap, one_error_line_last  # noqa: E402
 MESH_EXTENSIONS = (".off", ".ply", ".obj")
 
 
@@ -75,23 +76,18 @@ def listed(folders, extensions):
 
 
 def run(argv, cap_mb, seconds):
-    def cap():
-        if cap_mb:
-            limit = cap_mb << 20
-            resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
-
     try:
-        proc = subprocess.run(argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, preexec_fn=cap,
-                              timeout=seconds)
+        proc = subprocess.run(argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                              preexec_fn=address_space_cap(cap_mb), timeout=seconds)
     except subprocess.TimeoutExpired:
         return "no answer within %d s" % seconds
-    lines = [line for line in proc.stderr.decode("utf-8", "replace").splitlines() if line]
+    stderr = proc.stderr.decode("utf-8", "replace")
+    lines = [line for line in stderr.splitlines() if line]
     if proc.returncode == 0:
         return None
     if proc.returncode != 1:
         return "exit %d: %s" % (proc.returncode, lines[-1] if lines else "(nothing on stderr)")
-    errors = [line for line in lines if line.startswith("gab: error: ")]
-    if len(errors) != 1 or lines[-1] != errors[0]:
+    if not one_error_line_last(stderr):
         return "exit 1 without one error line last: %r" % lines[-3:]
     return None
 

@@ -17,13 +17,13 @@ machine makes a timed check flaky; ctest runs this without it).
 """
 import argparse
 import os
-import resource
 import subprocess
 import sys
 import tempfile
 import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "fuzz"))
+from capped import address_space_cap, one_error_line_last  # noqa: E402
 from reseal_gab import reseal  # noqa: E402
 
 
@@ -37,13 +37,9 @@ def inputs(paths, max_bytes):
 
 def run_capped(argv, memory_mb):
     """(exit status, stderr, wall seconds, peak RSS in MB) of argv under RLIMIT_AS."""
-    limit = memory_mb << 20
-
-    def cap():
-        resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
-
     start = time.monotonic()
-    proc = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, preexec_fn=cap)
+    proc = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                            preexec_fn=address_space_cap(memory_mb))
     stderr = proc.stderr.read().decode("utf-8", "replace")
     proc.stderr.close()
     _, status, usage = os.wait4(proc.pid, 0)
@@ -53,9 +49,8 @@ def run_capped(argv, memory_mb):
 
 
 def one_line_failure(stderr):
-    lines = [line for line in stderr.splitlines() if line]
-    errors = [line for line in lines if line.startswith("gab: error: ")]
-    return len(errors) == 1 and lines[-1] == errors[0] and "out of memory" not in errors[0]
+    """A failure within the bound: one error line, and not the CLI's "out of memory"."""
+    return one_error_line_last(stderr) and "out of memory" not in stderr
 
 
 def main():
