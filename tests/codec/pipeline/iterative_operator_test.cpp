@@ -69,6 +69,30 @@ TEST(IterativeOperator, APrefixDecodesToTheShapeOfItsAnchors) {
   EXPECT_EQ(truncated.positions, coarse.positions);
 }
 
+// The decode's memory model for this operator (no matrix, no factor: 160
+// bytes per vertex of vectors beside the mesh) is checked before the work.
+TEST(IterativeOperator, TheMemoryLimitCountsItsVectors) {
+  const Mesh mesh = bumpy_torus(40, 24);  // 960 vertices, 1,920 triangles
+  EncodeOptions options;
+  options.target_rms_rel = 3e-3;
+  options.reconstruction = kGabReconstructionIterative;
+  EncodeStats es;
+  const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
+  // The mesh alone: 150 * 960 + 12 * 1,920 = 167,040 bytes; with the
+  // vectors 320,640.
+  DecodeOptions tight;
+  tight.max_memory = 200000;
+  Mesh out;
+  DecodeStats ds;
+  const Status refused = decode_mesh(file.data(), file.size(), tight, &out, &ds);
+  EXPECT_EQ(refused.code(), StatusCode::kResourceExhausted);
+  EXPECT_EQ(refused.message(),
+            "decoding needs about 1 MiB (960 vertices, 1920 triangles), over its memory limit of 1 MiB: raise it "
+            "(DecodeOptions::max_memory, gab decompress --max-memory)");
+  tight.max_memory = 330000;
+  EXPECT_TRUE(decode_mesh(file.data(), file.size(), tight, &out, &ds).ok());
+}
+
 TEST(IterativeOperator, OptionErrors) {
   const Mesh mesh = bumpy_torus(12, 8);
   EncodeOptions options;
