@@ -180,6 +180,9 @@ Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const AnchorRule
   const double target_linf = rules.target_linf_rel;
   RefinementSearch refinement(mesh, rules.refine, options.refine_iterations, target_rms, target_linf, grid.quantizer,
                               scale);
+  auto meets_a_target = [&](const VertexDistance& d) {
+    return (target_rms > 0 && d.rms * scale <= target_rms) || (target_linf > 0 && d.linf * scale <= target_linf);
+  };
   std::vector<double> shape, error2(n);
   while (true) {
     GAB_RETURN_IF_ERROR(rec->greedy_shape(&shape));
@@ -188,9 +191,7 @@ Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const AnchorRule
     if (!rec->global()) {
       // The greedy shape is not the decoder's: where the loop may stop (the
       // file's error), the decoder's shape instead.
-      const bool may_stop = (target_rms > 0 && distance.rms * scale <= target_rms) ||
-                            (target_linf > 0 && distance.linf * scale <= target_linf) || rec->num_anchors() >= cap;
-      if (may_stop) {
+      if (meets_a_target(distance) || rec->num_anchors() >= cap) {
         GAB_RETURN_IF_ERROR(rec->shape(&shape));
         squared_vertex_errors(mesh, shape, &error2, &distance);
       }
@@ -208,9 +209,7 @@ Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const AnchorRule
         GAB_RETURN_IF_ERROR(rec->shape(&schedule.shapes.back(), true));
       }
     }
-    const bool rms_met = target_rms > 0 && out->rms_rel <= target_rms;
-    const bool linf_met = target_linf > 0 && out->linf_rel <= target_linf;
-    if (rms_met || linf_met) break;
+    if (meets_a_target(distance)) break;
     if (rec->num_anchors() >= cap) {
       GAB_RETURN_IF_ERROR(refinement.at_cap(rec->relaxed(), out->rms_rel, out->linf_rel));
       break;
