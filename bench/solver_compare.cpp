@@ -106,12 +106,12 @@ int main(int argc, char** argv) {
       std::sort(seconds.begin(), seconds.end());
       // The decoded mesh is numbered in the coder's order: compare in it.
       const gab::Mesh original = gab::renumber_vertices(mesh, es.new_index);
-      double sum = 0;
-      for (size_t i = 0; i < decoded.positions.size(); ++i) {
-        const double d = decoded.positions[i] - original.positions[i];
-        sum += d * d;
+      gab::VertexDistance distance;
+      if (!gab::vertex_distance(original, decoded, &distance).ok()) {
+        std::fprintf(stderr, "%s: the decoded mesh does not match\n", name.c_str());
+        return 1;
       }
-      const double rms = std::sqrt(sum / mesh.num_vertices()) / diagonal;
+      const double rms = distance.rms / diagonal;
       std::printf("%-12s %-9s %9zu %10.3e %8.2f %8.3f %8.3f %8.3f %8.3f\n", name.c_str(), op_name, file.size(), rms,
                   encode_s,
                   seconds[seconds.size() / 2], ds.connectivity_s, ds.factor_s, ds.solve_s);
