@@ -11,7 +11,6 @@
 //   --out writes each file as DIR/MESH-OPERATOR.gab, for `gab decompress` to measure its memory)
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
