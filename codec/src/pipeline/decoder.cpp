@@ -292,9 +292,9 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
   const int64_t budget = memory_budget(options, size);
   stats->memory_limit = budget == INT64_MAX ? 0 : budget;
   int64_t held = kBytesPerVertex * n + kBytesPerTriangle * header.num_triangles;
-  GAB_RETURN_IF_ERROR(check_memory(held, budget,
-                                   std::to_string(n) + " vertices, " + std::to_string(header.num_triangles) +
-                                       " triangles"));
+  const std::string mesh_size =
+      std::to_string(n) + " vertices, " + std::to_string(header.num_triangles) + " triangles";
+  GAB_RETURN_IF_ERROR(check_memory(held, budget, mesh_size));
 
   Mesh out;
   ConnectivitySection connectivity;
@@ -307,9 +307,7 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
   const bool factored = header.reconstruction == kGabReconstructionGlobal;
   if (!factored) {
     held += kBytesPerIterativeVertex * n;
-    GAB_RETURN_IF_ERROR(check_memory(held, budget,
-                                     std::to_string(n) + " vertices, " + std::to_string(header.num_triangles) +
-                                         " triangles"));
+    GAB_RETURN_IF_ERROR(check_memory(held, budget, mesh_size));
   }
   stats->matrix_entries = factored ? matrix_entries_bound(graph) : 0;
   if (stats->matrix_entries > options.max_matrix_entries) {
