@@ -16,6 +16,18 @@ namespace gab {
 
 namespace {
 
+// Four lanes, three used: a vertex's x, y, z (GCC and Clang vector
+// extensions; each lane rounds exactly as scalar code would). They stay
+// inside this file, so the note that their ABI depends on -mavx does not
+// apply.
+#if defined(__clang__)
+#pragma clang diagnostic ignored "-Wpsabi"
+#elif defined(__GNUC__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+typedef float v4f __attribute__((vector_size(16)));
+typedef double v4d __attribute__((vector_size(32)));
+
 // The threads of one solve: run(job) calls job(begin, end, b) for every
 // block b of kBlock vertices (vertices [begin, end)), each member of the team
 // taking a fixed range of blocks, and returns when all are done. Helpers the
@@ -202,114 +214,123 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
   if (graph_ == nullptr) return Status::Error(StatusCode::kInvalidArgument, "solve before init");
   if (steps < 0) return Status::Error(StatusCode::kInvalidArgument, "negative step count");
   if (shape_.empty()) nearest_anchor_start();
-  const size_t m = 3 * static_cast<size_t>(n_);
+  const size_t n = static_cast<size_t>(n_);
   const double w2 = weight_ * weight_;
+  const float w2f = static_cast<float>(w2);
   const int32_t blocks = (n_ + kBlock - 1) / kBlock;
-  // 1 / diag(L^T L + w^2 S): (L^T L)_vv = d^2 + d for L = D - A.
-  std::vector<double> inv_diag(n_);
-  for (int32_t v = 0; v < n_; ++v) {
-    const double d = graph_->degree(v);
-    inv_diag[v] = 1.0 / (d * d + d + (anchor_of_[v] >= 0 ? w2 : 0.0));
-  }
-  std::vector<double> r(m), p(m), q(m), t(m), partial(3 * static_cast<size_t>(blocks));
   double* x = shape_.data();
   const int32_t* offsets = graph_->offsets.data();
   const int32_t* neighbors = graph_->neighbors.data();
-  // out_v = (L in)_v for v in [begin, end).
-  auto laplacian_rows = [&](const double* in, double* out, int32_t begin, int32_t end) {
-    for (int32_t v = begin; v < end; ++v) {
-      const double d = offsets[v + 1] - offsets[v];
-      double s0 = d * in[3 * v], s1 = d * in[3 * v + 1], s2 = d * in[3 * v + 2];
-      for (int32_t e = offsets[v]; e < offsets[v + 1]; ++e) {
-        const double* u = in + 3 * static_cast<size_t>(neighbors[e]);
-        s0 -= u[0];
-        s1 -= u[1];
-        s2 -= u[2];
-      }
-      out[3 * v] = s0;
-      out[3 * v + 1] = s1;
-      out[3 * v + 2] = s2;
-    }
-  };
+  const int32_t* anchor_of = anchor_of_.data();
   // Every pass below runs over whole blocks, in parallel; a block's sums go
-  // to partial[3 b ..], added in block order afterwards (the order the
-  // header promises for any thread count).
+  // to partial[b], added in block order afterwards (the order the header
+  // promises for any thread count).
   StepTeam team(threads_, n_);
-  auto total = [&](double out[3]) {
-    out[0] = out[1] = out[2] = 0.0;
-    for (int32_t b = 0; b < blocks; ++b) {
-      for (int c = 0; c < 3; ++c) out[c] += partial[3 * static_cast<size_t>(b) + c];
-    }
+  std::vector<v4d> partial(blocks);
+  auto total = [&]() {
+    v4d s = {0.0, 0.0, 0.0, 0.0};
+    for (int32_t b = 0; b < blocks; ++b) s += partial[b];
+    return s;
   };
-  // q = L (L y) + w^2 S y (t = L y first), and per block the sums of y q
-  // when `dot`.
-  auto product = [&](const double* y, bool dot) {
-    team.run([&](int32_t begin, int32_t end, int32_t) { laplacian_rows(y, t.data(), begin, end); });
-    team.run([&](int32_t begin, int32_t end, int32_t b) {
-      laplacian_rows(t.data(), q.data(), begin, end);
-      double s[3] = {0.0, 0.0, 0.0};
+  // The recurrences' vectors in single precision, a vertex's three columns
+  // and a zero lane in 16 bytes (one load per neighbour in the products):
+  // the steps are bound by moving these, and floats move half the bytes.
+  // The shape, the first residual and every sum stay double: the steps'
+  // rounding bends only the correction they add, not the shape it is added to.
+  std::vector<v4f> r(n), p(n), q(n), t(n);
+  std::vector<float> inv_diag(n);  // 1 / diag(L^T L + w^2 S); (L^T L)_vv = d^2 + d
+  {
+    // r = w^2 S c - (L^T L + w^2 S) x, in double (L x first), then rounded.
+    std::vector<v4d> lx(n);
+    auto x_of = [x](int32_t v) { return v4d{x[3 * v], x[3 * v + 1], x[3 * v + 2], 0.0}; };
+    team.run([&](int32_t begin, int32_t end, int32_t) {
       for (int32_t v = begin; v < end; ++v) {
-        for (int c = 0; c < 3; ++c) {
-          const size_t k = 3 * static_cast<size_t>(v) + c;
-          if (anchor_of_[v] >= 0) q[k] += w2 * y[k];
-          s[c] += y[k] * q[k];
-        }
-      }
-      if (dot) {
-        for (int c = 0; c < 3; ++c) partial[3 * static_cast<size_t>(b) + c] = s[c];
+        v4d s = static_cast<double>(offsets[v + 1] - offsets[v]) * x_of(v);
+        for (int32_t e = offsets[v]; e < offsets[v + 1]; ++e) s -= x_of(neighbors[e]);
+        lx[v] = s;
       }
     });
-  };
-  // r = w^2 S c - (L^T L + w^2 S) x; p = M^-1 r; rz = r . p.
-  product(x, false);
-  team.run([&](int32_t begin, int32_t end, int32_t b) {
-    double s[3] = {0.0, 0.0, 0.0};
-    for (int32_t v = begin; v < end; ++v) {
-      const int32_t a = anchor_of_[v];
-      for (int c = 0; c < 3; ++c) {
-        const size_t k = 3 * static_cast<size_t>(v) + c;
-        r[k] = -q[k];
-        if (a >= 0) r[k] += w2 * coefficients_[3 * static_cast<size_t>(a) + c];
-        p[k] = inv_diag[v] * r[k];
-        s[c] += r[k] * p[k];
+    team.run([&](int32_t begin, int32_t end, int32_t b) {
+      v4d sum = {0.0, 0.0, 0.0, 0.0};
+      for (int32_t v = begin; v < end; ++v) {
+        const double d = offsets[v + 1] - offsets[v];
+        v4d s = d * lx[v];
+        for (int32_t e = offsets[v]; e < offsets[v + 1]; ++e) s -= lx[neighbors[e]];
+        v4d rv = -s;
+        const int32_t a = anchor_of[v];
+        if (a >= 0) {
+          const double* c = &coefficients_[3 * static_cast<size_t>(a)];
+          rv += w2 * (v4d{c[0], c[1], c[2], 0.0} - x_of(v));
+        }
+        inv_diag[v] = static_cast<float>(1.0 / (d * d + d + (a >= 0 ? w2 : 0.0)));
+        r[v] = __builtin_convertvector(rv, v4f);
+        p[v] = inv_diag[v] * r[v];
+        sum += __builtin_convertvector(r[v], v4d) * __builtin_convertvector(p[v], v4d);
       }
+      partial[b] = sum;
+    });
+  }
+  v4d rz = total();
+  // (L in)_v: the neighbours summed in two chains (even and odd places),
+  // which halves the wait on the additions.
+  auto laplacian_row = [offsets, neighbors](const v4f* in, int32_t v) {
+    const int32_t first = offsets[v], last = offsets[v + 1];
+    v4f even = {0.0f, 0.0f, 0.0f, 0.0f}, odd = even;
+    int32_t e = first;
+    for (; e + 1 < last; e += 2) {
+      even += in[neighbors[e]];
+      odd += in[neighbors[e + 1]];
     }
-    for (int c = 0; c < 3; ++c) partial[3 * static_cast<size_t>(b) + c] = s[c];
-  });
-  double rz[3];
-  total(rz);
+    if (e < last) even += in[neighbors[e]];
+    return static_cast<float>(last - first) * in[v] - (even + odd);
+  };
+  // Adds a * b (their three used lanes, in double) to sum[0..2].
+  auto add_product = [](const v4f a, const v4f b, double sum[3]) {
+    for (int c = 0; c < 3; ++c) sum[c] += static_cast<double>(a[c]) * static_cast<double>(b[c]);
+  };
   for (int32_t step = 0; step < steps; ++step) {
-    product(p.data(), true);
-    double pq[3];
-    total(pq);
+    // q = L (L p) + w^2 S p (t = L p first); per block the sums of p q.
+    team.run([&](int32_t begin, int32_t end, int32_t) {
+      for (int32_t v = begin; v < end; ++v) t[v] = laplacian_row(p.data(), v);
+    });
+    team.run([&](int32_t begin, int32_t end, int32_t b) {
+      double s[3] = {0.0, 0.0, 0.0};
+      for (int32_t v = begin; v < end; ++v) {
+        v4f qv = laplacian_row(t.data(), v);
+        if (anchor_of[v] >= 0) qv += w2f * p[v];
+        q[v] = qv;
+        add_product(p[v], qv, s);
+      }
+      partial[b] = v4d{s[0], s[1], s[2], 0.0};
+    });
+    const v4d pq = total();
     // A column already solved exactly (rz or pq zero) stays as it is.
     double alpha[3];
     for (int c = 0; c < 3; ++c) alpha[c] = (pq[c] > 0.0 && rz[c] > 0.0) ? rz[c] / pq[c] : 0.0;
+    // x += alpha p; r -= alpha q; z = M^-1 r (into t, free now); per block the sums of r z.
     team.run([&](int32_t begin, int32_t end, int32_t b) {
       double s[3] = {0.0, 0.0, 0.0};
       for (int32_t v = begin; v < end; ++v) {
+        const v4f pv = p[v], qv = q[v];
+        v4f rv = r[v];
         for (int c = 0; c < 3; ++c) {
-          const size_t k = 3 * static_cast<size_t>(v) + c;
-          x[k] += alpha[c] * p[k];
-          r[k] -= alpha[c] * q[k];
-          s[c] += inv_diag[v] * r[k] * r[k];
+          x[3 * v + c] += alpha[c] * static_cast<double>(pv[c]);
+          rv[c] = static_cast<float>(static_cast<double>(rv[c]) - alpha[c] * static_cast<double>(qv[c]));
         }
+        r[v] = rv;
+        const v4f zv = inv_diag[v] * rv;
+        t[v] = zv;
+        add_product(rv, zv, s);
       }
-      for (int c = 0; c < 3; ++c) partial[3 * static_cast<size_t>(b) + c] = s[c];
+      partial[b] = v4d{s[0], s[1], s[2], 0.0};
     });
-    double rz_next[3], beta[3];
-    total(rz_next);
-    for (int c = 0; c < 3; ++c) {
-      beta[c] = rz[c] > 0.0 ? rz_next[c] / rz[c] : 0.0;
-      rz[c] = rz_next[c];
-    }
+    const v4d rz_next = total();
+    v4f beta = {0.0f, 0.0f, 0.0f, 0.0f};
+    for (int c = 0; c < 3; ++c) beta[c] = rz[c] > 0.0 ? static_cast<float>(rz_next[c] / rz[c]) : 0.0f;
+    rz = rz_next;
+    // p = z + beta p.
     team.run([&](int32_t begin, int32_t end, int32_t) {
-      for (int32_t v = begin; v < end; ++v) {
-        for (int c = 0; c < 3; ++c) {
-          const size_t k = 3 * static_cast<size_t>(v) + c;
-          p[k] = inv_diag[v] * r[k] + beta[c] * p[k];
-        }
-      }
+      for (int32_t v = begin; v < end; ++v) p[v] = t[v] + beta * p[v];
     });
   }
   *positions = shape_;

@@ -50,7 +50,7 @@ TEST(IterativeReconstructionTest, StepsApproachTheGlobalLeastSquares) {
   const std::vector<double> c = coefficients(m, anchors);
   const std::vector<double> global = global_shape(g, 100, anchors, c);
   double previous = INFINITY;
-  for (int32_t steps : {0, 10, 40, 160}) {
+  for (int32_t steps : {0, 4, 12, 160}) {
     IterativeReconstruction rec;
     ASSERT_TRUE(rec.init(g, 100, anchors, c).ok());
     std::vector<double> x;
@@ -59,7 +59,9 @@ TEST(IterativeReconstructionTest, StepsApproachTheGlobalLeastSquares) {
     EXPECT_LT(distance, previous) << steps;
     previous = distance;
   }
-  EXPECT_LT(previous, 1e-10);
+  // The steps' vectors are single precision: the shape settles within
+  // about 1e-7 of the correction they add (here ~1 unit).
+  EXPECT_LT(previous, 1e-6);
 }
 
 // Hops from `source` to every vertex (one breadth-first search).
@@ -114,7 +116,7 @@ TEST(IterativeReconstructionTest, AddedAnchorsContinueFromTheShapeSoFar) {
   ASSERT_TRUE(rec.solve(800, &x).ok());
   std::vector<int32_t> all = first;
   all.insert(all.end(), more.begin(), more.end());
-  EXPECT_LT(max_difference(x, global_shape(g, 100, all, coefficients(m, all))), 1e-10);
+  EXPECT_LT(max_difference(x, global_shape(g, 100, all, coefficients(m, all))), 1e-6);
   EXPECT_EQ(rec.num_anchors(), static_cast<int32_t>(all.size()));
 }
 
@@ -194,7 +196,8 @@ TEST(IterativeReconstructionTest, AnyThreadCountGivesTheSameBits) {
 
 TEST(IterativeReconstructionTest, TranslatedCoefficientsTranslateTheShape) {
   // L annihilates constants, so moving every coefficient by t moves the
-  // least-squares shape by t; after enough steps the iterate agrees.
+  // least-squares shape by t; after enough steps the iterate agrees, to the
+  // single-precision steps' rounding of the 2.5 they add.
   const Mesh m = testing_util::bumpy_torus(16, 10);
   const EdgeGraph g = build_edge_graph(m);
   const std::vector<int32_t> anchors = every(m.num_vertices(), 6);
@@ -206,7 +209,7 @@ TEST(IterativeReconstructionTest, TranslatedCoefficientsTranslateTheShape) {
   for (size_t i = 0; i < c.size(); ++i) c[i] += (i % 3 == 1) ? 2.5 : 0.0;
   ASSERT_TRUE(rec.set_coefficients(0, c).ok());
   ASSERT_TRUE(rec.solve(600, &after).ok());
-  for (size_t i = 0; i < before.size(); ++i) EXPECT_NEAR(after[i], before[i] + (i % 3 == 1 ? 2.5 : 0.0), 1e-9);
+  for (size_t i = 0; i < before.size(); ++i) EXPECT_NEAR(after[i], before[i] + (i % 3 == 1 ? 2.5 : 0.0), 2.5e-6);
 }
 
 TEST(IterativeReconstructionTest, BadArgumentsNameTheProblem) {
