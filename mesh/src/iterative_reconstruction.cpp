@@ -284,45 +284,49 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
     if (e < last) even += in[neighbors[e]];
     return static_cast<float>(last - first) * in[v] - (even + odd);
   };
-  // Adds a * b (their three used lanes, in double) to sum[0..2].
-  auto add_product = [](const v4f a, const v4f b, double sum[3]) {
-    for (int c = 0; c < 3; ++c) sum[c] += static_cast<double>(a[c]) * static_cast<double>(b[c]);
+  // A block's sum of a per-vertex v4f term: runs of kRun vertices summed in
+  // single precision, the runs' sums in double (cheap, and the sums' rounding
+  // stays far below what the steps need).
+  constexpr int32_t kRun = 64;
+  auto block_sum = [](int32_t begin, int32_t end, const auto& term_of, v4d* sum) {
+    *sum = v4d{0.0, 0.0, 0.0, 0.0};
+    for (int32_t run = begin; run < end; run += kRun) {
+      v4f s = {0.0f, 0.0f, 0.0f, 0.0f};
+      for (int32_t v = run; v < std::min(end, run + kRun); ++v) s += term_of(v);
+      *sum += __builtin_convertvector(s, v4d);
+    }
   };
+  // The correction the steps add to the shape, single precision like them;
+  // x + correction at the end, in double.
+  std::vector<v4f> correction(n, v4f{0.0f, 0.0f, 0.0f, 0.0f});
   for (int32_t step = 0; step < steps; ++step) {
     // q = L (L p) + w^2 S p (t = L p first); per block the sums of p q.
     team.run([&](int32_t begin, int32_t end, int32_t) {
       for (int32_t v = begin; v < end; ++v) t[v] = laplacian_row(p.data(), v);
     });
     team.run([&](int32_t begin, int32_t end, int32_t b) {
-      double s[3] = {0.0, 0.0, 0.0};
-      for (int32_t v = begin; v < end; ++v) {
+      block_sum(begin, end, [&](int32_t v) {
         v4f qv = laplacian_row(t.data(), v);
         if (anchor_of[v] >= 0) qv += w2f * p[v];
         q[v] = qv;
-        add_product(p[v], qv, s);
-      }
-      partial[b] = v4d{s[0], s[1], s[2], 0.0};
+        return p[v] * qv;
+      }, &partial[b]);
     });
     const v4d pq = total();
     // A column already solved exactly (rz or pq zero) stays as it is.
-    double alpha[3];
-    for (int c = 0; c < 3; ++c) alpha[c] = (pq[c] > 0.0 && rz[c] > 0.0) ? rz[c] / pq[c] : 0.0;
-    // x += alpha p; r -= alpha q; z = M^-1 r (into t, free now); per block the sums of r z.
+    v4f alpha = {0.0f, 0.0f, 0.0f, 0.0f};
+    for (int c = 0; c < 3; ++c) alpha[c] = (pq[c] > 0.0 && rz[c] > 0.0) ? static_cast<float>(rz[c] / pq[c]) : 0.0f;
+    // correction += alpha p; r -= alpha q; z = M^-1 r (into t, free now);
+    // per block the sums of r z.
     team.run([&](int32_t begin, int32_t end, int32_t b) {
-      double s[3] = {0.0, 0.0, 0.0};
-      for (int32_t v = begin; v < end; ++v) {
-        const v4f pv = p[v], qv = q[v];
-        v4f rv = r[v];
-        for (int c = 0; c < 3; ++c) {
-          x[3 * v + c] += alpha[c] * static_cast<double>(pv[c]);
-          rv[c] = static_cast<float>(static_cast<double>(rv[c]) - alpha[c] * static_cast<double>(qv[c]));
-        }
+      block_sum(begin, end, [&](int32_t v) {
+        correction[v] += alpha * p[v];
+        const v4f rv = r[v] - alpha * q[v];
         r[v] = rv;
         const v4f zv = inv_diag[v] * rv;
         t[v] = zv;
-        add_product(rv, zv, s);
-      }
-      partial[b] = v4d{s[0], s[1], s[2], 0.0};
+        return rv * zv;
+      }, &partial[b]);
     });
     const v4d rz_next = total();
     v4f beta = {0.0f, 0.0f, 0.0f, 0.0f};
@@ -332,6 +336,9 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
     team.run([&](int32_t begin, int32_t end, int32_t) {
       for (int32_t v = begin; v < end; ++v) p[v] = t[v] + beta * p[v];
     });
+  }
+  for (int32_t v = 0; v < n_; ++v) {
+    for (int c = 0; c < 3; ++c) x[3 * v + c] += static_cast<double>(correction[v][c]);
   }
   *positions = shape_;
   return Status::Ok();
