@@ -7,11 +7,12 @@
 //   global   the engine's factorization (ordering, analysis, factor, solve)
 //   cg-I     I steps of IterativeReconstruction (Jacobi-preconditioned
 //            conjugate gradients, matrix-free, from each vertex's nearest
-//            anchor; cg-0 is that start): a fixed amount of work whose
-//            result both sides of a codec compute alike.
-//   hS+cg-I  the same from a smoother start: S Jacobi sweeps of the
-//            harmonic interpolation (free vertices to their neighbours'
-//            mean) after the nearest-anchor start.
+//            anchor after kStartSweeps harmonic sweeps; cg-0 is that
+//            start): a fixed amount of work whose result both sides of a
+//            codec compute alike.
+//   hS+cg-I  the same from another start: S Jacobi sweeps of the harmonic
+//            interpolation (free vertices to their neighbours' mean) after
+//            the nearest-anchor start, instead of the built-in sweeps.
 // Prints per candidate the vertex RMS against the original over the box
 // diagonal, its ratio to the global's, the RMS distance to the global shape,
 // and seconds (one thread).

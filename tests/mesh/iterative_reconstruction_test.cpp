@@ -80,7 +80,7 @@ std::vector<int32_t> hops_from(const EdgeGraph& g, int32_t source) {
   return hops;
 }
 
-TEST(IterativeReconstructionTest, ZeroStepsPutEachVertexAtItsNearestAnchor) {
+TEST(IterativeReconstructionTest, TheStartPutsEachVertexAtItsNearestAnchor) {
   const Mesh m = testing_util::grid(9, 4);
   const EdgeGraph g = build_edge_graph(m);
   // Anchors given as 35 then 0: a vertex as near to both takes 0's (the
@@ -89,8 +89,7 @@ TEST(IterativeReconstructionTest, ZeroStepsPutEachVertexAtItsNearestAnchor) {
   const std::vector<double> c = {5, 6, 7, 1, 2, 3};
   IterativeReconstruction rec;
   ASSERT_TRUE(rec.init(g, 100, anchors, c).ok());
-  std::vector<double> x;
-  ASSERT_TRUE(rec.solve(0, &x).ok());
+  const std::vector<double> x = rec.nearest_anchor_shape();
   const std::vector<int32_t> to_35 = hops_from(g, 35), to_0 = hops_from(g, 0);
   int ties = 0;
   for (int32_t v = 0; v < m.num_vertices(); ++v) {
@@ -99,6 +98,36 @@ TEST(IterativeReconstructionTest, ZeroStepsPutEachVertexAtItsNearestAnchor) {
     for (int k = 0; k < 3; ++k) EXPECT_EQ(x[3 * v + k], first ? c[k] : c[3 + k]) << v;
   }
   EXPECT_GT(ties, 0);
+}
+
+TEST(IterativeReconstructionTest, ZeroStepsGiveTheStartAfterItsHarmonicSweeps) {
+  // A fresh solve starts from the nearest-anchor shape rounded off by
+  // kStartSweeps Jacobi sweeps: each free vertex to its neighbours' mean,
+  // the anchors at their coefficients, every vertex from the sweep before.
+  const Mesh m = testing_util::bumpy_torus(12, 8);
+  const EdgeGraph g = build_edge_graph(m);
+  const std::vector<int32_t> anchors = every(m.num_vertices(), 9);
+  const std::vector<double> c = coefficients(m, anchors);
+  IterativeReconstruction rec;
+  ASSERT_TRUE(rec.init(g, 100, anchors, c).ok());
+  std::vector<double> expected = rec.nearest_anchor_shape(), x;
+  ASSERT_TRUE(rec.solve(0, &x).ok());
+  for (int sweep = 0; sweep < IterativeReconstruction::kStartSweeps; ++sweep) {
+    std::vector<double> next = expected;
+    for (int32_t v = 0; v < g.num_vertices(); ++v) {
+      if (rec.is_anchor(v)) continue;
+      for (int k = 0; k < 3; ++k) {
+        double sum = 0;
+        for (int32_t p = g.offsets[v]; p < g.offsets[v + 1]; ++p) sum += expected[3 * g.neighbors[p] + k];
+        next[3 * v + k] = sum / g.degree(v);
+      }
+    }
+    expected.swap(next);
+  }
+  EXPECT_EQ(x, expected);
+  for (size_t i = 0; i < anchors.size(); ++i) {
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(x[3 * anchors[i] + k], c[3 * i + k]);
+  }
 }
 
 TEST(IterativeReconstructionTest, AddedAnchorsContinueFromTheShapeSoFar) {

@@ -22,20 +22,22 @@ namespace gab {
 class OrderingPlan;
 
 // Conjugate-gradient steps of the iterative operator's shape for k anchors
-// on n vertices. The anchors' spacing squared, in hops, is about n / k; at
-// 2 n / k steps the shape is the least squares' to 1e-3 of its error
-// (bench/reconstruction_candidates). A shape that is the decoder's result
-// takes ceil(2 n / k), at most 64; a shape that only predicts the next
-// chunk, ceil(1.5 n / k), at most 32: a rougher prediction costs that chunk
-// bits, the steps cost every decode (horse at 1e-3: at most 16 steps,
-// +7.3% bytes against the global operator and 0.21 s; 32, +3.7% and 0.30 s;
-// 64, +4.4% and 0.75 s, a busy machine, bench/solver_compare).
+// on n vertices. The anchors' spacing squared, in hops, is about n / k, and
+// the steps a shape needs grow with it. A shape that is the decoder's result
+// takes ceil(1.0 n / k), at most 32; a shape that only predicts the next
+// chunk, ceil(0.75 n / k), at most 16: a rougher prediction costs that chunk
+// bits, the steps cost every decode. Measured at 1e-3 --reorder, with the
+// start's harmonic sweeps (whole file against the global operator's, decode
+// seconds; docs/tuning-codec.md): twice these steps (2.0 and 1.5 per
+// spacing, at most 64 and 32) gave horse 1.024x, feline 1.028x, igea 0.983x
+// in about 1.7x the decode; these give 1.048x, 1.049x, 0.999x; half of them
+// 1.085x, 1.066x, 1.029x, and camel-head 1.375x (1.128x here).
 struct IterativeSteps {
   double per_spacing;
   int32_t most;
 };
-constexpr IterativeSteps kIterativeFinalSteps = {2.0, 64};
-constexpr IterativeSteps kIterativePredictionSteps = {1.5, 32};
+constexpr IterativeSteps kIterativeFinalSteps = {1.0, 32};
+constexpr IterativeSteps kIterativePredictionSteps = {0.75, 16};
 // The encoder's greedy shapes, each warm from the one before: fewer steps.
 constexpr IterativeSteps kIterativeGreedySteps = {0.5, 16};
 int32_t iterative_steps(int32_t n, int32_t k, const IterativeSteps& rule);

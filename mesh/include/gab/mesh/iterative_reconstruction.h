@@ -3,23 +3,27 @@
 // uniform Laplacian, S the anchors' indicator, c their coefficients, is
 // approached by a given number of Jacobi-preconditioned conjugate-gradient
 // steps, matrix-free (L applied twice per product), three independent
-// recurrences (x, y, z) sharing each pass over the mesh. No factor, no
-// ordering: memory is about 150 bytes per vertex beside the graph.
+// recurrences (x, y, z) sharing each pass over the mesh, their vectors in
+// single precision (the shape and the first residual in double). No factor,
+// no ordering: memory is about 130 bytes per vertex beside the graph.
 //
 // The result is a fixed computation, not "the solution to a tolerance": the
 // steps start from the previous shape (the first time, and after restart,
-// from each vertex at its nearest anchor's coefficients: breadth-first from
+// from each vertex at its nearest anchor's coefficients, breadth-first from
 // the anchors in increasing vertex order, a vertex taking the anchor of the
 // first frontier vertex that reaches it, so the order anchors were given in
-// does not matter), and every floating-point operation happens in one order. Sums over vertices add
-// fixed blocks of kBlock vertices in vertex order, then the blocks in block
-// order, whatever the thread count; so two programs making the same calls
-// get the same bits on any machine with IEEE doubles and no contraction,
-// which is what lets an encoder and a decoder share the shape.
+// does not matter; then kStartSweeps harmonic sweeps), and every
+// floating-point operation happens in one order. Sums over vertices add
+// runs of 64 vertices, then fixed blocks of kBlock vertices in vertex
+// order, then the blocks in block order, whatever the thread count; so two
+// programs making the same calls get the same bits on any machine with IEEE
+// arithmetic and no contraction, which is what lets an encoder and a
+// decoder share the shape (docs/format.md 5.2.1 spells out every operation).
 //
-// As the steps grow the shape tends to the global least squares; how many
-// a use needs depends on the anchors' spacing (about 2 n / k steps reach
-// it to 1e-3 of the error, bench/reconstruction_candidates).
+// As the steps grow the shape tends to the global least squares, to about
+// 1e-7 of the correction the steps add (single precision); how many a use
+// needs depends on the anchors' spacing (about 2 n / k steps reach it to
+// 1e-3 of the error, bench/reconstruction_candidates).
 #pragma once
 
 #include <algorithm>
@@ -35,6 +39,8 @@ class IterativeReconstruction {
  public:
   // Vertices per block of every sum over vertices.
   static constexpr int32_t kBlock = 4096;
+  // Harmonic sweeps that smooth the nearest-anchor start.
+  static constexpr int kStartSweeps = 8;
 
   // Starts over on `graph` (kept by reference: it must outlive this) with
   // weight w and the initial anchors (distinct vertices; every connected
@@ -59,8 +65,9 @@ class IterativeReconstruction {
   // The next solve starts from `positions` (3 per vertex, finite) instead
   // of the shape so far. O(n).
   Status set_start(const std::vector<double>& positions);
-  // The nearest-anchor start itself (3 per vertex), without solving. O(n + edges).
-  std::vector<double> nearest_anchor_shape();
+  // Each vertex at its nearest anchor's coefficients (3 per vertex): the
+  // start before its harmonic sweeps. Changes nothing. O(n + edges).
+  std::vector<double> nearest_anchor_shape() const;
   // Forgets the shape: the next solve starts from the nearest-anchor start,
   // so its result depends on the anchors and coefficients alone. O(1).
   void restart() { shape_.clear(); }
@@ -77,7 +84,6 @@ class IterativeReconstruction {
  private:
   Status check_new(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
   void record(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
-  void nearest_anchor_start();
 
   const EdgeGraph* graph_ = nullptr;
   int32_t n_ = 0;
