@@ -25,7 +25,7 @@ constexpr double kDefaultError = 1e-3;
 int run_compress(int argc, char** argv) {
   Args args;
   if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--error", "--linf", "--bits", "--weight", "--batch-fraction", "--batch", "--chunk-growth",
-                   "--initial", "--threads", "--layout", "--detail", "--ordering"},
+                   "--initial", "--threads", "--layout", "--detail", "--ordering", "--solver"},
                   {"--json", "--geometry-only", "--refine", "--reorder"})) {
     return usage_error("compress", args.error());
   }
@@ -70,6 +70,14 @@ int run_compress(int argc, char** argv) {
     options.layout = FileLayout::kSelectionOrder;
   } else if (layout != "smaller") {
     return usage_error("compress", "--layout must be smaller, levels or selection, got '" + layout + "'");
+  }
+  // The reconstruction operator (gab_format.h Solver).
+  const std::string solver = args.get("--solver", "auto");
+  if (!parse_solver(solver, &options.solver)) {
+    return usage_error("compress", "--solver must be auto, global or iterative, got '" + solver + "'");
+  }
+  if (options.solver == Solver::kIterative && options.refine) {
+    return usage_error("compress", "--refine needs the global solver (--solver global or auto)");
   }
   // The detail layer (encoder.h DetailMode).
   const std::string detail = args.get("--detail", "auto");
@@ -142,6 +150,7 @@ int run_compress(int argc, char** argv) {
     o.add("detail_step_rel", stats.detail_step_rel);
     o.add("anchor_rms_rel", stats.detail ? stats.anchor_rms_rel : stats.rms_rel);
     o.add("ordering", std::string(ordering_name(stats.ordering)));
+    o.add("solver", std::string(solver_name(stats.solver)));
     std::vector<JsonObject> candidates;
     for (const EncodeStats::Candidate& c : stats.candidates) {
       JsonObject j;

@@ -130,6 +130,7 @@ int run_decompress(int argc, char** argv) {
     o.add_bool("detail", stats.detail);
     o.add("detail_s", stats.detail_s);
     o.add("ordering", std::string(ordering_name(stats.ordering)));
+    o.add("solver", std::string(solver_name(stats.solver)));
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }

@@ -55,6 +55,7 @@ int run_info(int argc, char** argv) {
     o.add_bool("reordered", info.reordered);
     o.add("ordering", std::string(ordering_name(info.ordering)));
     o.add("reconstruction", static_cast<int64_t>(info.reconstruction));
+    o.add("solver", std::string(info.reconstruction == kGabReconstructionIterative ? "iterative" : "global"));
     o.add("sections", static_cast<int64_t>(info.sections));
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
@@ -66,7 +67,7 @@ int run_info(int argc, char** argv) {
               info.truncated ? (" (truncated: " + std::to_string(info.chunks_present) + " complete)").c_str() : "",
               info.bits, info.weight,
               info.ordering == Ordering::kNestedDissection ? "nested dissection" : "AMD",
-              info.reconstruction == kGabReconstructionIterative ? "; iterative reconstruction (in development)" : "");
+              info.reconstruction == kGabReconstructionIterative ? "; iterative reconstruction" : "; global reconstruction");
   std::printf("%zu bytes: geometry %zu (%.3f bits/vertex), connectivity %zu (%s)", info.bytes, info.geometry_bytes,
               bpv, info.connectivity_bytes,
               info.geometry_only ? "a hash" : "valence coded");

@@ -9,7 +9,8 @@ const std::vector<Command>& commands() {
   static const std::vector<Command> table = {
       {"compress", run_compress,
        {"-i IN -o OUT.gab [--anchors K | --error E | --linf E] [--bits Q] [--weight W]",
-        "[--geometry-only | --reorder] [--detail auto|on|off] [--refine] [--threads T] [--json]",
+        "[--geometry-only | --reorder] [--detail auto|on|off] [--solver auto|global|iterative]",
+        "[--refine] [--threads T] [--json]",
         "(tuning: --batch-fraction F --chunk-growth G --initial K --layout smaller|levels|selection",
         "         --ordering auto|amd|nd)"},
        "compress a mesh's geometry with geometry-aware anchors (default --error 0.001: relative\n"
@@ -18,8 +19,12 @@ const std::vector<Command>& commands() {
        "coder's). --reorder drops the numbering for a smaller file: the decoded mesh is numbered in\n"
        "the coder's traversal order, so per-vertex data kept outside the file no longer lines up.\n"
        "Below about 3e-4 the anchors stop early and a detail layer codes every vertex's residual;\n"
-       "--detail auto keeps the smaller file, on/off force it (off may miss a target). --ordering:\n"
-       "the factorizations' (speed only; recorded in the file; auto: nested dissection from 100k vertices)"},
+       "--detail auto keeps the smaller file, on/off force it (off may miss a target). --solver:\n"
+       "the shape the anchors make, recorded in the file: iterative (linear-cost steps; the default)\n"
+       "or global (the paper's factored least squares: files a few percent smaller, decoding several\n"
+       "times slower in several times the memory; auto picks it for --refine, which needs it).\n"
+       "--ordering: the global solver's factorizations' (speed only; recorded in the file; auto:\n"
+       "nested dissection from 100k vertices)"},
       {"decompress", run_decompress,
        {"-i IN.gab -o OUT [--anchors K] [--connectivity MESH] [--threads T] [--ordering auto|amd|nd]",
         "[--max-memory SIZE] [--json]"},

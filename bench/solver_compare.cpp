@@ -64,11 +64,11 @@ int main(int argc, char** argv) {
     std::string name = path.substr(path.find_last_of('/') + 1);
     name = name.substr(0, name.find('.'));
     const double diagonal = gab::bounding_box_diagonal(mesh);
-    for (uint8_t op : {gab::kGabReconstructionGlobal, gab::kGabReconstructionIterative}) {
+    for (gab::Solver op : {gab::Solver::kGlobal, gab::Solver::kIterative}) {
       gab::EncodeOptions options;
       options.target_rms_rel = error;
       options.reorder = true;
-      options.reconstruction = op;
+      options.solver = op;
       std::vector<uint8_t> file;
       gab::EncodeStats es;
       double t = now();
@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "%s: %s\n", name.c_str(), encoded.message().c_str());
         return 1;
       }
-      const char* op_name = op == gab::kGabReconstructionGlobal ? "global" : "iterative";
+      const char* op_name = op == gab::Solver::kGlobal ? "global" : "iterative";
       if (!out_dir.empty()) {
         const std::string out = out_dir + "/" + name + "-" + op_name + ".gab";
         const gab::Status written = gab::write_output_file(

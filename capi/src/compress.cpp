@@ -33,6 +33,7 @@ Status read_options(const gab_compress_options* in, EncodeOptions* out) {
     GAB_TAKE(detail);
     GAB_TAKE(refine);
     GAB_TAKE(ordering);
+    GAB_TAKE(solver);
 #undef GAB_TAKE
   }
   GAB_RETURN_IF_ERROR(options_threads(o.threads, &out->threads));
@@ -44,6 +45,9 @@ Status read_options(const gab_compress_options* in, EncodeOptions* out) {
                               "options->ordering is " + std::to_string(o.ordering) +
                                   ": must be GAB_ORDERING_AUTO, GAB_ORDERING_AMD or GAB_ORDERING_ND"));
   out->ordering = ordering;
+  GAB_RETURN_IF_ERROR(require(solver_of_code(o.solver, &out->solver),
+                              "options->solver is " + std::to_string(o.solver) +
+                                  ": must be GAB_SOLVER_AUTO, GAB_SOLVER_GLOBAL or GAB_SOLVER_ITERATIVE"));
   const bool no_rule = o.max_anchors == 0 && o.target_rms_rel == 0 && o.target_linf_rel == 0;
   out->max_anchors = o.max_anchors;
   out->target_rms_rel = no_rule ? kDefaultError : o.target_rms_rel;

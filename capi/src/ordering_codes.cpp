@@ -1,5 +1,6 @@
-// gab_ordering_from_name and the GAB_ORDERING_* codes: the names are the
-// engine's (parse_ordering, gab/sparse/ordering.h), the codes the C door's.
+// gab_ordering_from_name, gab_solver_from_name and the GAB_ORDERING_* and
+// GAB_SOLVER_* codes: the names are the engine's and the codec's
+// (parse_ordering, parse_solver), the codes the C door's.
 #include "ordering_codes.h"
 
 #include "gab/codec/matrix_ordering.h"
@@ -19,7 +20,26 @@ constexpr OrderingCode kCodes[] = {{GAB_ORDERING_AUTO, Ordering::kAuto},
                                    {GAB_ORDERING_AMD, Ordering::kAmd},
                                    {GAB_ORDERING_ND, Ordering::kNestedDissection}};
 
+// The solvers, each with its code.
+struct SolverCode {
+  int32_t code;
+  Solver solver;
+};
+constexpr SolverCode kSolverCodes[] = {{GAB_SOLVER_AUTO, Solver::kAuto},
+                                       {GAB_SOLVER_GLOBAL, Solver::kGlobal},
+                                       {GAB_SOLVER_ITERATIVE, Solver::kIterative}};
+
 }  // namespace
+
+bool solver_of_code(int32_t code, Solver* solver) {
+  for (const SolverCode& row : kSolverCodes) {
+    if (row.code == code) {
+      *solver = row.solver;
+      return true;
+    }
+  }
+  return false;
+}
 
 bool ordering_of_code(int32_t code, Ordering* ordering) {
   for (const OrderingCode& row : kCodes) {
@@ -39,6 +59,15 @@ extern "C" int gab_ordering_from_name(const char* name) {
   if (name == nullptr || !gab::parse_ordering(name, &ordering) || !gab::codec_takes_ordering(ordering)) return -1;
   for (const gab::capi::OrderingCode& row : gab::capi::kCodes) {
     if (row.ordering == ordering) return row.code;
+  }
+  return -1;
+}
+
+extern "C" int gab_solver_from_name(const char* name) {
+  gab::Solver solver;
+  if (name == nullptr || !gab::parse_solver(name, &solver)) return -1;
+  for (const gab::capi::SolverCode& row : gab::capi::kSolverCodes) {
+    if (row.solver == solver) return row.code;
   }
   return -1;
 }

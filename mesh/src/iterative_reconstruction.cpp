@@ -213,7 +213,6 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
   if (fresh) shape_ = nearest_anchor_shape();
   const size_t n = static_cast<size_t>(n_);
   const double w2 = weight_ * weight_;
-  const float w2f = static_cast<float>(w2);
   const int32_t blocks = (n_ + kBlock - 1) / kBlock;
   double* x = shape_.data();
   const int32_t* offsets = graph_->offsets.data();
@@ -277,8 +276,13 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
   // bends only the correction they add, not the shape it is added to.
   std::vector<v4f> r(n), p(n), q(n), t(n);
   std::vector<float> inv_diag(n);  // 1 / diag(L^T L + w^2 S); (L^T L)_vv = d^2 + d
+  // The steps run on the residual scaled by a power of two, `scale`, that
+  // brings its largest entry into [0.5, 1): single precision then neither
+  // overflows nor underflows whatever the coordinates' magnitude, and the
+  // scaling itself rounds nothing. The correction is divided by it at the end.
+  double scale = 1.0;
   {
-    // r = w^2 S c - (L^T L + w^2 S) x, in double (L x first), then rounded.
+    // r = w^2 S c - (L^T L + w^2 S) x, in double (L x first).
     std::vector<v4d> lx(n);
     auto x_of = [x](int32_t v) { return v4d{x[3 * v], x[3 * v + 1], x[3 * v + 2], 0.0}; };
     team.run([&](int32_t begin, int32_t end, int32_t) {
@@ -288,19 +292,40 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
         lx[v] = s;
       }
     });
+    auto residual_of = [&](int32_t v) {
+      const double d = offsets[v + 1] - offsets[v];
+      v4d s = d * lx[v];
+      for (int32_t e = offsets[v]; e < offsets[v + 1]; ++e) s -= lx[neighbors[e]];
+      v4d rv = -s;
+      const int32_t a = anchor_of[v];
+      if (a >= 0) {
+        const double* c = &coefficients_[3 * static_cast<size_t>(a)];
+        rv += w2 * (v4d{c[0], c[1], c[2], 0.0} - x_of(v));
+      }
+      return rv;
+    };
+    // The largest |r| (per block, then over the blocks: a maximum is the
+    // same in any order), then r itself again, scaled and rounded.
+    team.run([&](int32_t begin, int32_t end, int32_t b) {
+      double largest = 0.0;
+      for (int32_t v = begin; v < end; ++v) {
+        const v4d rv = residual_of(v);
+        for (int c = 0; c < 3; ++c) largest = std::max(largest, std::fabs(rv[c]));
+      }
+      partial[b] = v4d{largest, 0.0, 0.0, 0.0};
+    });
+    double largest = 0.0;
+    for (int32_t b = 0; b < blocks; ++b) largest = std::max(largest, partial[b][0]);
+    if (largest > 0.0 && std::isfinite(largest)) {
+      int exponent = 0;
+      std::frexp(largest, &exponent);  // largest = m 2^exponent, m in [0.5, 1)
+      scale = std::ldexp(1.0, -exponent);
+    }
     team.run([&](int32_t begin, int32_t end, int32_t b) {
       block_sum(begin, end, [&](int32_t v) {
         const double d = offsets[v + 1] - offsets[v];
-        v4d s = d * lx[v];
-        for (int32_t e = offsets[v]; e < offsets[v + 1]; ++e) s -= lx[neighbors[e]];
-        v4d rv = -s;
-        const int32_t a = anchor_of[v];
-        if (a >= 0) {
-          const double* c = &coefficients_[3 * static_cast<size_t>(a)];
-          rv += w2 * (v4d{c[0], c[1], c[2], 0.0} - x_of(v));
-        }
-        inv_diag[v] = static_cast<float>(1.0 / (d * d + d + (a >= 0 ? w2 : 0.0)));
-        r[v] = __builtin_convertvector(rv, v4f);
+        inv_diag[v] = static_cast<float>(1.0 / (d * d + d + (anchor_of[v] >= 0 ? w2 : 0.0)));
+        r[v] = __builtin_convertvector(scale * residual_of(v), v4f);
         p[v] = inv_diag[v] * r[v];
         return r[v] * p[v];
       }, &partial[b]);
@@ -321,7 +346,7 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
     return static_cast<float>(last - first) * in[v] - (even + odd);
   };
   // The correction the steps add to the shape, single precision like them;
-  // x + correction at the end, in double.
+  // x + correction / scale at the end, in double.
   std::vector<v4f> correction(n, v4f{0.0f, 0.0f, 0.0f, 0.0f});
   for (int32_t step = 0; step < steps; ++step) {
     // q = L (L p) + w^2 S p (t = L p first); per block the sums of p q.
@@ -331,7 +356,11 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
     team.run([&](int32_t begin, int32_t end, int32_t b) {
       block_sum(begin, end, [&](int32_t v) {
         v4f qv = laplacian_row(t.data(), v);
-        if (anchor_of[v] >= 0) qv += w2f * p[v];
+        // At an anchor, w^2 p in double: w^2 may be past single precision's
+        // range (the format allows w up to 1e100), where p is then 0.
+        if (anchor_of[v] >= 0) {
+          qv = __builtin_convertvector(__builtin_convertvector(qv, v4d) + w2 * __builtin_convertvector(p[v], v4d), v4f);
+        }
         q[v] = qv;
         return p[v] * qv;
       }, &partial[b]);
@@ -362,7 +391,7 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
     });
   }
   for (int32_t v = 0; v < n_; ++v) {
-    for (int c = 0; c < 3; ++c) x[3 * v + c] += static_cast<double>(correction[v][c]);
+    for (int c = 0; c < 3; ++c) x[3 * v + c] += static_cast<double>(correction[v][c]) / scale;
   }
   *positions = shape_;
   return Status::Ok();

@@ -105,7 +105,7 @@ def read_mesh(path):
 
 
 def compress(V, F, error=None, anchors=None, linf=None, bits=None, weight=None, reorder=False, threads=1,
-             detail="auto", refine=False, ordering="auto"):
+             detail="auto", refine=False, ordering="auto", solver="auto"):
     """Compresses a mesh to a .gab file, returned as bytes.
 
     V: (n, 3) coordinates, F: (t, 3) vertex indices (0-based). Stopping rules,
@@ -117,9 +117,12 @@ def compress(V, F, error=None, anchors=None, linf=None, bits=None, weight=None, 
     threads: for the factorizations (0: every core; the file is the same for
     any count); detail: 'auto', 'on' or 'off'; refine: the least-squares
     refinement chunk; ordering: the factorizations' ('auto', 'amd' or 'nd',
-    as the CLI's --ordering; speed only). The decoded mesh keeps the vertex
-    numbering (unless reorder) and the triangles as a set of oriented
-    triangles."""
+    as the CLI's --ordering; speed only); solver: the reconstruction operator
+    ('auto', 'global' or 'iterative', as the CLI's --solver: iterative decodes
+    in time linear in n, global makes files a few percent smaller and decodes
+    several times slower; auto is iterative, or global with refine). The
+    decoded mesh keeps the vertex numbering (unless reorder) and the
+    triangles as a set of oriented triangles."""
     V = _reals(V, np.float64, "V", 3)
     F = _int32(F, "F", 3)
     if detail not in _DETAIL:
@@ -127,6 +130,9 @@ def compress(V, F, error=None, anchors=None, linf=None, bits=None, weight=None, 
     ordering_code = LIB.gab_ordering_from_name(str(ordering).encode())
     if ordering_code < 0:
         raise ValueError(f"ordering must be 'auto', 'amd' or 'nd', got {ordering!r}")
+    solver_code = LIB.gab_solver_from_name(str(solver).encode())
+    if solver_code < 0:
+        raise ValueError(f"solver must be 'auto', 'global' or 'iterative', got {solver!r}")
     options = CompressOptions()
     LIB.gab_compress_options_init(ctypes.byref(options), ctypes.sizeof(options))
     if error is None and anchors is None and linf is None:
@@ -142,6 +148,7 @@ def compress(V, F, error=None, anchors=None, linf=None, bits=None, weight=None, 
     options.detail = _DETAIL[detail]
     options.refine = int(bool(refine))
     options.ordering = ordering_code
+    options.solver = solver_code
     out = ctypes.POINTER(ctypes.c_ubyte)()
     size = ctypes.c_size_t()
     message = message_buffer()

@@ -33,6 +33,7 @@ class CompressOptions(ctypes.Structure):
         ("detail", c_int32),
         ("refine", c_int32),
         ("ordering", c_int32),
+        ("solver", c_int32),
     ]
 
 
@@ -86,6 +87,7 @@ def _declare(lib):
         "gab_read_mesh": (c_int, [c_char_p, P(P(c_double)), P(c_int32), P(P(c_int32)), P(c_int32), c_char_p, c_size_t]),
         "gab_compress_options_init": (None, [P(CompressOptions), c_size_t]),
         "gab_ordering_from_name": (c_int, [c_char_p]),
+        "gab_solver_from_name": (c_int, [c_char_p]),
         "gab_compress_ex": (
             c_int,
             [P(c_double), c_int32, P(c_int32), c_int32, P(CompressOptions), P(P(c_ubyte)), P(c_size_t), c_char_p,

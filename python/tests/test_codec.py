@@ -74,6 +74,11 @@ class CodecTest(unittest.TestCase):
         # auto is AMD on a small mesh; the file records the ordering.
         self.assertEqual(base, gab.compress(V, F, ordering="amd"))
         self.assertNotEqual(base, gab.compress(V, F, ordering="nd"))
+        # The iterative solver is the default; the file records the solver (header byte 12).
+        self.assertEqual(base, gab.compress(V, F, solver="iterative"))
+        self.assertEqual(base[12], 1)
+        self.assertEqual(gab.compress(V, F, solver="global")[12], 0)
+        self.assertEqual(gab.compress(V, F, refine=True)[12], 0)
 
     def test_inputs_of_other_types_and_layouts(self):
         V, F = bumpy_torus(12, 10)
@@ -96,6 +101,8 @@ class CodecTest(unittest.TestCase):
             gab.compress(V, F, detail="maybe")
         with self.assertRaises(ValueError):
             gab.compress(V, F, ordering="natural")  # the benchmarks' ordering, not the codec's
+        with self.assertRaisesRegex(ValueError, "solver must be 'auto', 'global' or 'iterative', got 'cholmod'"):
+            gab.compress(V, F, solver="cholmod")
         with self.assertRaises(gab.GabError) as e:
             gab.compress(V, F, bits=40)
         self.assertEqual(str(e.exception), "gab_compress_ex: bits must be in 2..24")
@@ -129,7 +136,7 @@ class CodecTest(unittest.TestCase):
         V, F = bumpy_torus(12, 10)
         data = gab.compress(V, F)
         with self.assertRaises(gab.GabError) as e:
-            gab.decompress(data, max_memory=100000)
+            gab.decompress(data, max_memory=20000)
         self.assertEqual(e.exception.name, "GAB_E_RESOURCE_EXHAUSTED")
         self.assertIn("over its memory limit of 1 MiB", str(e.exception))
         self.assertEqual(gab.decompress(data, max_memory=-1)[0].tolist(), gab.decompress(data)[0].tolist())

@@ -109,7 +109,8 @@ TEST(CodecCliTest, CompressDecompressInfoRoundTrip) {
   EXPECT_EQ(json_number(i.out, "connectivity_bytes"), json_number(c.out, "connectivity_bytes"));
   EXPECT_EQ(json_number(i.out, "order_bytes"), json_number(c.out, "order_bytes"));
   EXPECT_EQ(json_number(i.out, "version"), 2);
-  EXPECT_EQ(json_number(i.out, "reconstruction"), 0);
+  EXPECT_EQ(json_number(i.out, "reconstruction"), 1);  // the iterative operator, the default
+  EXPECT_NE(i.out.find("\"solver\": \"iterative\""), std::string::npos) << i.out;
   EXPECT_EQ(json_number(i.out, "sections"), 0);
 }
 
@@ -148,7 +149,8 @@ TEST(CodecCliTest, RefineAddsALeastSquaresChunkThatDecompressApplies) {
   const std::string in = write_scratch_file("refine.off", torus_off(40, 20));
   const std::string plain = write_scratch_file("refine-plain.gab", ""), refined = write_scratch_file("refine.gab", "");
   const std::string out = write_scratch_file("refine-out.off", "");
-  CommandResult a = run_gab("compress -i " + in + " -o " + plain + " --anchors 60 --json");
+  // The refinement needs the global solver, which --refine picks.
+  CommandResult a = run_gab("compress -i " + in + " -o " + plain + " --anchors 60 --solver global --json");
   CommandResult b = run_gab("compress -i " + in + " -o " + refined + " --anchors 60 --refine --json");
   ASSERT_EQ(a.exit_code, 0) << a.err;
   ASSERT_EQ(b.exit_code, 0) << b.err;
@@ -157,6 +159,7 @@ TEST(CodecCliTest, RefineAddsALeastSquaresChunkThatDecompressApplies) {
   EXPECT_LT(json_number(b.out, "rms_rel"), json_number(a.out, "rms_rel"));
   EXPECT_EQ(json_number(b.out, "unrefined_rms_rel"), json_number(a.out, "rms_rel"));
   EXPECT_GT(json_number(b.out, "refinement_bytes"), 0);
+  EXPECT_NE(b.out.find("\"solver\": \"global\""), std::string::npos) << b.out;
   CommandResult d = run_gab("decompress -i " + refined + " -o " + out + " --json");
   ASSERT_EQ(d.exit_code, 0) << d.err;
   EXPECT_NE(d.out.find("\"refined\": true"), std::string::npos) << d.out;
@@ -311,18 +314,41 @@ TEST(CodecCliTest, UsageAndInputErrors) {
   EXPECT_EQ(r.err, "gab: error: " + not_gab + ": not a .gab file (bad magic)\n");
 }
 
+TEST(CodecCliTest, SolverIsChosenRecordedAndChecked) {
+  const std::string in = write_scratch_file("solver.off", torus_off(16, 8));
+  const std::string gab = write_scratch_file("solver.gab", "");
+  const std::string out = write_scratch_file("solver-out.off", "");
+  for (const char* solver : {"global", "iterative"}) {
+    CommandResult r = run_gab("compress -i " + in + " -o " + gab + " --solver " + solver + " --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find(std::string("\"solver\": \"") + solver + "\""), std::string::npos) << r.out;
+    r = run_gab("decompress -i " + gab + " -o " + out + " --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find(std::string("\"solver\": \"") + solver + "\""), std::string::npos) << r.out;
+    r = run_gab("info " + gab);
+    EXPECT_NE(r.out.find(std::string("; ") + solver + " reconstruction\n"), std::string::npos) << r.out;
+  }
+  CommandResult r = run_gab("compress -i " + in + " -o " + gab + " --solver cholmod");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--solver must be auto, global or iterative, got 'cholmod'"), std::string::npos) << r.err;
+  r = run_gab("compress -i " + in + " -o " + gab + " --solver iterative --refine");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--refine needs the global solver (--solver global or auto)"), std::string::npos) << r.err;
+}
+
 TEST(CodecCliTest, OrderingIsChosenRecordedAndOverridable) {
   const std::string in = write_scratch_file("ordering.off", torus_off(12, 6));
   const std::string gab = write_scratch_file("ordering.gab", "");
   const std::string out = write_scratch_file("ordering-out.off", "");
-  CommandResult r = run_gab("compress -i " + in + " -o " + gab + " --anchors 12 --json");
+  // The global solver's factorizations are what an ordering is for.
+  CommandResult r = run_gab("compress -i " + in + " -o " + gab + " --anchors 12 --solver global --json");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("\"ordering\": \"amd\""), std::string::npos) << r.out;  // auto, on a small mesh
-  r = run_gab("compress -i " + in + " -o " + gab + " --anchors 12 --ordering nd --json");
+  r = run_gab("compress -i " + in + " -o " + gab + " --anchors 12 --solver global --ordering nd --json");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("\"ordering\": \"nd\""), std::string::npos) << r.out;
   r = run_gab("info " + gab);
-  EXPECT_NE(r.out.find("w = 100, ordered by nested dissection\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("w = 100, ordered by nested dissection; global reconstruction\n"), std::string::npos) << r.out;
   r = run_gab("info " + gab + " --json");
   EXPECT_NE(r.out.find("\"ordering\": \"nd\""), std::string::npos) << r.out;
   r = run_gab("decompress -i " + gab + " -o " + out + " --json");

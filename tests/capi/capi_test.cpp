@@ -72,6 +72,11 @@ TEST(CapiTest, OrderingNamesAreTheCliVocabulary) {
   EXPECT_EQ(gab_ordering_from_name("AMD"), -1);
   EXPECT_EQ(gab_ordering_from_name(""), -1);
   EXPECT_EQ(gab_ordering_from_name(nullptr), -1);
+  EXPECT_EQ(gab_solver_from_name("auto"), GAB_SOLVER_AUTO);
+  EXPECT_EQ(gab_solver_from_name("global"), GAB_SOLVER_GLOBAL);
+  EXPECT_EQ(gab_solver_from_name("iterative"), GAB_SOLVER_ITERATIVE);
+  EXPECT_EQ(gab_solver_from_name("Global"), -1);
+  EXPECT_EQ(gab_solver_from_name(nullptr), -1);
 }
 
 TEST(CapiTest, RoundTripMeetsTheTargetAndMatchesTheCppApi) {
@@ -200,6 +205,30 @@ TEST(CapiTest, OptionsStructIsReadUpToItsSize) {
   o.ordering = 3;
   EXPECT_EQ(compress(&o, nullptr).message,
             "gab_compress_ex: options->ordering is 3: must be GAB_ORDERING_AUTO, GAB_ORDERING_AMD or GAB_ORDERING_ND");
+  gab_compress_options_init(&o, sizeof o);
+  o.solver = 3;
+  EXPECT_EQ(compress(&o, nullptr).message,
+            "gab_compress_ex: options->solver is 3: must be GAB_SOLVER_AUTO, GAB_SOLVER_GLOBAL or GAB_SOLVER_ITERATIVE");
+  // The solver is recorded in the file (header byte 12): the default is the
+  // iterative one, the refinement picks the global one.
+  for (int32_t solver : {GAB_SOLVER_AUTO, GAB_SOLVER_GLOBAL, GAB_SOLVER_ITERATIVE}) {
+    for (int32_t refine : {0, 1}) {
+      if (solver == GAB_SOLVER_ITERATIVE && refine) continue;
+      gab_compress_options_init(&o, sizeof o);
+      o.solver = solver;
+      o.refine = refine;
+      std::vector<uint8_t> file;
+      ASSERT_EQ(compress(&o, &file).code, GAB_OK);
+      ASSERT_GT(file.size(), 12u);
+      EXPECT_EQ(file[12], solver == GAB_SOLVER_GLOBAL || refine ? gab::kGabReconstructionGlobal
+                                                                 : gab::kGabReconstructionIterative);
+    }
+  }
+  gab_compress_options_init(&o, sizeof o);
+  o.solver = GAB_SOLVER_ITERATIVE;
+  o.refine = 1;
+  EXPECT_EQ(compress(&o, nullptr).message,
+            "gab_compress_ex: the refinement chunk needs the global reconstruction operator");
   gab_compress_options_init(&o, sizeof o);
   o.bits = 30;
   const Outcome bits = compress(&o, nullptr);

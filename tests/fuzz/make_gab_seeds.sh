@@ -30,17 +30,20 @@ with open(sys.argv[1], "w") as f:
             f.write("3 %d %d %d\n3 %d %d %d\n" % (a, b, c, a, c, d))
 PY
 c() { "$gab" compress -i "$tmp/torus.off" "$@" 2>/dev/null; }
-c -o "$tmp/full.gab" --anchors 20 --chunk-growth 1.5 --layout selection
-c -o "$tmp/geo.gab" --anchors 12 --geometry-only --bits 8 --chunk-growth 2 --layout selection
-c -o "$tmp/coarse.gab" --error 0.01 --bits 6 --chunk-growth 2 --layout selection
+c -o "$tmp/full.gab" --anchors 20 --chunk-growth 1.5 --layout selection --solver global
+c -o "$tmp/geo.gab" --anchors 12 --geometry-only --bits 8 --chunk-growth 2 --layout selection --solver global
+c -o "$tmp/coarse.gab" --error 0.01 --bits 6 --chunk-growth 2 --layout selection --solver global
 c -o "$tmp/refined.gab" --anchors 16 --refine --chunk-growth 2 --layout selection
-c -o "$tmp/levels.gab" --anchors 40 --initial 4 --layout levels --chunk-growth 1.5
+c -o "$tmp/levels.gab" --anchors 40 --initial 4 --layout levels --chunk-growth 1.5 --solver global
 c -o "$tmp/levels-refined.gab" --anchors 24 --initial 3 --layout levels --refine
-c -o "$tmp/ordered.gab" --anchors 20 --chunk-growth 1.5
-c -o "$tmp/reordered.gab" --anchors 20 --chunk-growth 1.5 --reorder
-c -o "$tmp/nd.gab" --anchors 20 --chunk-growth 1.5 --ordering nd
-c -o "$tmp/detail.gab" --error 1e-4 --detail on
-c -o "$tmp/detail-geo.gab" --error 1e-4 --detail on --geometry-only
+c -o "$tmp/ordered.gab" --anchors 20 --chunk-growth 1.5 --solver global
+c -o "$tmp/reordered.gab" --anchors 20 --chunk-growth 1.5 --reorder --solver global
+c -o "$tmp/nd.gab" --anchors 20 --chunk-growth 1.5 --ordering nd --solver global
+c -o "$tmp/detail.gab" --error 1e-4 --detail on --solver global
+c -o "$tmp/detail-geo.gab" --error 1e-4 --detail on --geometry-only --solver global
+c -o "$tmp/iterative.gab" --anchors 20 --chunk-growth 1.5 --solver iterative
+c -o "$tmp/iterative-selection.gab" --anchors 20 --chunk-growth 1.5 --layout selection --solver iterative
+c -o "$tmp/iterative-detail.gab" --error 1e-4 --detail on --solver iterative
 rm -f "$out"/torus-*
 mkdir -p "$out"
 { printf '\x00'; cat "$tmp/full.gab"; } > "$out/torus-full"
@@ -56,3 +59,7 @@ mkdir -p "$out"
 { printf '\x00'; cat "$tmp/nd.gab"; } > "$out/torus-nd"
 { printf '\x00'; cat "$tmp/detail.gab"; } > "$out/torus-detail"
 { printf '\x01'; cat "$tmp/detail-geo.gab"; } > "$out/torus-detail-geometry-only"
+{ printf '\x00'; cat "$tmp/iterative.gab"; } > "$out/torus-iterative"
+{ printf '\x2a'; cat "$tmp/iterative.gab"; } > "$out/torus-iterative-prefix-10"
+{ printf '\x00'; cat "$tmp/iterative-selection.gab"; } > "$out/torus-iterative-selection"
+{ printf '\x00'; cat "$tmp/iterative-detail.gab"; } > "$out/torus-iterative-detail"

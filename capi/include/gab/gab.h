@@ -81,6 +81,18 @@ int gab_read_mesh(const char* path, double** positions, int32_t* n, int32_t** tr
    CLI's --ordering reads them); -1 for any other text or NULL. O(1). */
 int gab_ordering_from_name(const char* name);
 
+/* The reconstruction operator (gab_compress_options.solver), recorded in
+   the file: the shape the anchors make. */
+#define GAB_SOLVER_AUTO 0      /* "auto": iterative, or global when refine is set (the refinement needs it) */
+#define GAB_SOLVER_GLOBAL 1    /* "global": the paper's factored least squares; files a few percent smaller,
+                                  decodes several times slower in several times the memory */
+#define GAB_SOLVER_ITERATIVE 2 /* "iterative": fixed conjugate-gradient steps, decode cost linear in n */
+
+/* The GAB_SOLVER_* value a name stands for ("auto", "global" or
+   "iterative", as the CLI's --solver reads them); -1 for any other text or
+   NULL. O(1). */
+int gab_solver_from_name(const char* name);
+
 /* Options of gab_compress_ex. ABI-stable: `size` says how much of the struct
    the caller knows; later versions only append fields, and a field beyond
    `size` takes its default. Fill it with gab_compress_options_init, then set
@@ -98,6 +110,7 @@ typedef struct gab_compress_options {
   int32_t detail;         /* GAB_DETAIL_AUTO (default), GAB_DETAIL_ON or GAB_DETAIL_OFF */
   int32_t refine;         /* nonzero: append the least-squares refinement chunk (--refine) */
   int32_t ordering;       /* GAB_ORDERING_AUTO (default), GAB_ORDERING_AMD or GAB_ORDERING_ND (--ordering) */
+  int32_t solver;         /* GAB_SOLVER_AUTO (default), GAB_SOLVER_GLOBAL or GAB_SOLVER_ITERATIVE (--solver) */
 } gab_compress_options;
 
 /* Sets the defaults: options->size = min(size, sizeof(gab_compress_options)),

@@ -53,8 +53,10 @@ Status check_options(const EncodeOptions& o) {
   if (!std::isfinite(o.chunk_growth)) return bad("chunk growth must be finite");
   if (o.refine_iterations < 1) return bad("refinement iterations must be positive");
   if (o.reorder && o.geometry_only) return bad("a reordered file codes its connectivity: not with geometry only");
-  if (o.reconstruction > kGabReconstructionIterative) return bad("unknown reconstruction operator");
-  if (o.reconstruction == kGabReconstructionIterative && o.refine) {
+  if (o.solver != Solver::kAuto && o.solver != Solver::kGlobal && o.solver != Solver::kIterative) {
+    return bad("unknown reconstruction operator");
+  }
+  if (o.solver == Solver::kIterative && o.refine) {
     return bad("the refinement chunk needs the global reconstruction operator");
   }
   return check_codec_ordering(o.ordering);
@@ -99,11 +101,18 @@ std::vector<uint8_t> assemble_file(const GabHeader& header, const Mesh& mesh, co
   return out.take();
 }
 
+// The header's operator code for o.solver (encoder.h: kAuto is the
+// iterative operator unless the refinement chunk needs the global one).
+uint8_t reconstruction_of(const EncodeOptions& o) {
+  const bool global = o.solver == Solver::kGlobal || (o.solver == Solver::kAuto && o.refine);
+  return global ? kGabReconstructionGlobal : kGabReconstructionIterative;
+}
+
 // What every candidate of one encode shares, built once.
 struct EncodeContext {
   EncodeContext(const Mesh& m, const EncodeOptions& o, const CodedConnectivity& c)
       : mesh(m), options(o), coded(c), box(box_of(m)), graph(build_edge_graph(m)),
-        ordering(encoder_ordering(o.ordering, m.num_vertices())) {}
+        ordering(encoder_ordering(o.ordering, m.num_vertices())), reconstruction(reconstruction_of(o)) {}
 
   double scale() const { return box.diagonal > 0 ? 1.0 / box.diagonal : 1.0; }
   // Built for the first detail candidate.
@@ -119,6 +128,7 @@ struct EncodeContext {
   const Box box;
   const EdgeGraph graph;
   OrderingPlan ordering;  // its permutation remembered after the first factorization
+  const uint8_t reconstruction;  // kGabReconstruction*: the operator options.solver names
 
  private:
   DetailTopology detail_topology_;
@@ -174,7 +184,7 @@ Status estimate(EncodeContext& ctx, const EncodeCandidate& candidate, Estimate* 
   {
     // The selection's factor goes before the level layout's is made: at
     // 2.4M vertices each is gigabytes.
-    ShapeOperator rec(options.reconstruction);
+    ShapeOperator rec(ctx.reconstruction);
     GAB_RETURN_IF_ERROR(select_anchors(mesh, ctx.graph, candidate.anchors, options, grid, ctx.scale(), ctx.ordering,
                                        &rec, &e->selection));
     if (rec.relaxed()) ctx.ordering.remember(*rec.relaxed());
@@ -187,7 +197,7 @@ Status estimate(EncodeContext& ctx, const EncodeCandidate& candidate, Estimate* 
   if (try_levels) {
     const double growth = options.chunk_growth > 0 ? options.chunk_growth : default_level_growth(selection.flops);
     GAB_RETURN_IF_ERROR(encode_level_layout(selection.schedule, ctx.graph, options.weight, growth, options.threads,
-                                            ctx.ordering, options.reconstruction, grid, &in_levels));
+                                            ctx.ordering, ctx.reconstruction, grid, &in_levels));
   }
   e->levels = try_levels &&
               (options.layout == FileLayout::kLevels || in_levels.bytes() <= in_selection_order.bytes());
@@ -200,7 +210,7 @@ Status estimate(EncodeContext& ctx, const EncodeCandidate& candidate, Estimate* 
     // Over the decoder's shape of all the anchors: the selection's last
     // (unrefined: detail candidates never refine).
     const GabHeader header =
-        grid_header(e->quantizer, candidate.anchors.bits, ctx.ordering.choice(), options.reconstruction);
+        grid_header(e->quantizer, candidate.anchors.bits, ctx.ordering.choice(), ctx.reconstruction);
     GAB_RETURN_IF_ERROR(fit_detail(ctx.detail_topology(), detail_frame_of(header), selection.shape, mesh,
                                    ctx.scale(), options.target_rms_rel, options.target_linf_rel, &e->detail));
     e->target_met = e->detail.met;
@@ -232,6 +242,7 @@ Status finish(EncodeContext& ctx, Estimate* e, std::vector<uint8_t>* file, Encod
   stats->num_triangles = mesh.num_triangles();
   stats->bits = e->candidate.anchors.bits;
   stats->ordering = ctx.ordering.choice();
+  stats->solver = ctx.reconstruction == kGabReconstructionGlobal ? Solver::kGlobal : Solver::kIterative;
   stats->curve = selection.curve;
   stats->chunk_anchors = e->layout.chunk_anchors;
   stats->levels = e->levels;
@@ -244,7 +255,7 @@ Status finish(EncodeContext& ctx, Estimate* e, std::vector<uint8_t>* file, Encod
 
   std::vector<std::vector<uint8_t>> chunks = std::move(e->layout.chunks);  // the estimate is spent
   GabHeader header =
-      grid_header(e->quantizer, e->candidate.anchors.bits, ctx.ordering.choice(), options.reconstruction);
+      grid_header(e->quantizer, e->candidate.anchors.bits, ctx.ordering.choice(), ctx.reconstruction);
   if (e->candidate.detail) {
     GAB_RETURN_IF_ERROR(improve_detail(ctx.detail_topology(), detail_frame_of(header), selection.shape, mesh,
                                        ctx.scale(), options.target_rms_rel, options.target_linf_rel, &e->detail));

@@ -108,6 +108,7 @@ TEST(LevelLayout, TheSelectionOrderStaysWhereItCodesSmaller) {
   const Mesh mesh = bumpy_torus(40, 20);
   EncodeOptions options;
   options.max_anchors = 150;
+  options.solver = Solver::kGlobal;
   EncodeStats smaller, forced, selection;
   const std::vector<uint8_t> file = encode_or_die(mesh, options, &smaller);
   options.layout = FileLayout::kLevels;
@@ -152,6 +153,7 @@ TEST(LevelLayout, EveryLevelPrefixIsTheReconstructionFromItsAnchors) {
   options.initial_anchors = 6;
   options.chunk_growth = 1.5;
   options.layout = FileLayout::kLevels;
+  options.solver = Solver::kGlobal;  // compared with the factored least squares below
   EncodeStats es;
   const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
   const LevelHead head = read_level_head(file, mesh.num_vertices());

@@ -126,6 +126,7 @@ TEST(EncodeDecode, TheFileRecordsItsOrderingAndAnyOrderingDecodesIt) {
     const Ordering other =
         ordering == Ordering::kAmd ? Ordering::kNestedDissection : Ordering::kAmd;
     EncodeOptions options;
+    options.solver = Solver::kGlobal;  // the factored operator: the one an ordering is for
     options.target_rms_rel = 2e-3;
     options.ordering = ordering;
     EncodeStats es;
@@ -159,6 +160,7 @@ TEST(EncodeDecode, TheFileRecordsItsOrderingAndAnyOrderingDecodesIt) {
   }
   // Without a choice, small meshes take AMD (encoder_ordering, ordering_choice.cpp).
   EncodeOptions options;
+  options.solver = Solver::kGlobal;
   options.max_anchors = 30;
   EncodeStats es;
   const std::vector<uint8_t> file = encode_or_die(bumpy_torus(30, 15), options, &es);
@@ -174,6 +176,7 @@ TEST(EncodeDecode, EveryChunkPrefixIsTheEncodersShapeAtThatAnchorCount) {
   options.max_anchors = 120;
   options.chunk_growth = 1.5;
   options.layout = FileLayout::kSelectionOrder;
+  options.solver = Solver::kGlobal;  // its greedy curve is the decoder's shapes
   EncodeStats es;
   const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
   int32_t k = 0;
@@ -337,6 +340,7 @@ TEST(EncodeDecode, DecoderRefusesAFactorOverItsLimit) {
   const Mesh torus = testing_util::bumpy_torus(24, 12);
   EncodeOptions eo;
   eo.max_anchors = 30;
+  eo.solver = Solver::kGlobal;  // a file with a factor
   EncodeStats es;
   const std::vector<uint8_t> file = testing_util::encode_or_die(torus, eo, &es);
   DecodeOptions options;

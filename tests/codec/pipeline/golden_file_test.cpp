@@ -2,7 +2,8 @@
 // seeds in tests/fuzz/corpus/gab (a leading options byte, then a file that
 // tests/fuzz/make_gab_seeds.sh made with `gab compress` from
 // gab_fuzz::seed_torus), one per variant the format has (each flag, both
-// layouts, both orderings, geometry only, the detail chunk, prefixes).
+// layouts, both orderings, both solvers, geometry only, the detail chunk,
+// prefixes).
 // Each seed must keep its bytes, keep decoding to its pinned shape, and be
 // what the encoder writes today for its options. A change that fails here
 // is a format change: version 2 files exist, so it needs a new version or
@@ -73,6 +74,7 @@ EncodeOptions options_of(const std::string& args) {
     else if (flag == "--layout") o.layout = value == "levels" ? FileLayout::kLevels : FileLayout::kSelectionOrder;
     else if (flag == "--detail") o.detail = DetailMode::kOn;
     else if (flag == "--ordering") o.ordering = Ordering::kNestedDissection;
+    else if (flag == "--solver") EXPECT_TRUE(parse_solver(value, &o.solver)) << value;
     else ADD_FAILURE() << "unknown option " << flag;
   }
   return o;
@@ -87,32 +89,41 @@ struct Golden {
   const char* options;  // make_gab_seeds.sh's for the file
 };
 
-// Every variant, as make_gab_seeds.sh writes it. rms_rel: a shape solved
-// from the anchors may differ by rounding on another SIMD level, so it is
-// pinned to 1e-7; the detail chunk's positions are exact (pinned below).
+// Every variant, as make_gab_seeds.sh writes it. rms_rel: a shape the global
+// solver makes may differ by rounding on another SIMD level, so it is
+// pinned to 1e-7; the detail chunk's positions and the iterative solver's
+// shapes are exact (pinned below).
 const std::vector<Golden>& goldens() {
   constexpr uint8_t kGeo = kGabFlagGeometryOnly, kLevels = kGabFlagLevels;
   static const std::vector<Golden> all = {
       {"torus-full", 0x824442527a9b539full, 0, 12, 20, 8, 0.022588347,
-       "--anchors 20 --chunk-growth 1.5 --layout selection"},
+       "--anchors 20 --chunk-growth 1.5 --layout selection --solver global"},
       {"torus-geometry-only", 0xb374d63c1840c5d3ull, kGeo, 8, 12, 5, 0.035451577,
-       "--anchors 12 --geometry-only --bits 8 --chunk-growth 2 --layout selection"},
+       "--anchors 12 --geometry-only --bits 8 --chunk-growth 2 --layout selection --solver global"},
       {"torus-coarse", 0x260b74b1b79fcd03ull, 0, 6, 37, 7, 0.009801301,
-       "--error 0.01 --bits 6 --chunk-growth 2 --layout selection"},
+       "--error 0.01 --bits 6 --chunk-growth 2 --layout selection --solver global"},
       {"torus-refined", 0x900fb22cd67100f4ull, kGabFlagRefined, 12, 16, 6, 0.024199612,
        "--anchors 16 --refine --chunk-growth 2 --layout selection"},
       {"torus-levels", 0x598c0402f0050619ull, kLevels, 12, 40, 5, 0.008304911,
-       "--anchors 40 --initial 4 --layout levels --chunk-growth 1.5"},
+       "--anchors 40 --initial 4 --layout levels --chunk-growth 1.5 --solver global"},
       {"torus-levels-refined", 0xd90bc57f331f69e1ull, kLevels | kGabFlagRefined, 12, 24, 5, 0.014869626,
        "--anchors 24 --initial 3 --layout levels --refine"},
-      {"torus-ordered", 0x2399a3f5c41efe5dull, kLevels, 12, 20, 4, 0.022588347, "--anchors 20 --chunk-growth 1.5"},
+      {"torus-ordered", 0x2399a3f5c41efe5dull, kLevels, 12, 20, 4, 0.022588347,
+       "--anchors 20 --chunk-growth 1.5 --solver global"},
       {"torus-reordered", 0x83f61e3fc9dd1898ull, kLevels | kGabFlagReordered, 12, 20, 4, 0.022588347,
-       "--anchors 20 --chunk-growth 1.5 --reorder"},
+       "--anchors 20 --chunk-growth 1.5 --reorder --solver global"},
       {"torus-nd", 0x25ff4b3b24ba6282ull, kLevels, 12, 20, 4, 0.022588347,
-       "--anchors 20 --chunk-growth 1.5 --ordering nd"},
-      {"torus-detail", 0x2036617eabc21938ull, kGabFlagDetail, 6, 15, 4, 0.000099895, "--error 1e-4 --detail on"},
+       "--anchors 20 --chunk-growth 1.5 --ordering nd --solver global"},
+      {"torus-detail", 0x2036617eabc21938ull, kGabFlagDetail, 6, 15, 4, 0.000099895,
+       "--error 1e-4 --detail on --solver global"},
       {"torus-detail-geometry-only", 0xdb991622f7b0d688ull, kGeo | kGabFlagDetail, 6, 15, 4, 0.000099905,
-       "--error 1e-4 --detail on --geometry-only"},
+       "--error 1e-4 --detail on --geometry-only --solver global"},
+      {"torus-iterative", 0xa177618616521ad2ull, kLevels, 12, 20, 4, 0.021768607,
+       "--anchors 20 --chunk-growth 1.5 --solver iterative"},
+      {"torus-iterative-selection", 0xd5c603d01d806202ull, 0, 12, 20, 8, 0.021768607,
+       "--anchors 20 --chunk-growth 1.5 --layout selection --solver iterative"},
+      {"torus-iterative-detail", 0x15d5fec3c8931bd1ull, kGabFlagDetail, 6, 15, 4, 0.000098065,
+       "--error 1e-4 --detail on --solver iterative"},
   };
   return all;
 }
@@ -185,6 +196,36 @@ TEST(GoldenFiles, DetailSeedsDecodeToTheirPinnedBits) {
     EXPECT_LE(testing_util::relative_rms(torus, out), 1e-4) << g.name;
     EXPECT_EQ(shape_fingerprint(out.positions), g.fingerprint) << g.name << std::hex << " 0x"
                                                                 << shape_fingerprint(out.positions);
+  }
+}
+
+TEST(GoldenFiles, IterativeSeedsDecodeToTheirPinnedBits) {
+  // The iterative operator fixes every operation (docs/format.md 5.2.1):
+  // its shapes, whole or a prefix, are the same bits on any machine, SIMD
+  // level and thread count, so they are pinned bit for bit.
+  struct Seed {
+    const char* name;
+    int32_t max_anchors;
+    uint64_t fingerprint;
+  };
+  // (Both layouts code the same anchors, whose shape depends on them alone.)
+  for (const Seed& g : {Seed{"torus-iterative", -1, 0x0276aba1b3f1ff13ull},
+                        Seed{"torus-iterative", 10, 0xbd475e0a4716f1fcull},
+                        Seed{"torus-iterative-selection", -1, 0x0276aba1b3f1ff13ull},
+                        Seed{"torus-iterative-detail", -1, 0xd91e627a6525b252ull}}) {
+    const std::vector<uint8_t> golden = seed(g.name);
+    for (int32_t threads : {1, 2}) {
+      DecodeOptions decode;
+      decode.max_anchors = g.max_anchors;
+      decode.threads = threads;
+      Mesh out;
+      DecodeStats ds;
+      const Status status = decode_mesh(golden.data(), golden.size(), decode, &out, &ds);
+      ASSERT_TRUE(status.ok()) << g.name << ": " << status.message();
+      EXPECT_EQ(ds.solver, Solver::kIterative) << g.name;
+      EXPECT_EQ(shape_fingerprint(out.positions), g.fingerprint)
+          << g.name << " " << g.max_anchors << std::hex << " 0x" << shape_fingerprint(out.positions);
+    }
   }
 }
 
@@ -262,7 +303,7 @@ TEST(GoldenFiles, SeedsPassTheFuzzersChecks) {
     for (double x : out.positions) ASSERT_TRUE(std::isfinite(x)) << e->d_name;
   }
   closedir(d);
-  EXPECT_EQ(seen, static_cast<int>(goldens().size()) + 2);  // and the two prefixes
+  EXPECT_EQ(seen, static_cast<int>(goldens().size()) + 3);  // and the three prefixes
 }
 
 }  // namespace

@@ -27,6 +27,7 @@ EncodeOptions anchors_only(int32_t initial, int32_t max_anchors, double batch_fr
   o.batch_fraction = batch_fraction;
   o.bits = 14;
   o.detail = DetailMode::kOff;
+  o.solver = Solver::kGlobal;  // each step's shape the exact least squares
   return o;
 }
 

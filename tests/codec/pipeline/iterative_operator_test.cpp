@@ -26,7 +26,7 @@ TEST(IterativeOperator, DecodesToTheEncodersShapeInEveryLayout) {
       EncodeOptions options;
       options.target_rms_rel = target;
       options.layout = layout;
-      options.reconstruction = kGabReconstructionIterative;
+      options.solver = Solver::kIterative;
       options.detail = target < 5e-4 ? DetailMode::kOn : DetailMode::kOff;
       EncodeStats es;
       const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
@@ -50,7 +50,7 @@ TEST(IterativeOperator, APrefixDecodesToTheShapeOfItsAnchors) {
   EncodeOptions options;
   options.target_rms_rel = 1e-3;
   options.detail = DetailMode::kOff;
-  options.reconstruction = kGabReconstructionIterative;
+  options.solver = Solver::kIterative;
   EncodeStats es;
   const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
   ASSERT_GT(es.chunk_anchors.size(), 1u);
@@ -75,7 +75,7 @@ TEST(IterativeOperator, TheMemoryLimitCountsItsVectors) {
   const Mesh mesh = bumpy_torus(40, 24);  // 960 vertices, 1,920 triangles
   EncodeOptions options;
   options.target_rms_rel = 3e-3;
-  options.reconstruction = kGabReconstructionIterative;
+  options.solver = Solver::kIterative;
   EncodeStats es;
   const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
   // The mesh alone: 150 * 960 + 12 * 1,920 = 167,040 bytes; with the
@@ -97,15 +97,71 @@ TEST(IterativeOperator, OptionErrors) {
   const Mesh mesh = bumpy_torus(12, 8);
   EncodeOptions options;
   options.target_rms_rel = 1e-3;
-  options.reconstruction = kGabReconstructionIterative;
+  options.solver = Solver::kIterative;
   options.refine = true;
   std::vector<uint8_t> file;
   EncodeStats es;
   EXPECT_EQ(encode_mesh(mesh, options, &file, &es).message(),
             "the refinement chunk needs the global reconstruction operator");
   options.refine = false;
-  options.reconstruction = 2;
+  options.solver = static_cast<Solver>(7);
   EXPECT_EQ(encode_mesh(mesh, options, &file, &es).message(), "unknown reconstruction operator");
+}
+
+// Single precision steps at any magnitude: the residual is scaled by a
+// power of two, so a mesh scaled by 2^k (coordinates near 1e90 or 1e-90,
+// far outside float's range) codes to the same error, and a weight whose
+// square overflows a float (w = 1e30) still decodes to the encoder's shape.
+TEST(IterativeOperator, AnyMagnitudeAndWeight) {
+  const Mesh mesh = bumpy_torus(24, 16);
+  EncodeOptions options;
+  options.target_rms_rel = 2e-3;
+  options.solver = Solver::kIterative;
+  EncodeStats base;
+  const std::vector<uint8_t> file = encode_or_die(mesh, options, &base);
+  for (int exponent : {300, -300}) {
+    Mesh scaled = mesh;
+    for (double& x : scaled.positions) x = std::ldexp(x, exponent);
+    EncodeStats es;
+    const std::vector<uint8_t> scaled_file = encode_or_die(scaled, options, &es);
+    EXPECT_EQ(es.anchors, base.anchors) << exponent;
+    EXPECT_NEAR(es.rms_rel, base.rms_rel, 1e-9 * base.rms_rel) << exponent;
+    DecodeStats ds;
+    const Mesh out = decode_or_die(scaled_file, DecodeOptions(), &ds);
+    EXPECT_NEAR(relative_rms(scaled, out), es.rms_rel, 1e-12 * es.rms_rel) << exponent;
+  }
+  options.weight = 1e30;
+  EncodeStats heavy;
+  const std::vector<uint8_t> heavy_file = encode_or_die(mesh, options, &heavy);
+  DecodeStats ds;
+  const Mesh out = decode_or_die(heavy_file, DecodeOptions(), &ds);
+  EXPECT_NEAR(relative_rms(mesh, out), heavy.rms_rel, 1e-12 * heavy.rms_rel);
+  EXPECT_LE(heavy.rms_rel, 2e-3);
+}
+
+// The default (Solver::kAuto) is the iterative operator, or the global one
+// when the refinement chunk is asked for; the file and the stats say which.
+TEST(IterativeOperator, IsTheDefaultUnlessTheRefinementNeedsTheGlobalOne) {
+  const Mesh mesh = bumpy_torus(16, 10);
+  for (bool refine : {false, true}) {
+    EncodeOptions options;
+    options.target_rms_rel = 1e-3;
+    options.refine = refine;
+    EncodeStats es;
+    const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
+    ASSERT_GT(file.size(), 12u);
+    EXPECT_EQ(file[12], refine ? kGabReconstructionGlobal : kGabReconstructionIterative);
+    EXPECT_EQ(es.solver, refine ? Solver::kGlobal : Solver::kIterative);
+    DecodeStats ds;
+    decode_or_die(file, DecodeOptions(), &ds);
+    EXPECT_EQ(ds.solver, es.solver);
+  }
+  EncodeOptions global;
+  global.target_rms_rel = 1e-3;
+  global.solver = Solver::kGlobal;
+  EncodeStats es;
+  EXPECT_EQ(encode_or_die(mesh, global, &es)[12], kGabReconstructionGlobal);
+  EXPECT_EQ(es.solver, Solver::kGlobal);
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "gab/codec/gab_format.h"
 #include "gab/codec/matrix_ordering.h"
 #include "gab/mesh/mesh.h"
 #include "gab/status.h"
@@ -74,6 +75,7 @@ struct DecodeStats {
   int32_t refactorizations = 0;  // chunks added by refactoring rather than updates
   int32_t skipped_sections = 0;  // trailing sections of kinds this build does not know (gab_format.h)
   Ordering ordering = Ordering::kAmd;  // the factorization's ordering (never kAuto)
+  Solver solver = Solver::kGlobal;     // the file's reconstruction operator (never kAuto)
   int64_t matrix_entries = 0;          // the least-squares matrix's lower triangle, bounded from the connectivity
   int64_t factor_entries = 0;          // the factor's stored entries (0 before chunk 0 is decoded)
   int64_t memory_limit = 0;            // the budget the decode ran under (DecodeOptions::max_memory resolved)

@@ -90,10 +90,8 @@ struct EncodeOptions {
   // The factorizations' ordering (matrix_ordering.h), recorded in the file: a matter of speed (files from
   // different orderings differ by rounding-level choices of the greedy loop only).
   Ordering ordering = Ordering::kAuto;
-  // The reconstruction operator, recorded in the file (gab_format.h, header byte 12):
-  // kGabReconstructionGlobal (the paper's factored least squares) or kGabReconstructionIterative
-  // (in development: linear-cost conjugate-gradient steps; not with `refine`).
-  uint8_t reconstruction = kGabReconstructionGlobal;
+  // The reconstruction operator, recorded in the file (gab_format.h, header byte 12).
+  Solver solver = Solver::kAuto;
   std::function<void(int32_t, double)> progress;  // after every reconstruction: (anchors so far, relative RMS)
 };
 
@@ -141,6 +139,7 @@ struct EncodeStats {
   std::vector<GreedyStep> curve;  // after every greedy step
   std::vector<int32_t> chunk_anchors;  // anchors per chunk
   Ordering ordering = Ordering::kAmd;  // the factorizations' ordering (never kAuto)
+  Solver solver = Solver::kIterative;  // the reconstruction operator of the file (never kAuto)
   std::vector<Candidate> candidates;   // in the order coded
   double encode_s = 0;
 };

@@ -22,6 +22,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 namespace gab {
 
@@ -51,10 +52,20 @@ constexpr uint8_t kGabOrderingNestedDissection = 1;
 // The reconstruction operator R(anchors) -> shape that encoder and decoder
 // share (header byte 12). 0: the paper's global relaxed least squares,
 // factored. 1: the same system by a fixed number of conjugate-gradient steps
-// per shape, linear in n (docs/format.md) -- in development: its definition
-// may still change, and only EncodeOptions::reconstruction makes such files.
+// per shape, linear in n (docs/format.md 5.2.1).
 constexpr uint8_t kGabReconstructionGlobal = 0;
 constexpr uint8_t kGabReconstructionIterative = 1;
+
+// The operator as an option (EncodeOptions::solver) and in the stats.
+// kIterative: cost linear in n, memory a few arrays per vertex. kGlobal:
+// files a few percent smaller, decodes several times slower in several
+// times the memory (a factor), and the only one with the refinement chunk.
+// kAuto: kIterative, or kGlobal when the refinement chunk is asked for.
+enum class Solver { kAuto, kGlobal, kIterative };
+// "auto", "global", "iterative": the names the CLI, its JSON and Python use.
+const char* solver_name(Solver solver);
+// The solver a name gives; false for any other name.
+bool parse_solver(const std::string& name, Solver* solver);
 
 // The largest anchor weight and coordinate magnitude a file holds: w^2
 // times a coordinate, the relaxed system's right-hand side, stays finite
