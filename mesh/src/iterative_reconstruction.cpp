@@ -5,6 +5,7 @@
 #include <condition_variable>
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <mutex>
 #include <string>
 #include <system_error>
@@ -27,6 +28,15 @@ namespace {
 #endif
 typedef float v4f __attribute__((vector_size(16)));
 typedef double v4d __attribute__((vector_size(32)));
+
+// x rounded to single precision; past its range, the infinity of x's sign
+// (a plain conversion would be undefined there), which a decoder then
+// refuses as a non-finite shape.
+float to_float(double x) {
+  if (x > std::numeric_limits<float>::max()) return std::numeric_limits<float>::infinity();
+  if (x < -std::numeric_limits<float>::max()) return -std::numeric_limits<float>::infinity();
+  return static_cast<float>(x);
+}
 
 // The threads of one solve: run(job) calls job(begin, end, b) for every
 // block b of kBlock vertices (vertices [begin, end)), each member of the team
@@ -359,7 +369,8 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
         // At an anchor, w^2 p in double: w^2 may be past single precision's
         // range (the format allows w up to 1e100), where p is then 0.
         if (anchor_of[v] >= 0) {
-          qv = __builtin_convertvector(__builtin_convertvector(qv, v4d) + w2 * __builtin_convertvector(p[v], v4d), v4f);
+          const v4d exact = __builtin_convertvector(qv, v4d) + w2 * __builtin_convertvector(p[v], v4d);
+          qv = __builtin_convertvector(exact, v4f);
         }
         q[v] = qv;
         return p[v] * qv;
@@ -368,7 +379,7 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
     const v4d pq = total();
     // A column already solved exactly (rz or pq zero) stays as it is.
     v4f alpha = {0.0f, 0.0f, 0.0f, 0.0f};
-    for (int c = 0; c < 3; ++c) alpha[c] = (pq[c] > 0.0 && rz[c] > 0.0) ? static_cast<float>(rz[c] / pq[c]) : 0.0f;
+    for (int c = 0; c < 3; ++c) alpha[c] = (pq[c] > 0.0 && rz[c] > 0.0) ? to_float(rz[c] / pq[c]) : 0.0f;
     // correction += alpha p; r -= alpha q; z = M^-1 r (into t, free now);
     // per block the sums of r z.
     team.run([&](int32_t begin, int32_t end, int32_t b) {
@@ -383,7 +394,7 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
     });
     const v4d rz_next = total();
     v4f beta = {0.0f, 0.0f, 0.0f, 0.0f};
-    for (int c = 0; c < 3; ++c) beta[c] = rz[c] > 0.0 ? static_cast<float>(rz_next[c] / rz[c]) : 0.0f;
+    for (int c = 0; c < 3; ++c) beta[c] = rz[c] > 0.0 ? to_float(rz_next[c] / rz[c]) : 0.0f;
     rz = rz_next;
     // p = z + beta p.
     team.run([&](int32_t begin, int32_t end, int32_t) {
