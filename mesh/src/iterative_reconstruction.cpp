@@ -279,20 +279,15 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
       *sum += __builtin_convertvector(s, v4d);
     }
   };
-  // The recurrences' vectors in single precision, a vertex's three columns
-  // and a zero lane in 16 bytes (one load per neighbour in the products):
-  // floats move half the bytes of doubles and the steps are bound by moving
-  // them. The shape and the first residual stay double: the steps' rounding
-  // bends only the correction they add, not the shape it is added to.
-  std::vector<v4f> r(n), p(n), q(n), t(n);
-  std::vector<float> inv_diag(n);  // 1 / diag(L^T L + w^2 S); (L^T L)_vv = d^2 + d
   // The steps run on the residual scaled by a power of two, `scale`, that
   // brings its largest entry into [0.5, 1): single precision then neither
   // overflows nor underflows whatever the coordinates' magnitude, and the
   // scaling itself rounds nothing. The correction is divided by it at the end.
   double scale = 1.0;
+  // r = w^2 S c - (L^T L + w^2 S) x, in double (L x first, freed after),
+  // and per block its largest |entry| (a maximum is the same in any order).
+  std::vector<v4d> residual(n);
   {
-    // r = w^2 S c - (L^T L + w^2 S) x, in double (L x first).
     std::vector<v4d> lx(n);
     auto x_of = [x](int32_t v) { return v4d{x[3 * v], x[3 * v + 1], x[3 * v + 2], 0.0}; };
     team.run([&](int32_t begin, int32_t end, int32_t) {
@@ -302,45 +297,47 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
         lx[v] = s;
       }
     });
-    auto residual_of = [&](int32_t v) {
-      const double d = offsets[v + 1] - offsets[v];
-      v4d s = d * lx[v];
-      for (int32_t e = offsets[v]; e < offsets[v + 1]; ++e) s -= lx[neighbors[e]];
-      v4d rv = -s;
-      const int32_t a = anchor_of[v];
-      if (a >= 0) {
-        const double* c = &coefficients_[3 * static_cast<size_t>(a)];
-        rv += w2 * (v4d{c[0], c[1], c[2], 0.0} - x_of(v));
-      }
-      return rv;
-    };
-    // The largest |r| (per block, then over the blocks: a maximum is the
-    // same in any order), then r itself again, scaled and rounded.
     team.run([&](int32_t begin, int32_t end, int32_t b) {
       double largest = 0.0;
       for (int32_t v = begin; v < end; ++v) {
-        const v4d rv = residual_of(v);
+        v4d s = static_cast<double>(offsets[v + 1] - offsets[v]) * lx[v];
+        for (int32_t e = offsets[v]; e < offsets[v + 1]; ++e) s -= lx[neighbors[e]];
+        v4d rv = -s;
+        const int32_t a = anchor_of[v];
+        if (a >= 0) {
+          const double* c = &coefficients_[3 * static_cast<size_t>(a)];
+          rv += w2 * (v4d{c[0], c[1], c[2], 0.0} - x_of(v));
+        }
+        residual[v] = rv;
         for (int c = 0; c < 3; ++c) largest = std::max(largest, std::fabs(rv[c]));
       }
       partial[b] = v4d{largest, 0.0, 0.0, 0.0};
     });
-    double largest = 0.0;
-    for (int32_t b = 0; b < blocks; ++b) largest = std::max(largest, partial[b][0]);
-    if (largest > 0.0 && std::isfinite(largest)) {
-      int exponent = 0;
-      std::frexp(largest, &exponent);  // largest = m 2^exponent, m in [0.5, 1)
-      scale = std::ldexp(1.0, -exponent);
-    }
-    team.run([&](int32_t begin, int32_t end, int32_t b) {
-      block_sum(begin, end, [&](int32_t v) {
-        const double d = offsets[v + 1] - offsets[v];
-        inv_diag[v] = static_cast<float>(1.0 / (d * d + d + (anchor_of[v] >= 0 ? w2 : 0.0)));
-        r[v] = __builtin_convertvector(scale * residual_of(v), v4f);
-        p[v] = inv_diag[v] * r[v];
-        return r[v] * p[v];
-      }, &partial[b]);
-    });
   }
+  double largest = 0.0;
+  for (int32_t b = 0; b < blocks; ++b) largest = std::max(largest, partial[b][0]);
+  if (largest > 0.0 && std::isfinite(largest)) {
+    int exponent = 0;
+    std::frexp(largest, &exponent);  // largest = m 2^exponent, m in [0.5, 1)
+    scale = std::ldexp(1.0, -exponent);
+  }
+  // The recurrences' vectors in single precision, a vertex's three columns
+  // and a zero lane in 16 bytes (one load per neighbour in the products):
+  // floats move half the bytes of doubles and the steps are bound by moving
+  // them. The shape and the first residual stay double: the steps' rounding
+  // bends only the correction they add, not the shape it is added to.
+  std::vector<v4f> r(n), p(n), q(n), t(n);
+  std::vector<float> inv_diag(n);  // 1 / diag(L^T L + w^2 S); (L^T L)_vv = d^2 + d
+  team.run([&](int32_t begin, int32_t end, int32_t b) {
+    block_sum(begin, end, [&](int32_t v) {
+      const double d = offsets[v + 1] - offsets[v];
+      inv_diag[v] = static_cast<float>(1.0 / (d * d + d + (anchor_of[v] >= 0 ? w2 : 0.0)));
+      r[v] = __builtin_convertvector(scale * residual[v], v4f);
+      p[v] = inv_diag[v] * r[v];
+      return r[v] * p[v];
+    }, &partial[b]);
+  });
+  std::vector<v4d>().swap(residual);
   v4d rz = total();
   // (L in)_v: the neighbours summed in two chains (even and odd places),
   // which halves the wait on the additions.
