@@ -62,12 +62,16 @@ int run_info(int argc, char** argv) {
   }
   std::printf("%s: .gab version %d, %d vertices, %d triangles%s\n", in.c_str(), info.version, info.num_vertices,
               info.num_triangles, info.geometry_only ? " (geometry only: decode with --connectivity MESH)" : "");
-  std::printf("%d anchors in %d chunks%s%s; q = %d bits, w = %g, ordered by %s%s\n", info.anchors, info.chunks,
+  // The ordering is the global solver's: an iterative file's means nothing.
+  const std::string solver = info.reconstruction == kGabReconstructionIterative
+                                 ? "iterative reconstruction"
+                                 : std::string("ordered by ") +
+                                       (info.ordering == Ordering::kNestedDissection ? "nested dissection" : "AMD") +
+                                       "; global reconstruction";
+  std::printf("%d anchors in %d chunks%s%s; q = %d bits, w = %g, %s\n", info.anchors, info.chunks,
               info.levels ? " (chunk 0 codes the anchor set, later chunks are the decoder's levels)" : "",
               info.truncated ? (" (truncated: " + std::to_string(info.chunks_present) + " complete)").c_str() : "",
-              info.bits, info.weight,
-              info.ordering == Ordering::kNestedDissection ? "nested dissection" : "AMD",
-              info.reconstruction == kGabReconstructionIterative ? "; iterative reconstruction" : "; global reconstruction");
+              info.bits, info.weight, solver.c_str());
   std::printf("%zu bytes: geometry %zu (%.3f bits/vertex), connectivity %zu (%s)", info.bytes, info.geometry_bytes,
               bpv, info.connectivity_bytes,
               info.geometry_only ? "a hash" : "valence coded");
