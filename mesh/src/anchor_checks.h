@@ -24,14 +24,19 @@ inline Status check_anchor_coefficients(size_t anchors, const std::vector<double
   return Status::Ok();
 }
 
+// "vertex V is already an anchor": what check_new_anchors says of a vertex
+// that is one, unless the reconstruction names its kinds of anchor.
+inline std::string already_an_anchor(int32_t v, int) { return "vertex " + std::to_string(v) + " is already an anchor"; }
+
 // New anchors with their coefficients (check_anchor_coefficients) for a
 // reconstruction whose per-vertex `state` is `free` for a vertex that is not
-// an anchor: each anchor a vertex, not an anchor yet, not given twice; the
-// first problem in the given order is named. New anchors are marked `mark`
-// while checking, then set back to `free`. O(anchors).
-template <class T>
+// an anchor: each anchor a vertex, not an anchor yet (`taken(v, state)` says
+// what it is), not given twice; the first problem in the given order is
+// named. New anchors are marked `mark` while checking, then set back to
+// `free`. O(anchors).
+template <class T, class Taken = std::string (*)(int32_t, int)>
 Status check_new_anchors(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients,
-                         std::vector<T>* state, T free, T mark) {
+                         std::vector<T>* state, T free, T mark, Taken taken = already_an_anchor) {
   GAB_RETURN_IF_ERROR(check_anchor_coefficients(anchors.size(), coefficients));
   const int32_t n = static_cast<int32_t>(state->size());
   Status status;
@@ -44,9 +49,8 @@ Status check_new_anchors(const std::vector<int32_t>& anchors, const std::vector<
       break;
     }
     if ((*state)[a] != free) {
-      status = Status::Error(StatusCode::kInvalidArgument, (*state)[a] == mark
-                                                               ? "anchor " + std::to_string(a) + " given twice"
-                                                               : "vertex " + std::to_string(a) + " is already an anchor");
+      status = Status::Error(StatusCode::kInvalidArgument, (*state)[a] == mark ? "anchor " + std::to_string(a) + " given twice"
+                                                                                : taken(a, (*state)[a]));
       break;
     }
     (*state)[a] = mark;

@@ -13,30 +13,9 @@ namespace gab {
 
 Status InterpolatoryReconstruction::check_new(const std::vector<int32_t>& anchors,
                                               const std::vector<double>& coefficients) {
-  GAB_RETURN_IF_ERROR(check_anchor_coefficients(anchors.size(), coefficients));
-  // Mark the new anchors kChecking while checking, then restore them.
-  const int32_t n = num_vertices();
-  Status status;
-  size_t marked = 0;
-  for (; marked < anchors.size(); ++marked) {
-    const int32_t a = anchors[marked];
-    if (a < 0 || a >= n) {
-      status = Status::Error(StatusCode::kInvalidArgument,
-                             "anchor " + std::to_string(a) + " is not a vertex (n = " + std::to_string(n) + ")");
-      break;
-    }
-    if (kind_[a] != kFree) {
-      const std::string v = std::to_string(a);
-      status = Status::Error(StatusCode::kInvalidArgument,
-                             kind_[a] == kHard      ? "vertex " + v + " is a hard anchor"
-                             : kind_[a] == kRelaxed ? "vertex " + v + " is already a relaxed anchor"
-                                                    : "anchor " + v + " given twice");
-      break;
-    }
-    kind_[a] = kChecking;
-  }
-  for (size_t i = 0; i < marked; ++i) kind_[anchors[i]] = kFree;
-  return status;
+  return check_new_anchors<char>(anchors, coefficients, &kind_, kFree, kChecking, [](int32_t v, int kind) {
+    return "vertex " + std::to_string(v) + (kind == kHard ? " is a hard anchor" : " is already a relaxed anchor");
+  });
 }
 
 Status InterpolatoryReconstruction::init(const EdgeGraph& graph, const std::vector<int32_t>& hard_anchors,
