@@ -55,7 +55,7 @@ int run_info(int argc, char** argv) {
     o.add_bool("reordered", info.reordered);
     o.add("ordering", std::string(ordering_name(info.ordering)));
     o.add("reconstruction", static_cast<int64_t>(info.reconstruction));
-    o.add("solver", std::string(info.reconstruction == kGabReconstructionIterative ? "iterative" : "global"));
+    o.add("solver", std::string(solver_name(solver_of_header(info.reconstruction))));
     o.add("sections", static_cast<int64_t>(info.sections));
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
@@ -63,11 +63,13 @@ int run_info(int argc, char** argv) {
   std::printf("%s: .gab version %d, %d vertices, %d triangles%s\n", in.c_str(), info.version, info.num_vertices,
               info.num_triangles, info.geometry_only ? " (geometry only: decode with --connectivity MESH)" : "");
   // The ordering is the global solver's: an iterative file's means nothing.
-  const std::string solver = info.reconstruction == kGabReconstructionIterative
-                                 ? "iterative reconstruction"
-                                 : std::string("ordered by ") +
-                                       (info.ordering == Ordering::kNestedDissection ? "nested dissection" : "AMD") +
-                                       "; global reconstruction";
+  const Solver file_solver = solver_of_header(info.reconstruction);
+  const std::string solver =
+      (file_solver == Solver::kGlobal
+           ? std::string("ordered by ") + (info.ordering == Ordering::kNestedDissection ? "nested dissection" : "AMD") +
+                 "; "
+           : std::string()) +
+      solver_name(file_solver) + " reconstruction";
   std::printf("%d anchors in %d chunks%s%s; q = %d bits, w = %g, %s\n", info.anchors, info.chunks,
               info.levels ? " (chunk 0 codes the anchor set, later chunks are the decoder's levels)" : "",
               info.truncated ? (" (truncated: " + std::to_string(info.chunks_present) + " complete)").c_str() : "",

@@ -305,7 +305,7 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
   out.positions.assign(static_cast<size_t>(n) * 3, 0.0);
   const EdgeGraph graph = build_edge_graph(out);
   const bool factored = header.reconstruction == kGabReconstructionGlobal;
-  stats->solver = factored ? Solver::kGlobal : Solver::kIterative;
+  stats->solver = solver_of_header(header.reconstruction);
   if (!factored) {
     held += kBytesPerIterativeVertex * n;
     GAB_RETURN_IF_ERROR(check_memory(held, budget, mesh_size));

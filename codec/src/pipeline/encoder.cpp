@@ -242,7 +242,7 @@ Status finish(EncodeContext& ctx, Estimate* e, std::vector<uint8_t>* file, Encod
   stats->num_triangles = mesh.num_triangles();
   stats->bits = e->candidate.anchors.bits;
   stats->ordering = ctx.ordering.choice();
-  stats->solver = ctx.reconstruction == kGabReconstructionGlobal ? Solver::kGlobal : Solver::kIterative;
+  stats->solver = solver_of_header(ctx.reconstruction);
   stats->curve = selection.curve;
   stats->chunk_anchors = e->layout.chunk_anchors;
   stats->levels = e->levels;

@@ -14,6 +14,10 @@ const char* solver_name(Solver solver) {
   return "unknown";
 }
 
+Solver solver_of_header(int reconstruction) {
+  return reconstruction == kGabReconstructionIterative ? Solver::kIterative : Solver::kGlobal;
+}
+
 bool parse_solver(const std::string& name, Solver* solver) {
   for (Solver s : {Solver::kAuto, Solver::kGlobal, Solver::kIterative}) {
     if (name == solver_name(s)) {

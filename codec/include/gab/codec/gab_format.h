@@ -66,6 +66,9 @@ enum class Solver { kAuto, kGlobal, kIterative };
 const char* solver_name(Solver solver);
 // The solver a name gives; false for any other name.
 bool parse_solver(const std::string& name, Solver* solver);
+// The solver a header's operator code (byte 12, one the header check
+// accepted) stands for: kGlobal or kIterative.
+Solver solver_of_header(int reconstruction);
 
 // The largest anchor weight and coordinate magnitude a file holds: w^2
 // times a coordinate, the relaxed system's right-hand side, stays finite
