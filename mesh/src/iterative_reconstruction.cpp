@@ -160,6 +160,13 @@ Status IterativeReconstruction::init(const EdgeGraph& graph, double weight, cons
   GAB_RETURN_IF_ERROR(check_new(anchors, coefficients));
   GAB_RETURN_IF_ERROR(check_components_anchored(graph, anchors));
   record(anchors, coefficients);
+  if (rule_ == NearestRule::kFewestHopsLowest) {
+    hops_.assign(n_, std::numeric_limits<int32_t>::max());
+    nearest_.assign(n_, std::numeric_limits<int32_t>::max());
+    queued_.assign(n_, 0);
+    stamp_ = 0;
+    update_nearest(anchors);
+  }
   return Status::Ok();
 }
 
@@ -167,7 +174,45 @@ Status IterativeReconstruction::add_anchors(const std::vector<int32_t>& anchors,
                                             const std::vector<double>& coefficients) {
   GAB_RETURN_IF_ERROR(check_new(anchors, coefficients));
   record(anchors, coefficients);
+  update_nearest(anchors);
   return Status::Ok();
+}
+
+void IterativeReconstruction::update_nearest(const std::vector<int32_t>& anchors) {
+  if (rule_ != NearestRule::kFewestHopsLowest) return;
+  // Layer by layer from the new anchors, a vertex whose (hops, anchor) the
+  // layer lowers joins the next frontier. A vertex the new anchors do not
+  // reach first cannot pass them on: whoever is nearer to it is at least as
+  // near to its neighbours. Within a layer the lowest anchor wins whatever
+  // the frontier's order, so the result is the rule's.
+  const EdgeGraph& g = *graph_;
+  std::vector<int32_t> frontier, next;
+  for (int32_t a : anchors) {
+    hops_[a] = 0;
+    nearest_[a] = a;
+    frontier.push_back(a);
+  }
+  for (int32_t layer = 1; !frontier.empty(); ++layer) {
+    if (++stamp_ == 0) {  // the stamps wrapped: clear them
+      std::fill(queued_.begin(), queued_.end(), 0u);
+      stamp_ = 1;
+    }
+    next.clear();
+    for (int32_t u : frontier) {
+      const int32_t source = nearest_[u];
+      for (int32_t e = g.offsets[u]; e < g.offsets[u + 1]; ++e) {
+        const int32_t w = g.neighbors[e];
+        if (layer > hops_[w] || (layer == hops_[w] && source >= nearest_[w])) continue;
+        hops_[w] = layer;
+        nearest_[w] = source;
+        if (queued_[w] != stamp_) {
+          queued_[w] = stamp_;
+          next.push_back(w);
+        }
+      }
+    }
+    frontier.swap(next);
+  }
 }
 
 Status IterativeReconstruction::set_coefficients(int32_t first, const std::vector<double>& coefficients) {
@@ -192,6 +237,14 @@ Status IterativeReconstruction::set_start(const std::vector<double>& positions) 
 }
 
 std::vector<double> IterativeReconstruction::nearest_anchor_shape() const {
+  std::vector<double> shape(3 * static_cast<size_t>(n_));
+  if (rule_ == NearestRule::kFewestHopsLowest) {
+    for (int32_t v = 0; v < n_; ++v) {
+      const double* c = &coefficients_[3 * static_cast<size_t>(anchor_of_[nearest_[v]])];
+      std::copy(c, c + 3, shape.begin() + 3 * static_cast<std::ptrdiff_t>(v));
+    }
+    return shape;
+  }
   const EdgeGraph& g = *graph_;
   std::vector<int32_t> source(n_, -1), frontier = anchors_, next;
   std::sort(frontier.begin(), frontier.end());
@@ -208,12 +261,92 @@ std::vector<double> IterativeReconstruction::nearest_anchor_shape() const {
     }
     frontier.swap(next);
   }
-  std::vector<double> shape(3 * static_cast<size_t>(n_));
   for (int32_t v = 0; v < n_; ++v) {
     const double* c = &coefficients_[3 * static_cast<size_t>(source[v])];
     std::copy(c, c + 3, shape.begin() + 3 * static_cast<std::ptrdiff_t>(v));
   }
   return shape;
+}
+
+Status IterativeReconstruction::start_at(const std::vector<int32_t>& at, std::vector<double>* positions) {
+  if (graph_ == nullptr) return Status::Error(StatusCode::kInvalidArgument, "start_at before init");
+  if (rule_ != NearestRule::kFewestHopsLowest) {
+    return Status::Error(StatusCode::kInvalidArgument, "start_at needs the fewest-hops nearest rule");
+  }
+  const size_t n = static_cast<size_t>(n_);
+  if (positions->size() != 3 * n) return Status::Error(StatusCode::kInvalidArgument, "positions need 3 per vertex");
+  for (int32_t v : at) {
+    if (v < 0 || v >= n_) return Status::Error(StatusCode::kInvalidArgument, "start_at: vertex out of range");
+  }
+  const EdgeGraph& g = *graph_;
+  if (reached_.size() != n) {
+    reached_.assign(n, 0);
+    from_.resize(3 * n);
+    to_.resize(3 * n);
+    call_ = 0;
+  }
+  if (++call_ == 0) {  // the marks wrapped: clear them
+    std::fill(reached_.begin(), reached_.end(), 0u);
+    call_ = 1;
+  }
+  // The vertices within kStartSweeps hops of `at`, layer by layer:
+  // region[0, layer_end[d]) are those within d hops.
+  std::vector<int32_t> region;
+  size_t layer_end[kStartSweeps + 1];
+  for (int32_t v : at) {
+    if (reached_[v] == call_) continue;
+    reached_[v] = call_;
+    region.push_back(v);
+  }
+  layer_end[0] = region.size();
+  for (int d = 1, begin = 0; d <= kStartSweeps; ++d) {
+    const size_t end = layer_end[d - 1];
+    for (size_t i = static_cast<size_t>(begin); i < end; ++i) {
+      const int32_t u = region[i];
+      for (int32_t e = g.offsets[u]; e < g.offsets[u + 1]; ++e) {
+        const int32_t w = g.neighbors[e];
+        if (reached_[w] == call_) continue;
+        reached_[w] = call_;
+        region.push_back(w);
+      }
+    }
+    begin = static_cast<int>(end);
+    layer_end[d] = region.size();
+  }
+  for (int32_t v : region) {
+    const double* c = &coefficients_[3 * static_cast<size_t>(anchor_of_[nearest_[v]])];
+    std::copy(c, c + 3, from_.begin() + 3 * static_cast<std::ptrdiff_t>(v));
+  }
+  // Sweep s needs its values within kStartSweeps - s hops of `at` and reads
+  // one hop further: the sweeps of solve's start, each vertex's sum in the
+  // same order, so the same values.
+  const int32_t* offsets = g.offsets.data();
+  const int32_t* neighbors = g.neighbors.data();
+  for (int sweep = 1; sweep <= kStartSweeps; ++sweep) {
+    const double* from = from_.data();
+    double* to = to_.data();
+    const size_t end = layer_end[kStartSweeps - sweep];
+    for (size_t i = 0; i < end; ++i) {
+      const int32_t v = region[i];
+      const int32_t first = offsets[v], last = offsets[v + 1];
+      if (anchor_of_[v] >= 0 || first == last) {
+        std::copy(from + 3 * static_cast<size_t>(v), from + 3 * static_cast<size_t>(v) + 3,
+                  to + 3 * static_cast<size_t>(v));
+        continue;
+      }
+      double sum[3] = {0.0, 0.0, 0.0};
+      for (int32_t e = first; e < last; ++e) {
+        for (int c = 0; c < 3; ++c) sum[c] += from[3 * static_cast<size_t>(neighbors[e]) + c];
+      }
+      for (int c = 0; c < 3; ++c) to[3 * static_cast<size_t>(v) + c] = sum[c] / (last - first);
+    }
+    from_.swap(to_);
+  }
+  for (int32_t v : at) {
+    std::copy(from_.begin() + 3 * static_cast<std::ptrdiff_t>(v), from_.begin() + 3 * static_cast<std::ptrdiff_t>(v) + 3,
+              positions->begin() + 3 * static_cast<std::ptrdiff_t>(v));
+  }
+  return Status::Ok();
 }
 
 Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positions) {

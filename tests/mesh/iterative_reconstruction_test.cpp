@@ -2,6 +2,7 @@
 // (iterative_reconstruction.h), against the factored global solve.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -98,6 +99,80 @@ TEST(IterativeReconstructionTest, TheStartPutsEachVertexAtItsNearestAnchor) {
     for (int k = 0; k < 3; ++k) EXPECT_EQ(x[3 * v + k], first ? c[k] : c[3 + k]) << v;
   }
   EXPECT_GT(ties, 0);
+}
+
+TEST(IterativeReconstructionTest, TheFewestHopsRuleTakesTheNearestThenTheLowestAnchor) {
+  // kFewestHopsLowest: the anchor fewest hops away, the lowest vertex index
+  // among equals; the same whether the anchors come at once or in batches
+  // (the map is updated where each batch is nearer), in any order.
+  const Mesh m = testing_util::bumpy_torus(16, 10);
+  const EdgeGraph g = build_edge_graph(m);
+  const int32_t n = m.num_vertices();
+  const std::vector<int32_t> anchors = {97, 3, 150, 41, 120, 8, 64, 159, 30};
+  std::vector<std::vector<int32_t>> hops;
+  for (int32_t a : anchors) hops.push_back(hops_from(g, a));
+  std::vector<double> c(3 * anchors.size());
+  for (size_t i = 0; i < c.size(); ++i) c[i] = static_cast<double>(i);
+  auto expected = [&](size_t count) {  // the rule over the first `count` anchors, by brute force
+    std::vector<double> x(3 * static_cast<size_t>(n));
+    int ties = 0;
+    for (int32_t v = 0; v < n; ++v) {
+      size_t best = 0;
+      for (size_t i = 1; i < count; ++i) {
+        const bool nearer = hops[i][v] < hops[best][v];
+        ties += hops[i][v] == hops[best][v];
+        if (nearer || (hops[i][v] == hops[best][v] && anchors[i] < anchors[best])) best = i;
+      }
+      for (int k = 0; k < 3; ++k) x[3 * v + k] = c[3 * best + k];
+    }
+    EXPECT_GT(ties, 0) << count;
+    return x;
+  };
+  IterativeReconstruction whole;
+  whole.set_nearest_rule(IterativeReconstruction::NearestRule::kFewestHopsLowest);
+  ASSERT_TRUE(whole.init(g, 100, anchors, c).ok());
+  EXPECT_EQ(whole.nearest_anchor_shape(), expected(anchors.size()));
+  IterativeReconstruction batches;
+  batches.set_nearest_rule(IterativeReconstruction::NearestRule::kFewestHopsLowest);
+  ASSERT_TRUE(batches.init(g, 100, {anchors.begin(), anchors.begin() + 2}, {c.begin(), c.begin() + 6}).ok());
+  EXPECT_EQ(batches.nearest_anchor_shape(), expected(2));
+  for (size_t first = 2; first < anchors.size(); first += 3) {
+    const size_t last = std::min(anchors.size(), first + 3);
+    ASSERT_TRUE(batches
+                    .add_anchors({anchors.begin() + first, anchors.begin() + last},
+                                 {c.begin() + 3 * first, c.begin() + 3 * last})
+                    .ok());
+    EXPECT_EQ(batches.nearest_anchor_shape(), expected(last)) << last;
+  }
+}
+
+TEST(IterativeReconstructionTest, StartAtIsTheStartAtThoseVertices) {
+  // start_at evaluates the start (solve(0) after restart) around the given
+  // vertices only: the same values there, other entries untouched; before
+  // and after anchors join, for a few vertices and for all of them.
+  const Mesh m = testing_util::bumpy_torus(30, 20);
+  const EdgeGraph g = build_edge_graph(m);
+  const int32_t n = m.num_vertices();
+  const std::vector<int32_t> anchors = every(n, 37);
+  IterativeReconstruction rec;
+  rec.set_nearest_rule(IterativeReconstruction::NearestRule::kFewestHopsLowest);
+  ASSERT_TRUE(rec.init(g, 100, anchors, coefficients(m, anchors)).ok());
+  for (int round = 0; round < 2; ++round) {
+    std::vector<double> start;
+    rec.restart();
+    ASSERT_TRUE(rec.solve(0, &start).ok());
+    const std::vector<int32_t> few = {5, 300, 301, 599, 17};
+    std::vector<double> x(3 * static_cast<size_t>(n), -7.0);
+    ASSERT_TRUE(rec.start_at(few, &x).ok());
+    for (int32_t v = 0; v < n; ++v) {
+      const bool asked = std::find(few.begin(), few.end(), v) != few.end();
+      for (int k = 0; k < 3; ++k) EXPECT_EQ(x[3 * v + k], asked ? start[3 * v + k] : -7.0) << v;
+    }
+    ASSERT_TRUE(rec.start_at(every(n, 1), &x).ok());
+    EXPECT_EQ(x, start);
+    const std::vector<int32_t> more = every(n, 37, 11 + round);
+    ASSERT_TRUE(rec.add_anchors(more, coefficients(m, more)).ok());
+  }
 }
 
 TEST(IterativeReconstructionTest, ZeroStepsGiveTheStartAfterItsHarmonicSweeps) {
@@ -262,6 +337,13 @@ TEST(IterativeReconstructionTest, BadArgumentsNameTheProblem) {
   EXPECT_EQ(rec.add_anchors({9}, {1, 1, 1}).message(), "vertex 9 is already an anchor");
   EXPECT_EQ(rec.set_coefficients(1, std::vector<double>(6, 0)).message(), "coefficients past the last anchor");
   EXPECT_EQ(rec.solve(-1, &x).message(), "negative step count");
+  x.assign(3 * 18, 0.0);
+  EXPECT_EQ(rec.start_at({1}, &x).message(), "start_at needs the fewest-hops nearest rule");
+  rec.set_nearest_rule(IterativeReconstruction::NearestRule::kFewestHopsLowest);
+  ASSERT_TRUE(rec.init(g, 100, {0, 9}, std::vector<double>(6, 0)).ok());
+  EXPECT_EQ(rec.start_at({18}, &x).message(), "start_at: vertex out of range");
+  x.resize(5);
+  EXPECT_EQ(rec.start_at({1}, &x).message(), "positions need 3 per vertex");
 }
 
 }  // namespace

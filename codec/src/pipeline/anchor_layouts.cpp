@@ -62,7 +62,7 @@ Status encode_level_layout(const AnchorSchedule& schedule, const EdgeGraph& grap
     } else if (k > 0) {
       GAB_RETURN_IF_ERROR(levels.add_anchors(previous, grid.coefficients_of(previous)));
     }
-    if (k > 0 || from_spread) GAB_RETURN_IF_ERROR(levels.shape(&shape, true));
+    if (k > 0 || from_spread) GAB_RETURN_IF_ERROR(levels.prediction(&level, &shape));
     const double* prediction = k == 0 && !from_spread ? schedule.shapes[0].data() : shape.data();
     out->add(coder.encode_level(level, grid.index, prediction, graph), level);
     previous = std::move(level);

@@ -118,8 +118,10 @@ Status read_chunk_frame(ByteReader* in, int32_t chunk, ChunkDecoding* st, const 
 }
 
 // Anchors `anchors` of chunk `chunk` at grid indices `grid` (3 each) join
-// the reconstruction (chunk 0 factors it); the shape is then solved for if
-// `predict` (another chunk follows).
+// the reconstruction (chunk 0 factors it); then, if `predict` (the
+// selection layout, another chunk following), the prediction at every
+// vertex (that chunk's are not known before it is decoded; the level layout
+// predicts each level at its own vertices).
 Status add_chunk(int32_t chunk, const std::vector<int32_t>& anchors, const std::vector<int32_t>& grid, bool predict,
                  ChunkDecoding* st) {
   const Quantizer& q = st->quantizer;
@@ -149,7 +151,7 @@ Status add_chunk(int32_t chunk, const std::vector<int32_t>& anchors, const std::
   st->stats->chunks = chunk + 1;
   if (predict) {
     const auto t_solve = std::chrono::steady_clock::now();
-    GAB_RETURN_IF_ERROR(st->rec.shape(&st->shape, true));
+    GAB_RETURN_IF_ERROR(st->rec.prediction(nullptr, &st->shape));
     st->stats->solve_s += seconds_since(t_solve);
   }
   return Status::Ok();
@@ -207,7 +209,7 @@ Status decode_level_chunks(ByteReader* in, AnchorChunkCoder* coder, ChunkDecodin
   while (needed < sizes.size() && end < st->wanted) end += sizes[needed++];
   const int32_t last = sizes.empty() ? 0 : sizes.back();
   const int32_t picks = static_cast<int32_t>(std::min<int64_t>(end - plan.spread, plan.rest - last));
-  GAB_RETURN_IF_ERROR(add_chunk(0, spread, grid, needed > 0, st));
+  GAB_RETURN_IF_ERROR(add_chunk(0, spread, grid, false, st));
   std::vector<int32_t> order;
   GAB_RETURN_IF_ERROR(level_order(st->graph, spread, rest, picks, &order));
   LevelMembers members(order, rest, header.num_vertices);
@@ -217,9 +219,12 @@ Status decode_level_chunks(ByteReader* in, AnchorChunkCoder* coder, ChunkDecodin
     if (!payload) break;
     std::vector<int32_t> level = members.next(sizes, k);
     if (static_cast<int32_t>(level.size()) > st->wanted - st->decoded) level.resize(st->wanted - st->decoded);
+    const auto t_solve = std::chrono::steady_clock::now();
+    GAB_RETURN_IF_ERROR(st->rec.prediction(&level, &st->shape));
+    st->stats->solve_s += seconds_since(t_solve);
     s = coder->decode_level(payload, payload_size, level, st->shape.data(), st->graph, &grid);
     if (!s.ok()) return corrupt("chunk " + std::to_string(chunk) + ": " + s.message());
-    GAB_RETURN_IF_ERROR(add_chunk(chunk, level, grid, k + 1 < needed, st));
+    GAB_RETURN_IF_ERROR(add_chunk(chunk, level, grid, false, st));
   }
   return Status::Ok();
 }

@@ -105,7 +105,7 @@ std::vector<uint8_t> assemble_file(const GabHeader& header, const Mesh& mesh, co
 // iterative operator unless the refinement chunk needs the global one).
 uint8_t reconstruction_of(const EncodeOptions& o) {
   const bool global = o.solver == Solver::kGlobal || (o.solver == Solver::kAuto && o.refine);
-  return global ? kGabReconstructionGlobal : kGabReconstructionIterative;
+  return global ? kGabReconstructionGlobal : kGabReconstructionIterativeLocal;
 }
 
 // What every candidate of one encode shares, built once.

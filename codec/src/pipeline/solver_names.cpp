@@ -15,7 +15,7 @@ const char* solver_name(Solver solver) {
 }
 
 Solver solver_of_header(int reconstruction) {
-  return reconstruction == kGabReconstructionIterative ? Solver::kIterative : Solver::kGlobal;
+  return reconstruction == kGabReconstructionGlobal ? Solver::kGlobal : Solver::kIterative;
 }
 
 bool parse_solver(const std::string& name, Solver* solver) {

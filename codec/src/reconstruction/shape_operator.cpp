@@ -13,9 +13,17 @@ int32_t iterative_steps(int32_t n, int32_t k, const IterativeSteps& rule) {
   return static_cast<int32_t>(std::min<double>(steps, rule.most));
 }
 
+int32_t local_prediction_steps(int32_t n, int32_t k) {
+  if (n > kLocalPredictionMostVertices) return 0;
+  return std::min(iterative_steps(n, k, kIterativePredictionSteps), kLocalPredictionStepBudget / std::max(n, 1));
+}
+
 ShapeOperator::ShapeOperator(uint8_t code) : code_(code) {
-  if (code == kGabReconstructionIterative) {
+  if (code == kGabReconstructionIterative || code == kGabReconstructionIterativeLocal) {
     iterative_ = std::make_unique<IterativeReconstruction>();
+    if (code == kGabReconstructionIterativeLocal) {
+      iterative_->set_nearest_rule(IterativeReconstruction::NearestRule::kFewestHopsLowest);
+    }
   } else {
     global_ = std::make_unique<RelaxedReconstruction>();
   }
@@ -51,11 +59,30 @@ Status ShapeOperator::set_coefficients(int32_t first, const std::vector<double>&
   return global_ ? global_->set_coefficients(first, coefficients) : iterative_->set_coefficients(first, coefficients);
 }
 
-Status ShapeOperator::shape(std::vector<double>* positions, bool prediction) {
+Status ShapeOperator::shape(std::vector<double>* positions) {
   if (global_) return global_->reconstruct(positions);
   iterative_->restart();
-  const IterativeSteps& rule = prediction ? kIterativePredictionSteps : kIterativeFinalSteps;
-  return iterative_->solve(iterative_steps(iterative_->num_vertices(), iterative_->num_anchors(), rule), positions);
+  return iterative_->solve(
+      iterative_steps(iterative_->num_vertices(), iterative_->num_anchors(), kIterativeFinalSteps), positions);
+}
+
+Status ShapeOperator::prediction(const std::vector<int32_t>* at, std::vector<double>* positions) {
+  if (global_) return global_->reconstruct(positions);
+  if (code_ == kGabReconstructionIterative) {
+    iterative_->restart();
+    return iterative_->solve(
+        iterative_steps(iterative_->num_vertices(), iterative_->num_anchors(), kIterativePredictionSteps), positions);
+  }
+  const int32_t steps = local_prediction_steps(iterative_->num_vertices(), iterative_->num_anchors());
+  if (steps > 0) {
+    iterative_->restart();
+    return iterative_->solve(steps, positions);
+  }
+  positions->resize(3 * static_cast<size_t>(iterative_->num_vertices()));
+  if (at) return iterative_->start_at(*at, positions);
+  std::vector<int32_t> all(iterative_->num_vertices());
+  for (size_t v = 0; v < all.size(); ++v) all[v] = static_cast<int32_t>(v);
+  return iterative_->start_at(all, positions);
 }
 
 Status ShapeOperator::greedy_shape(std::vector<double>* positions) {

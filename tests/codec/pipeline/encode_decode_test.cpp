@@ -423,12 +423,14 @@ TEST(EncodeDecode, OptionErrors) {
 TEST(EncodeDecode, TheEncodersGridFollowsTheTarget) {
   // bits = 0: q from the error target, finer for a tighter one, the grid's
   // own RMS (step / 2 over the diagonal) inside the target; 12 for an anchor
-  // count alone.
+  // count alone. (The anchors' grid alone: a detail layer may sit on a
+  // coarser one, its own finer.)
   const Mesh mesh = bumpy_torus(40, 20);
   int previous_bits = 0;
   for (double target : {3e-3, 3e-4}) {
     EncodeOptions options;
     options.target_rms_rel = target;
+    options.detail = DetailMode::kOff;
     EncodeStats es;
     const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
     EXPECT_TRUE(es.target_met) << target;

@@ -255,7 +255,9 @@ TEST(FileSafety, HeaderErrorsNameTheProblem) {
     const char* message;
   } newer[] = {
       {11, 2, "unsupported .gab ordering 2 (this build knows 0: amd, 1: nd)"},
-      {12, 2, "unsupported .gab reconstruction operator 2 (this build knows 0: global least squares, 1: iterative)"},
+      {12, 3,
+       "unsupported .gab reconstruction operator 3 (this build knows 0: global least squares, 1: iterative, 2: "
+       "iterative, local predictions)"},
       {13, 7, "unsupported .gab header: reserved byte 13 is 0x07"},
   };
   for (const auto& n : newer) {

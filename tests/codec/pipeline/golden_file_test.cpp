@@ -2,10 +2,11 @@
 // seeds in tests/fuzz/corpus/gab (a leading options byte, then a file that
 // tests/fuzz/make_gab_seeds.sh made with `gab compress` from
 // gab_fuzz::seed_torus), one per variant the format has (each flag, both
-// layouts, both orderings, both solvers, geometry only, the detail chunk,
-// prefixes).
+// layouts, both orderings, every reconstruction operator, geometry only, the
+// detail chunk, prefixes).
 // Each seed must keep its bytes, keep decoding to its pinned shape, and be
-// what the encoder writes today for its options. A change that fails here
+// what the encoder writes today for its options (but operator 1's, which it
+// no longer writes: an earlier encoder's, decoded as they are). A change that fails here
 // is a format change: version 2 files exist, so it needs a new version or
 // a new value in a reserved header field (docs/format.md), not new seeds.
 #include <dirent.h>
@@ -86,7 +87,8 @@ struct Golden {
   uint8_t flags;       // header byte 9
   int bits, anchors, chunks;
   double rms_rel;       // of the decoded shape against seed_torus, in its numbering
-  const char* options;  // make_gab_seeds.sh's for the file
+  const char* options;  // make_gab_seeds.sh's for the file; null: operator 1's, not written today
+  bool large = false;   // made from large_seed_torus, not seed_torus
 };
 
 // Every variant, as make_gab_seeds.sh writes it. rms_rel: a shape the global
@@ -118,19 +120,24 @@ const std::vector<Golden>& goldens() {
        "--error 1e-4 --detail on --solver global"},
       {"torus-detail-geometry-only", 0xdb991622f7b0d688ull, kGeo | kGabFlagDetail, 6, 15, 4, 0.000099905,
        "--error 1e-4 --detail on --geometry-only --solver global"},
-      {"torus-iterative", 0xa177618616521ad2ull, kLevels, 12, 20, 4, 0.021768607,
+      {"torus-iterative", 0x68de801af1052f94ull, kLevels, 12, 20, 4, 0.020931225,
        "--anchors 20 --chunk-growth 1.5 --solver iterative"},
-      {"torus-iterative-selection", 0xd5c603d01d806202ull, 0, 12, 20, 8, 0.021768607,
+      {"torus-iterative-selection", 0x9bec0fe97beac200ull, 0, 12, 20, 8, 0.020931225,
        "--anchors 20 --chunk-growth 1.5 --layout selection --solver iterative"},
-      {"torus-iterative-detail", 0x15d5fec3c8931bd1ull, kGabFlagDetail, 6, 15, 4, 0.000098065,
+      {"torus-iterative-detail", 0x4547a313ea78c562ull, kGabFlagDetail, 6, 15, 4, 0.000098065,
        "--error 1e-4 --detail on --solver iterative"},
+      {"torus-iterative-large", 0x11cb9478facf9fafull, kLevels, 12, 300, 5, 0.009612601, "--anchors 300 --solver iterative", true},
+      // Operator 1, made by an earlier encoder with torus-iterative*'s options.
+      {"torus-operator1", 0xa177618616521ad2ull, kLevels, 12, 20, 4, 0.021768607, nullptr},
+      {"torus-operator1-selection", 0xd5c603d01d806202ull, 0, 12, 20, 8, 0.021768607, nullptr},
+      {"torus-operator1-detail", 0x15d5fec3c8931bd1ull, kGabFlagDetail, 6, 15, 4, 0.000098065, nullptr},
   };
   return all;
 }
 
 // The torus as a file's decoder numbers it.
 Mesh expected_mesh(const Golden& g) {
-  const Mesh torus = gab_fuzz::seed_torus();
+  const Mesh torus = g.large ? gab_fuzz::large_seed_torus() : gab_fuzz::seed_torus();
   if ((g.flags & kGabFlagReordered) == 0) return torus;
   return renumber_vertices(torus, encode_valence_section(torus.num_vertices(), torus.triangles).new_index);
 }
@@ -167,10 +174,12 @@ TEST(GoldenFiles, EverySeedDecodesToItsPinnedShape) {
 }
 
 TEST(GoldenFiles, TheEncoderWritesEverySeed) {
-  const Mesh torus = gab_fuzz::seed_torus();
+  const Mesh torus = gab_fuzz::seed_torus(), large = gab_fuzz::large_seed_torus();
   for (const Golden& g : goldens()) {
+    if (!g.options) continue;
     EncodeStats es;
-    EXPECT_EQ(testing_util::encode_or_die(torus, options_of(g.options), &es), seed(g.name)) << g.name;
+    EXPECT_EQ(testing_util::encode_or_die(g.large ? large : torus, options_of(g.options), &es), seed(g.name))
+        << g.name;
   }
 }
 
@@ -200,19 +209,25 @@ TEST(GoldenFiles, DetailSeedsDecodeToTheirPinnedBits) {
 }
 
 TEST(GoldenFiles, IterativeSeedsDecodeToTheirPinnedBits) {
-  // The iterative operator fixes every operation (docs/format.md 5.2.1):
-  // its shapes, whole or a prefix, are the same bits on any machine, SIMD
-  // level and thread count, so they are pinned bit for bit.
+  // The iterative operators fix every operation (docs/format.md 5.2.1,
+  // 5.2.2): their shapes, whole or a prefix, are the same bits on any
+  // machine, SIMD level and thread count, so they are pinned bit for bit.
   struct Seed {
     const char* name;
     int32_t max_anchors;
     uint64_t fingerprint;
   };
   // (Both layouts code the same anchors, whose shape depends on them alone.)
-  for (const Seed& g : {Seed{"torus-iterative", -1, 0x0276aba1b3f1ff13ull},
-                        Seed{"torus-iterative", 10, 0xbd475e0a4716f1fcull},
-                        Seed{"torus-iterative-selection", -1, 0x0276aba1b3f1ff13ull},
-                        Seed{"torus-iterative-detail", -1, 0xd91e627a6525b252ull}}) {
+  for (const Seed& g : {Seed{"torus-iterative", -1, 0xd2cb1192d976a3c5ull},
+                        Seed{"torus-iterative", 10, 0xc42a01be50bca9b9ull},
+                        Seed{"torus-iterative-selection", -1, 0xd2cb1192d976a3c5ull},
+                        Seed{"torus-iterative-detail", -1, 0xd91e627a6525b252ull},
+                        Seed{"torus-iterative-large", -1, 0x8f15375d8dd2663bull},
+                        Seed{"torus-iterative-large", 100, 0x76a1ea8ea6060e6full},
+                        Seed{"torus-operator1", -1, 0x0276aba1b3f1ff13ull},
+                        Seed{"torus-operator1", 10, 0xbd475e0a4716f1fcull},
+                        Seed{"torus-operator1-selection", -1, 0x0276aba1b3f1ff13ull},
+                        Seed{"torus-operator1-detail", -1, 0xd91e627a6525b252ull}}) {
     const std::vector<uint8_t> golden = seed(g.name);
     for (int32_t threads : {1, 2}) {
       DecodeOptions decode;
@@ -303,7 +318,7 @@ TEST(GoldenFiles, SeedsPassTheFuzzersChecks) {
     for (double x : out.positions) ASSERT_TRUE(std::isfinite(x)) << e->d_name;
   }
   closedir(d);
-  EXPECT_EQ(seen, static_cast<int>(goldens().size()) + 3);  // and the three prefixes
+  EXPECT_EQ(seen, static_cast<int>(goldens().size()) + 4);  // and the four prefixes
 }
 
 }  // namespace

@@ -31,7 +31,7 @@ TEST(IterativeOperator, DecodesToTheEncodersShapeInEveryLayout) {
       EncodeStats es;
       const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
       ASSERT_GT(file.size(), 12u);
-      EXPECT_EQ(file[12], kGabReconstructionIterative);
+      EXPECT_EQ(file[12], kGabReconstructionIterativeLocal);
       EXPECT_GT(es.chunks, 1);
       EXPECT_EQ(es.detail, target < 5e-4);
       DecodeStats ds;
@@ -150,7 +150,7 @@ TEST(IterativeOperator, IsTheDefaultUnlessTheRefinementNeedsTheGlobalOne) {
     EncodeStats es;
     const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
     ASSERT_GT(file.size(), 12u);
-    EXPECT_EQ(file[12], refine ? kGabReconstructionGlobal : kGabReconstructionIterative);
+    EXPECT_EQ(file[12], refine ? kGabReconstructionGlobal : kGabReconstructionIterativeLocal);
     EXPECT_EQ(es.solver, refine ? Solver::kGlobal : Solver::kIterative);
     DecodeStats ds;
     decode_or_die(file, DecodeOptions(), &ds);

@@ -9,10 +9,8 @@
 //
 // The result is a fixed computation, not "the solution to a tolerance": the
 // steps start from the previous shape (the first time, and after restart,
-// from each vertex at its nearest anchor's coefficients, breadth-first from
-// the anchors in increasing vertex order, a vertex taking the anchor of the
-// first frontier vertex that reaches it, so the order anchors were given in
-// does not matter; then kStartSweeps harmonic sweeps), and every
+// from the start: each vertex at its nearest anchor's coefficients, ties
+// broken by the NearestRule, then kStartSweeps harmonic sweeps), and every
 // floating-point operation happens in one order. Sums over vertices add
 // runs of 64 vertices, then fixed blocks of kBlock vertices in vertex
 // order, then the blocks in block order, whatever the thread count; so two
@@ -42,6 +40,20 @@ class IterativeReconstruction {
   // Harmonic sweeps that smooth the nearest-anchor start.
   static constexpr int kStartSweeps = 8;
 
+  // Which anchor a vertex starts at when several are equally near; either
+  // way the order anchors were given in does not matter.
+  enum class NearestRule {
+    // Breadth-first from the anchors in increasing vertex order, a vertex
+    // taking the anchor of the first frontier vertex that reaches it.
+    kDiscovery,
+    // The fewest hops, then the lowest anchor vertex index: kept up to date
+    // as anchors join (only the vertices they are nearer to change), which
+    // makes start_at cost the neighbourhood it reads, not n.
+    kFewestHopsLowest,
+  };
+  // Before init (default kDiscovery).
+  void set_nearest_rule(NearestRule rule) { rule_ = rule; }
+
   // Starts over on `graph` (kept by reference: it must outlive this) with
   // weight w and the initial anchors (distinct vertices; every connected
   // component needs one) and their coefficients (3 per anchor). No shape
@@ -68,6 +80,11 @@ class IterativeReconstruction {
   // Each vertex at its nearest anchor's coefficients (3 per vertex): the
   // start before its harmonic sweeps. Changes nothing. O(n + edges).
   std::vector<double> nearest_anchor_shape() const;
+  // The start (what solve(0) gives after restart) at the vertices `at`
+  // only, the same bits: positions[3 v ..] for v in at (positions sized 3 n;
+  // its other entries untouched). Reads the kStartSweeps-ring around `at`,
+  // so its cost is that ring's size, not n. kFewestHopsLowest only.
+  Status start_at(const std::vector<int32_t>& at, std::vector<double>* positions);
   // Forgets the shape: the next solve starts from the nearest-anchor start,
   // so its result depends on the anchors and coefficients alone. O(1).
   void restart() { shape_.clear(); }
@@ -84,6 +101,9 @@ class IterativeReconstruction {
  private:
   Status check_new(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
   void record(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
+  // kFewestHopsLowest: lowers hops_ / nearest_ breadth-first from `anchors`
+  // (just recorded) where they are nearer, by the rule's order.
+  void update_nearest(const std::vector<int32_t>& anchors);
 
   const EdgeGraph* graph_ = nullptr;
   int32_t n_ = 0;
@@ -93,6 +113,17 @@ class IterativeReconstruction {
   std::vector<double> coefficients_;  // 3 per anchor
   std::vector<int32_t> anchor_of_;    // vertex -> index in anchors_, or -1
   std::vector<double> shape_;         // 3 per vertex once solved
+  NearestRule rule_ = NearestRule::kDiscovery;
+  // kFewestHopsLowest: per vertex the hops to its nearest anchor and that
+  // anchor's vertex index.
+  std::vector<int32_t> hops_, nearest_;
+  std::vector<uint32_t> queued_;  // update_nearest's: the layer that last queued a vertex
+  uint32_t stamp_ = 0;
+  // start_at's scratch, kept between calls: per vertex the call that last
+  // reached it; the values before and after a sweep.
+  std::vector<uint32_t> reached_;
+  std::vector<double> from_, to_;
+  uint32_t call_ = 0;
 };
 
 }  // namespace gab
