@@ -4,6 +4,7 @@
 #include <cmath>
 #include <condition_variable>
 #include <cstddef>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <mutex>
@@ -28,6 +29,71 @@ namespace {
 #endif
 typedef float v4f __attribute__((vector_size(16)));
 typedef double v4d __attribute__((vector_size(32)));
+typedef double v2d __attribute__((vector_size(16)));
+
+inline v2d load2(const double* p) {
+  v2d r;
+  std::memcpy(&r, p, sizeof r);
+  return r;
+}
+inline void store2(double* p, v2d x) { std::memcpy(p, &x, sizeof x); }
+
+// 1 / d in single precision for a vertex of degree d (the double quotient
+// rounded to float).
+class Reciprocals {
+ public:
+  Reciprocals() {
+    for (int32_t d = 1; d < kCached; ++d) cached_[d] = static_cast<float>(1.0 / d);
+  }
+  float operator()(int32_t d) const { return d < kCached ? cached_[d] : static_cast<float>(1.0 / d); }
+
+ private:
+  static constexpr int32_t kCached = 64;
+  float cached_[kCached] = {};
+};
+const Reciprocals kReciprocal;
+
+inline v4f load4(const float* p) {
+  v4f r;
+  std::memcpy(&r, p, sizeof r);
+  return r;
+}
+
+// Operator 2's harmonic sweep at a free vertex v (4 floats: x, y, z, 0)
+// from the values `from` (4 per vertex), in single precision: its
+// neighbours summed in two chains (even and odd places in adjacency order,
+// each from 0: half the wait on the additions), (even + odd) times the
+// reciprocal of its degree.
+inline void harmonic_row_float(const EdgeGraph& g, const float* from, int32_t v, float* to) {
+  const int32_t first = g.offsets[v], last = g.offsets[v + 1];
+  v4f even = {0.0f, 0.0f, 0.0f, 0.0f}, odd = even;
+  int32_t e = first;
+  for (; e + 1 < last; e += 2) {
+    even += load4(from + 4 * static_cast<size_t>(g.neighbors[e]));
+    odd += load4(from + 4 * static_cast<size_t>(g.neighbors[e + 1]));
+  }
+  if (e < last) even += load4(from + 4 * static_cast<size_t>(g.neighbors[e]));
+  const v4f out = (even + odd) * kReciprocal(last - first);
+  std::memcpy(to, &out, sizeof out);
+}
+
+// Operator 1's harmonic sweep at a free vertex v (4 doubles: x, y, z, 0)
+// from the values `from` (4 per vertex): its neighbours' sum in adjacency
+// order from 0, each lane rounding as scalar code would, divided by the
+// degree. Two halves of two doubles: native on every x86-64, where a
+// 32-byte vector without AVX goes through memory.
+inline void harmonic_row(const EdgeGraph& g, const double* from, int32_t v, double* to) {
+  const int32_t first = g.offsets[v], last = g.offsets[v + 1];
+  v2d xy = {0.0, 0.0}, z0 = xy;
+  for (int32_t e = first; e < last; ++e) {
+    const double* u = from + 4 * static_cast<size_t>(g.neighbors[e]);
+    xy += load2(u);
+    z0 += load2(u + 2);
+  }
+  const double d = static_cast<double>(last - first);
+  store2(to, xy / d);
+  store2(to + 2, z0 / d);
+}
 
 // x rounded to single precision; past its range, the infinity of x's sign
 // (a plain conversion would be undefined there), which a decoder then
@@ -281,80 +347,126 @@ Status IterativeReconstruction::start_at(const std::vector<int32_t>& at, std::ve
   const EdgeGraph& g = *graph_;
   if (reached_.size() != n) {
     reached_.assign(n, 0);
-    from_.resize(3 * n);
-    to_.resize(3 * n);
+    depth_.assign(n, 0);
+    from_.resize(4 * n);
+    to_.resize(4 * n);
     call_ = 0;
   }
   if (++call_ == 0) {  // the marks wrapped: clear them
     std::fill(reached_.begin(), reached_.end(), 0u);
     call_ = 1;
   }
-  // The vertices within kStartSweeps hops of `at`, layer by layer:
-  // region[0, layer_end[d]) are those within d hops.
+  // The vertices within kStartSweeps hops of `at`, breadth-first, each
+  // with its hops.
   std::vector<int32_t> region;
-  size_t layer_end[kStartSweeps + 1];
   for (int32_t v : at) {
     if (reached_[v] == call_) continue;
     reached_[v] = call_;
+    depth_[v] = 0;
     region.push_back(v);
   }
-  layer_end[0] = region.size();
-  for (int d = 1, begin = 0; d <= kStartSweeps; ++d) {
-    const size_t end = layer_end[d - 1];
-    for (size_t i = static_cast<size_t>(begin); i < end; ++i) {
-      const int32_t u = region[i];
-      for (int32_t e = g.offsets[u]; e < g.offsets[u + 1]; ++e) {
-        const int32_t w = g.neighbors[e];
-        if (reached_[w] == call_) continue;
-        reached_[w] = call_;
-        region.push_back(w);
-      }
+  for (size_t i = 0; i < region.size() && region.size() < n; ++i) {
+    const int32_t u = region[i];
+    if (depth_[u] == kStartSweeps) break;  // the breadth-first order: all the rest are as far
+    for (int32_t e = g.offsets[u]; e < g.offsets[u + 1]; ++e) {
+      const int32_t w = g.neighbors[e];
+      if (reached_[w] == call_) continue;
+      reached_[w] = call_;
+      depth_[w] = static_cast<int8_t>(depth_[u] + 1);
+      region.push_back(w);
     }
-    begin = static_cast<int>(end);
-    layer_end[d] = region.size();
   }
-  for (int32_t v : region) {
-    const double* c = &coefficients_[3 * static_cast<size_t>(anchor_of_[nearest_[v]])];
-    std::copy(c, c + 3, from_.begin() + 3 * static_cast<std::ptrdiff_t>(v));
-  }
+  // The values in single precision, per axis in the anchors' frame: values
+  // in [0, 1], whatever the coordinates' magnitude.
+  double origin[3], scale[3];
+  start_frame(origin, scale);
+  float* from = from_.data();
+  float* to = to_.data();
+  const int32_t* anchor_of = anchor_of_.data();
+  auto fixed = [&](int32_t v) { return anchor_of[v] >= 0 || g.offsets[v] == g.offsets[v + 1]; };
+  auto start = [&](int32_t v) {
+    const double* c = &coefficients_[3 * static_cast<size_t>(anchor_of[nearest_[v]])];
+    float* x = from + 4 * static_cast<size_t>(v);
+    for (int k = 0; k < 3; ++k) x[k] = to_float((c[k] - origin[k]) * scale[k]);
+    x[3] = 0.0f;
+    // An anchor and a vertex of degree 0 keep their value through the
+    // sweeps: in both buffers.
+    if (fixed(v)) std::copy(x, x + 4, to + 4 * static_cast<size_t>(v));
+  };
   // Sweep s needs its values within kStartSweeps - s hops of `at` and reads
-  // one hop further: the sweeps of solve's start, each vertex's sum in the
-  // same order, so the same values.
-  const int32_t* offsets = g.offsets.data();
-  const int32_t* neighbors = g.neighbors.data();
-  for (int sweep = 1; sweep <= kStartSweeps; ++sweep) {
-    const double* from = from_.data();
-    double* to = to_.data();
-    const size_t end = layer_end[kStartSweeps - sweep];
-    for (size_t i = 0; i < end; ++i) {
-      const int32_t v = region[i];
-      const int32_t first = offsets[v], last = offsets[v + 1];
-      if (anchor_of_[v] >= 0 || first == last) {
-        std::copy(from + 3 * static_cast<size_t>(v), from + 3 * static_cast<size_t>(v) + 3,
-                  to + 3 * static_cast<size_t>(v));
-        continue;
-      }
-      double sum[3] = {0.0, 0.0, 0.0};
-      for (int32_t e = first; e < last; ++e) {
-        for (int c = 0; c < 3; ++c) sum[c] += from[3 * static_cast<size_t>(neighbors[e]) + c];
-      }
-      for (int c = 0; c < 3; ++c) to[3 * static_cast<size_t>(v) + c] = sum[c] / (last - first);
+  // one hop further. A region of a good part of the mesh is swept in vertex
+  // order (neighbours near in memory), by blocks on the threads; a small one
+  // in its own order.
+  if (region.size() > n / 8) {
+    std::vector<int32_t>().swap(region);
+    for (int32_t v = 0; v < n_; ++v) {
+      if (reached_[v] == call_) start(v);
     }
-    from_.swap(to_);
+    StepTeam team(threads_, n_);
+    for (int sweep = 1; sweep <= kStartSweeps; ++sweep) {
+      const int8_t reach = static_cast<int8_t>(kStartSweeps - sweep);
+      team.run([&](int32_t begin, int32_t end, int32_t) {
+        for (int32_t v = begin; v < end; ++v) {
+          if (reached_[v] == call_ && depth_[v] <= reach && !fixed(v)) {
+            harmonic_row_float(g, from, v, to + 4 * static_cast<size_t>(v));
+          }
+        }
+      });
+      std::swap(from, to);
+    }
+  } else {
+    std::vector<int32_t> free;
+    for (int32_t v : region) {
+      start(v);
+      if (!fixed(v) && depth_[v] < kStartSweeps) free.push_back(v);
+    }
+    for (int sweep = 1; sweep <= kStartSweeps; ++sweep) {
+      const int8_t reach = static_cast<int8_t>(kStartSweeps - sweep);
+      for (int32_t v : free) {
+        if (depth_[v] <= reach) harmonic_row_float(g, from, v, to + 4 * static_cast<size_t>(v));
+      }
+      std::swap(from, to);
+    }
   }
   for (int32_t v : at) {
-    std::copy(from_.begin() + 3 * static_cast<std::ptrdiff_t>(v), from_.begin() + 3 * static_cast<std::ptrdiff_t>(v) + 3,
-              positions->begin() + 3 * static_cast<std::ptrdiff_t>(v));
+    for (int k = 0; k < 3; ++k) {
+      (*positions)[3 * static_cast<size_t>(v) + k] =
+          origin[k] + static_cast<double>(from[4 * static_cast<size_t>(v) + k]) / scale[k];
+    }
   }
   return Status::Ok();
+}
+
+void IterativeReconstruction::start_frame(double origin[3], double scale[3]) const {
+  double high[3];
+  for (int k = 0; k < 3; ++k) origin[k] = high[k] = coefficients_[k];
+  for (size_t i = 0; i < coefficients_.size(); i += 3) {
+    for (int k = 0; k < 3; ++k) {
+      origin[k] = std::min(origin[k], coefficients_[i + k]);
+      high[k] = std::max(high[k], coefficients_[i + k]);
+    }
+  }
+  for (int k = 0; k < 3; ++k) {
+    int exponent = 0;
+    std::frexp(high[k] - origin[k], &exponent);  // the extent = m 2^exponent, m in [0.5, 1); 0 for 0
+    scale[k] = std::ldexp(1.0, -exponent);
+  }
 }
 
 Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positions) {
   if (graph_ == nullptr) return Status::Error(StatusCode::kInvalidArgument, "solve before init");
   if (steps < 0) return Status::Error(StatusCode::kInvalidArgument, "negative step count");
   const bool fresh = shape_.empty();
-  if (fresh) shape_ = nearest_anchor_shape();
   const size_t n = static_cast<size_t>(n_);
+  if (fresh && rule_ == NearestRule::kFewestHopsLowest) {
+    // Operator 2's start: start_at's, at every vertex.
+    std::vector<int32_t> all(n);
+    for (int32_t v = 0; v < n_; ++v) all[v] = v;
+    shape_.assign(3 * n, 0.0);
+    GAB_RETURN_IF_ERROR(start_at(all, &shape_));
+  } else if (fresh) {
+    shape_ = nearest_anchor_shape();
+  }
   const double w2 = weight_ * weight_;
   const int32_t blocks = (n_ + kBlock - 1) / kBlock;
   double* x = shape_.data();
@@ -365,33 +477,30 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
   // to partial[b], added in block order afterwards (the order the header
   // promises for any thread count).
   StepTeam team(threads_, n_);
-  if (fresh) {
+  if (fresh && rule_ == NearestRule::kDiscovery) {
     // The nearest-anchor start is flat between anchors: kStartSweeps Jacobi
     // sweeps of the harmonic interpolation (each free vertex to its
     // neighbours' mean, anchors at their coefficients) round it off for
     // the price of a few steps and save more at a few steps per spacing
     // (horse, anchors 3 hops apart: 4 sweeps + 16 steps as near the least
     // squares as 24 steps alone, bench/reconstruction_candidates).
-    std::vector<double> next(shape_.size());
+    std::vector<double> from(4 * n), to(4 * n);
+    for (size_t v = 0; v < n; ++v) std::copy(&shape_[3 * v], &shape_[3 * v] + 3, &from[4 * v]);
     for (int sweep = 0; sweep < kStartSweeps; ++sweep) {
-      const double* from = shape_.data();
+      const double* in = from.data();
       team.run([&](int32_t begin, int32_t end, int32_t) {
         for (int32_t v = begin; v < end; ++v) {
-          const int32_t first = offsets[v], last = offsets[v + 1];
-          if (anchor_of[v] >= 0 || first == last) {
-            std::copy(from + 3 * static_cast<size_t>(v), from + 3 * static_cast<size_t>(v) + 3,
-                      next.begin() + 3 * static_cast<std::ptrdiff_t>(v));
-            continue;
+          double* out = &to[4 * static_cast<size_t>(v)];
+          if (anchor_of[v] >= 0 || offsets[v] == offsets[v + 1]) {
+            std::copy(in + 4 * static_cast<size_t>(v), in + 4 * static_cast<size_t>(v) + 4, out);
+          } else {
+            harmonic_row(*graph_, in, v, out);
           }
-          double sum[3] = {0.0, 0.0, 0.0};
-          for (int32_t e = first; e < last; ++e) {
-            for (int c = 0; c < 3; ++c) sum[c] += from[3 * static_cast<size_t>(neighbors[e]) + c];
-          }
-          for (int c = 0; c < 3; ++c) next[3 * static_cast<size_t>(v) + c] = sum[c] / (last - first);
         }
       });
-      shape_.swap(next);
+      from.swap(to);
     }
+    for (size_t v = 0; v < n; ++v) std::copy(&from[4 * v], &from[4 * v] + 3, &shape_[3 * v]);
     x = shape_.data();
   }
   std::vector<v4d> partial(blocks);

@@ -16,7 +16,8 @@
 // order, then the blocks in block order, whatever the thread count; so two
 // programs making the same calls get the same bits on any machine with IEEE
 // arithmetic and no contraction, which is what lets an encoder and a
-// decoder share the shape (docs/format.md 5.2.1 spells out every operation).
+// decoder share the shape (docs/format.md 5.2.1 and 5.2.2 spell out every
+// operation).
 //
 // As the steps grow the shape tends to the global least squares, to about
 // 1e-7 of the correction the steps add (single precision); how many a use
@@ -40,15 +41,19 @@ class IterativeReconstruction {
   // Harmonic sweeps that smooth the nearest-anchor start.
   static constexpr int kStartSweeps = 8;
 
-  // Which anchor a vertex starts at when several are equally near; either
-  // way the order anchors were given in does not matter.
+  // Which anchor a vertex starts at when several are equally near (either
+  // way the order anchors were given in does not matter), and how the start
+  // is swept: the two iterative operators of the format.
   enum class NearestRule {
-    // Breadth-first from the anchors in increasing vertex order, a vertex
-    // taking the anchor of the first frontier vertex that reaches it.
+    // Operator 1: breadth-first from the anchors in increasing vertex order,
+    // a vertex taking the anchor of the first frontier vertex that reaches
+    // it; sweeps in double, each mean a division by the degree.
     kDiscovery,
-    // The fewest hops, then the lowest anchor vertex index: kept up to date
-    // as anchors join (only the vertices they are nearer to change), which
-    // makes start_at cost the neighbourhood it reads, not n.
+    // Operator 2: the fewest hops, then the lowest anchor vertex index, kept
+    // up to date as anchors join (only the vertices they are nearer to
+    // change), which makes start_at cost the neighbourhood it reads, not n;
+    // sweeps in single precision in the anchors' frame (start_frame), each
+    // mean a product by the degree's reciprocal.
     kFewestHopsLowest,
   };
   // Before init (default kDiscovery).
@@ -104,6 +109,9 @@ class IterativeReconstruction {
   // kFewestHopsLowest: lowers hops_ / nearest_ breadth-first from `anchors`
   // (just recorded) where they are nearer, by the rule's order.
   void update_nearest(const std::vector<int32_t>& anchors);
+  // Operator 2's frame for the start in single precision: per axis the
+  // anchors' lowest coefficient and 2^-E, their extent = m 2^E, m in [0.5, 1).
+  void start_frame(double origin[3], double scale[3]) const;
 
   const EdgeGraph* graph_ = nullptr;
   int32_t n_ = 0;
@@ -120,9 +128,11 @@ class IterativeReconstruction {
   std::vector<uint32_t> queued_;  // update_nearest's: the layer that last queued a vertex
   uint32_t stamp_ = 0;
   // start_at's scratch, kept between calls: per vertex the call that last
-  // reached it; the values before and after a sweep.
+  // reached it; the values before and after a sweep (4 per vertex, the
+  // fourth 0).
   std::vector<uint32_t> reached_;
-  std::vector<double> from_, to_;
+  std::vector<int8_t> depth_;  // hops from `at`, where reached
+  std::vector<float> from_, to_;
   uint32_t call_ = 0;
 };
 
