@@ -224,20 +224,30 @@ Status IterativeReconstruction::init(const EdgeGraph& graph, double weight, cons
   shape_.clear();
   anchor_of_.assign(n_, -1);
   GAB_RETURN_IF_ERROR(check_new(anchors, coefficients));
-  GAB_RETURN_IF_ERROR(check_components_anchored(graph, anchors));
+  if (rule_ == NearestRule::kDiscovery) {
+    GAB_RETURN_IF_ERROR(check_components_anchored(graph, anchors));
+    record(anchors, coefficients);
+    return Status::Ok();
+  }
+  // The nearest anchors' search reaches every vertex of an anchored
+  // component: the first one it misses names the component without one (as
+  // check_components_anchored would), with no pass of its own.
   record(anchors, coefficients);
-  if (rule_ == NearestRule::kFewestHopsLowest) {
-    hops_.assign(n_, std::numeric_limits<int32_t>::max());
-    nearest_.assign(n_, std::numeric_limits<int32_t>::max());
-    queued_.assign(n_, 0);
-    stamp_ = 0;
-    update_nearest(anchors);
+  nearest_.assign(n_, std::numeric_limits<uint64_t>::max());
+  update_nearest(anchors);
+  for (int32_t v = 0; v < n_; ++v) {
+    if (nearest_[v] == std::numeric_limits<uint64_t>::max()) {
+      graph_ = nullptr;
+      return Status::Error(StatusCode::kInvalidArgument, "the connected component of vertex " + std::to_string(v) +
+                                                             " has no anchor (every component needs one)");
+    }
   }
   return Status::Ok();
 }
 
 Status IterativeReconstruction::add_anchors(const std::vector<int32_t>& anchors,
                                             const std::vector<double>& coefficients) {
+  if (graph_ == nullptr) return Status::Error(StatusCode::kInvalidArgument, "add_anchors before init");
   GAB_RETURN_IF_ERROR(check_new(anchors, coefficients));
   record(anchors, coefficients);
   update_nearest(anchors);
@@ -247,34 +257,27 @@ Status IterativeReconstruction::add_anchors(const std::vector<int32_t>& anchors,
 void IterativeReconstruction::update_nearest(const std::vector<int32_t>& anchors) {
   if (rule_ != NearestRule::kFewestHopsLowest) return;
   // Layer by layer from the new anchors, a vertex whose (hops, anchor) the
-  // layer lowers joins the next frontier. A vertex the new anchors do not
-  // reach first cannot pass them on: whoever is nearer to it is at least as
-  // near to its neighbours. Within a layer the lowest anchor wins whatever
-  // the frontier's order, so the result is the rule's.
+  // layer lowers joins the next frontier (again if lowered twice: its final
+  // key is what it passes on). A vertex the new anchors do not reach first
+  // cannot pass them on: whoever is nearer to it is at least as near to its
+  // neighbours. Within a layer the lowest anchor wins whatever the
+  // frontier's order, so the result is the rule's. One key per vertex,
+  // (hops << 32) | anchor, compares both at once.
   const EdgeGraph& g = *graph_;
   std::vector<int32_t> frontier, next;
   for (int32_t a : anchors) {
-    hops_[a] = 0;
-    nearest_[a] = a;
+    nearest_[a] = static_cast<uint64_t>(a);
     frontier.push_back(a);
   }
-  for (int32_t layer = 1; !frontier.empty(); ++layer) {
-    if (++stamp_ == 0) {  // the stamps wrapped: clear them
-      std::fill(queued_.begin(), queued_.end(), 0u);
-      stamp_ = 1;
-    }
+  for (uint64_t layer = 1; !frontier.empty(); ++layer) {
     next.clear();
     for (int32_t u : frontier) {
-      const int32_t source = nearest_[u];
+      const uint64_t key = (layer << 32) | (nearest_[u] & 0xffffffffu);
       for (int32_t e = g.offsets[u]; e < g.offsets[u + 1]; ++e) {
         const int32_t w = g.neighbors[e];
-        if (layer > hops_[w] || (layer == hops_[w] && source >= nearest_[w])) continue;
-        hops_[w] = layer;
-        nearest_[w] = source;
-        if (queued_[w] != stamp_) {
-          queued_[w] = stamp_;
-          next.push_back(w);
-        }
+        if (key >= nearest_[w]) continue;
+        nearest_[w] = key;
+        next.push_back(w);
       }
     }
     frontier.swap(next);
@@ -306,7 +309,7 @@ std::vector<double> IterativeReconstruction::nearest_anchor_shape() const {
   std::vector<double> shape(3 * static_cast<size_t>(n_));
   if (rule_ == NearestRule::kFewestHopsLowest) {
     for (int32_t v = 0; v < n_; ++v) {
-      const double* c = &coefficients_[3 * static_cast<size_t>(anchor_of_[nearest_[v]])];
+      const double* c = &coefficients_[3 * static_cast<size_t>(anchor_of_[nearest_anchor(v)])];
       std::copy(c, c + 3, shape.begin() + 3 * static_cast<std::ptrdiff_t>(v));
     }
     return shape;
@@ -345,36 +348,9 @@ Status IterativeReconstruction::start_at(const std::vector<int32_t>& at, std::ve
     if (v < 0 || v >= n_) return Status::Error(StatusCode::kInvalidArgument, "start_at: vertex out of range");
   }
   const EdgeGraph& g = *graph_;
-  if (reached_.size() != n) {
-    reached_.assign(n, 0);
-    depth_.assign(n, 0);
+  if (from_.size() != 4 * n) {
     from_.resize(4 * n);
     to_.resize(4 * n);
-    call_ = 0;
-  }
-  if (++call_ == 0) {  // the marks wrapped: clear them
-    std::fill(reached_.begin(), reached_.end(), 0u);
-    call_ = 1;
-  }
-  // The vertices within kStartSweeps hops of `at`, breadth-first, each
-  // with its hops.
-  std::vector<int32_t> region;
-  for (int32_t v : at) {
-    if (reached_[v] == call_) continue;
-    reached_[v] = call_;
-    depth_[v] = 0;
-    region.push_back(v);
-  }
-  for (size_t i = 0; i < region.size() && region.size() < n; ++i) {
-    const int32_t u = region[i];
-    if (depth_[u] == kStartSweeps) break;  // the breadth-first order: all the rest are as far
-    for (int32_t e = g.offsets[u]; e < g.offsets[u + 1]; ++e) {
-      const int32_t w = g.neighbors[e];
-      if (reached_[w] == call_) continue;
-      reached_[w] = call_;
-      depth_[w] = static_cast<int8_t>(depth_[u] + 1);
-      region.push_back(w);
-    }
   }
   // The values in single precision, per axis in the anchors' frame: values
   // in [0, 1], whatever the coordinates' magnitude.
@@ -385,7 +361,7 @@ Status IterativeReconstruction::start_at(const std::vector<int32_t>& at, std::ve
   const int32_t* anchor_of = anchor_of_.data();
   auto fixed = [&](int32_t v) { return anchor_of[v] >= 0 || g.offsets[v] == g.offsets[v + 1]; };
   auto start = [&](int32_t v) {
-    const double* c = &coefficients_[3 * static_cast<size_t>(anchor_of[nearest_[v]])];
+    const double* c = &coefficients_[3 * static_cast<size_t>(anchor_of[nearest_anchor(v)])];
     float* x = from + 4 * static_cast<size_t>(v);
     for (int k = 0; k < 3; ++k) x[k] = to_float((c[k] - origin[k]) * scale[k]);
     x[3] = 0.0f;
@@ -394,28 +370,55 @@ Status IterativeReconstruction::start_at(const std::vector<int32_t>& at, std::ve
     if (fixed(v)) std::copy(x, x + 4, to + 4 * static_cast<size_t>(v));
   };
   // Sweep s needs its values within kStartSweeps - s hops of `at` and reads
-  // one hop further. A region of a good part of the mesh is swept in vertex
-  // order (neighbours near in memory), by blocks on the threads; a small one
-  // in its own order.
-  if (region.size() > n / 8) {
-    std::vector<int32_t>().swap(region);
-    for (int32_t v = 0; v < n_; ++v) {
-      if (reached_[v] == call_) start(v);
-    }
+  // one hop further. Vertices whose neighbourhoods (about kBall vertices
+  // each) cover the mesh: every vertex is swept, in vertex order (neighbours
+  // near in memory), by blocks on the threads; the values at `at` are the
+  // same. Fewer: only those within reach, found breadth-first.
+  constexpr size_t kBall = 3 * kStartSweeps * (kStartSweeps + 1) + 1;  // a regular triangulation's
+  if (at.size() * kBall >= n) {
     StepTeam team(threads_, n_);
+    team.run([&](int32_t begin, int32_t end, int32_t) {
+      for (int32_t v = begin; v < end; ++v) start(v);
+    });
     for (int sweep = 1; sweep <= kStartSweeps; ++sweep) {
-      const int8_t reach = static_cast<int8_t>(kStartSweeps - sweep);
       team.run([&](int32_t begin, int32_t end, int32_t) {
         for (int32_t v = begin; v < end; ++v) {
-          if (reached_[v] == call_ && depth_[v] <= reach && !fixed(v)) {
-            harmonic_row_float(g, from, v, to + 4 * static_cast<size_t>(v));
-          }
+          if (!fixed(v)) harmonic_row_float(g, from, v, to + 4 * static_cast<size_t>(v));
         }
       });
       std::swap(from, to);
     }
   } else {
-    std::vector<int32_t> free;
+    if (reached_.size() != n) {
+      reached_.assign(n, 0);
+      depth_.assign(n, 0);
+      call_ = 0;
+    }
+    if (++call_ == 0) {  // the marks wrapped: clear them
+      std::fill(reached_.begin(), reached_.end(), 0u);
+      call_ = 1;
+    }
+    // The vertices within kStartSweeps hops of `at`, breadth-first (so in
+    // increasing hops), each with its hops.
+    std::vector<int32_t> region;
+    for (int32_t v : at) {
+      if (reached_[v] == call_) continue;
+      reached_[v] = call_;
+      depth_[v] = 0;
+      region.push_back(v);
+    }
+    for (size_t i = 0; i < region.size(); ++i) {
+      const int32_t u = region[i];
+      if (depth_[u] == kStartSweeps) break;
+      for (int32_t e = g.offsets[u]; e < g.offsets[u + 1]; ++e) {
+        const int32_t w = g.neighbors[e];
+        if (reached_[w] == call_) continue;
+        reached_[w] = call_;
+        depth_[w] = static_cast<int8_t>(depth_[u] + 1);
+        region.push_back(w);
+      }
+    }
+    std::vector<int32_t> free;  // in increasing hops
     for (int32_t v : region) {
       start(v);
       if (!fixed(v) && depth_[v] < kStartSweeps) free.push_back(v);
@@ -423,7 +426,8 @@ Status IterativeReconstruction::start_at(const std::vector<int32_t>& at, std::ve
     for (int sweep = 1; sweep <= kStartSweeps; ++sweep) {
       const int8_t reach = static_cast<int8_t>(kStartSweeps - sweep);
       for (int32_t v : free) {
-        if (depth_[v] <= reach) harmonic_row_float(g, from, v, to + 4 * static_cast<size_t>(v));
+        if (depth_[v] > reach) break;
+        harmonic_row_float(g, from, v, to + 4 * static_cast<size_t>(v));
       }
       std::swap(from, to);
     }

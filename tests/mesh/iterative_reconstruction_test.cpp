@@ -149,8 +149,9 @@ TEST(IterativeReconstructionTest, TheFewestHopsRuleTakesTheNearestThenTheLowestA
 TEST(IterativeReconstructionTest, StartAtIsTheStartAtThoseVertices) {
   // start_at evaluates the start (solve(0) after restart) around the given
   // vertices only: the same values there, other entries untouched; before
-  // and after anchors join, for a few vertices and for all of them.
-  const Mesh m = testing_util::bumpy_torus(30, 20);
+  // and after anchors join, for a few vertices (their neighbourhoods alone
+  // swept) and for all of them (every vertex swept).
+  const Mesh m = testing_util::bumpy_torus(80, 60);
   const EdgeGraph g = build_edge_graph(m);
   const int32_t n = m.num_vertices();
   const std::vector<int32_t> anchors = every(n, 37);
@@ -161,7 +162,7 @@ TEST(IterativeReconstructionTest, StartAtIsTheStartAtThoseVertices) {
     std::vector<double> start;
     rec.restart();
     ASSERT_TRUE(rec.solve(0, &start).ok());
-    const std::vector<int32_t> few = {5, 300, 301, 599, 17};
+    const std::vector<int32_t> few = {5, 3000, 3001, 4799, 17};
     std::vector<double> x(3 * static_cast<size_t>(n), -7.0);
     ASSERT_TRUE(rec.start_at(few, &x).ok());
     for (int32_t v = 0; v < n; ++v) {
@@ -344,6 +345,12 @@ TEST(IterativeReconstructionTest, BadArgumentsNameTheProblem) {
   EXPECT_EQ(rec.start_at({18}, &x).message(), "start_at: vertex out of range");
   x.resize(5);
   EXPECT_EQ(rec.start_at({1}, &x).message(), "positions need 3 per vertex");
+  // The fewest-hops rule finds an unanchored component by its own search:
+  // the same message, and nothing to go on from.
+  EXPECT_EQ(rec.init(g, 100, {0}, {0, 0, 0}).message(),
+            "the connected component of vertex 9 has no anchor (every component needs one)");
+  EXPECT_EQ(rec.add_anchors({9}, {1, 1, 1}).message(), "add_anchors before init");
+  EXPECT_EQ(rec.solve(1, &x).message(), "solve before init");
 }
 
 }  // namespace

@@ -106,7 +106,7 @@ class IterativeReconstruction {
  private:
   Status check_new(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
   void record(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
-  // kFewestHopsLowest: lowers hops_ / nearest_ breadth-first from `anchors`
+  // kFewestHopsLowest: lowers nearest_ breadth-first from `anchors`
   // (just recorded) where they are nearer, by the rule's order.
   void update_nearest(const std::vector<int32_t>& anchors);
   // Operator 2's frame for the start in single precision: per axis the
@@ -122,11 +122,10 @@ class IterativeReconstruction {
   std::vector<int32_t> anchor_of_;    // vertex -> index in anchors_, or -1
   std::vector<double> shape_;         // 3 per vertex once solved
   NearestRule rule_ = NearestRule::kDiscovery;
-  // kFewestHopsLowest: per vertex the hops to its nearest anchor and that
-  // anchor's vertex index.
-  std::vector<int32_t> hops_, nearest_;
-  std::vector<uint32_t> queued_;  // update_nearest's: the layer that last queued a vertex
-  uint32_t stamp_ = 0;
+  // kFewestHopsLowest: per vertex (hops to its nearest anchor << 32) | that
+  // anchor's vertex index, so one comparison orders by the rule.
+  std::vector<uint64_t> nearest_;
+  int32_t nearest_anchor(int32_t v) const { return static_cast<int32_t>(nearest_[v] & 0xffffffffu); }
   // start_at's scratch, kept between calls: per vertex the call that last
   // reached it; the values before and after a sweep (4 per vertex, the
   // fourth 0).
