@@ -468,6 +468,10 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
     for (int32_t v = 0; v < n_; ++v) all[v] = v;
     shape_.assign(3 * n, 0.0);
     GAB_RETURN_IF_ERROR(start_at(all, &shape_));
+    // Its buffers are not needed again before the next prediction: not
+    // beside the steps' own (the decode's peak).
+    std::vector<float>().swap(from_);
+    std::vector<float>().swap(to_);
   } else if (fresh) {
     shape_ = nearest_anchor_shape();
   }
@@ -572,7 +576,9 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
   // floats move half the bytes of doubles and the steps are bound by moving
   // them. The shape and the first residual stay double: the steps' rounding
   // bends only the correction they add, not the shape it is added to.
-  std::vector<v4f> r(n), p(n), q(n), t(n);
+  // q, t and the correction come after the double residual is freed: not
+  // all at once (the decode's peak).
+  std::vector<v4f> r(n), p(n);
   std::vector<float> inv_diag(n);  // 1 / diag(L^T L + w^2 S); (L^T L)_vv = d^2 + d
   team.run([&](int32_t begin, int32_t end, int32_t b) {
     block_sum(begin, end, [&](int32_t v) {
@@ -584,6 +590,7 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
     }, &partial[b]);
   });
   std::vector<v4d>().swap(residual);
+  std::vector<v4f> q(n), t(n);
   v4d rz = total();
   // (L in)_v: the neighbours summed in two chains (even and odd places),
   // which halves the wait on the additions.

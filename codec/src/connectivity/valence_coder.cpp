@@ -471,7 +471,7 @@ int64_t encode_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<i
 }
 
 Status decode_valences(RangeDecoder* dec, int32_t max_vertices, int64_t max_triangles,
-                                DecodedConnectivity* out) {
+                                DecodedConnectivity* out, int64_t expected_triangles) {
   auto corrupt = [](const std::string& what) {
     return Status::Error(StatusCode::kParseError, "connectivity: " + what);
   };
@@ -518,12 +518,20 @@ Status decode_valences(RangeDecoder* dec, int32_t max_vertices, int64_t max_tria
   // split. Capped by the stream's size, so that a forged header reserves
   // little: real streams hold 5-10 vertices a byte (a regular grid up to
   // ~700), and past the cap the arrays grow as the vertices decode.
+  // With the triangles expected, about half as many vertices and a
+  // sixteenth more for the cut's copies and dummies (reserved memory the
+  // decode never touches still costs a huge page where it starts and ends).
   constexpr int64_t kReservedPerByte = 64;
   const int64_t cap = kReservedPerByte * static_cast<int64_t>(dec->size()) + 1024;
-  const size_t vertices = static_cast<size_t>(std::min<int64_t>(max_vertices, cap));
+  int64_t triangles_wanted = max_triangles, vertices_wanted = max_vertices;
+  if (expected_triangles >= 0) {
+    triangles_wanted = std::min(max_triangles, expected_triangles + expected_triangles / 16 + 64);
+    vertices_wanted = std::min<int64_t>(max_vertices, triangles_wanted / 2 + 64);
+  }
+  const size_t vertices = static_cast<size_t>(std::min(vertices_wanted, cap));
   vs.reserve(vertices);
   out->dummy.reserve(vertices);
-  out->triangles.reserve(3 * static_cast<size_t>(std::min<int64_t>(max_triangles, 2 * cap)));
+  out->triangles.reserve(3 * static_cast<size_t>(std::min<int64_t>(triangles_wanted, 2 * cap)));
   front.reserve(vertices + vertices / 16 + 64);
   // Each component conquers a triangle, so the header's count bounds them.
   while (dec->decode(&models.another_component)) {

@@ -52,6 +52,10 @@ int64_t encode_valences(const ClosedMesh& mesh, RangeEncoder* enc, std::vector<i
 // anything inconsistent is a kParseError naming what, as is a stream whose
 // splits and merges would walk more than walk_budget(max_triangles) list
 // steps. O(T) as the encoder, and never more than that budget.
-Status decode_valences(RangeDecoder* dec, int32_t max_vertices, int64_t max_triangles, DecodedConnectivity* out);
+// `expected_triangles` (when >= 0: the triangles the caller expects, its
+// mesh's before the cut's dummies) sizes the arrays up front instead of the
+// bounds, which a real stream's dummies come nowhere near.
+Status decode_valences(RangeDecoder* dec, int32_t max_vertices, int64_t max_triangles, DecodedConnectivity* out,
+                       int64_t expected_triangles = -1);
 
 }  // namespace gab

@@ -90,7 +90,7 @@ Status decode_valence_section(const uint8_t* data, size_t size, int32_t n, int32
   RangeDecoder dec(data, size);
   DecodedConnectivity decoded;
   GAB_RETURN_IF_ERROR(
-      decode_valences(&dec, static_cast<int32_t>(max_vertices), 4 * static_cast<int64_t>(t), &decoded));
+      decode_valences(&dec, static_cast<int32_t>(max_vertices), 4 * static_cast<int64_t>(t), &decoded, t));
 
   SectionModels models;
   const uint32_t stitches = models.stitch_count.decode(&dec);
@@ -123,6 +123,9 @@ Status decode_valence_section(const uint8_t* data, size_t size, int32_t n, int32
     }
   }
   triangles->clear();
+  // At most the decoded triangles (grown by doubling, the array would end up
+  // to twice its size).
+  triangles->reserve(std::min(decoded.triangles.size(), 3 * static_cast<size_t>(t)));
   for (size_t i = 0; i < decoded.triangles.size(); i += 3) {
     const int32_t a = number[decoded.triangles[i]], b = number[decoded.triangles[i + 1]],
                   c = number[decoded.triangles[i + 2]];

@@ -354,6 +354,7 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
   if (header.refined() && !stats->truncated && whole) {
     GAB_RETURN_IF_ERROR(apply_refinement(&in, &state));
   }
+  std::vector<double>().swap(state.shape);  // the last prediction: not beside the final shape's work
   const auto t_solve = std::chrono::steady_clock::now();
   GAB_RETURN_IF_ERROR(state.rec.shape(&out.positions));
   stats->solve_s += seconds_since(t_solve);
