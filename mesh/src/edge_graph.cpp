@@ -27,7 +27,18 @@ EdgeGraph build_edge_graph(const Mesh& mesh) {
   std::vector<int32_t> offsets(n + 1, 0);
   for (int32_t v = 0; v < n; ++v) {
     auto begin = raw.begin() + g.offsets[v], end = raw.begin() + g.offsets[v + 1];
-    std::sort(begin, end);
+    if (end - begin <= 32) {
+      // A usual list (twice the vertex's triangles): insertion sort, a few
+      // times quicker than std::sort at this length.
+      for (auto it = begin + (begin != end); it < end; ++it) {
+        const int32_t x = *it;
+        auto hole = it;
+        for (; hole != begin && *(hole - 1) > x; --hole) *hole = *(hole - 1);
+        *hole = x;
+      }
+    } else {
+      std::sort(begin, end);
+    }
     int32_t last = -1;
     for (auto it = begin; it != end; ++it) {
       if (*it != last && *it != v) g.neighbors.push_back(*it);
