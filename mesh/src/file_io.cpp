@@ -113,7 +113,8 @@ Status write_in_place(const std::string& path, std::string_view bytes) {
 }
 
 // A temporary file beside `target`, renamed over it; `mode` its permission
-// bits (0666 less the umask for a new file). Errors name `path`.
+// bits and flushed to disk first when `keep_mode` (a file replaced; else
+// 0666 less the umask, a new file). Errors name `path`.
 Status replace_atomically(const std::string& path, const std::string& target, std::string_view bytes,
                           mode_t mode, bool keep_mode) {
   static std::atomic<unsigned> counter{0};
@@ -128,7 +129,7 @@ Status replace_atomically(const std::string& path, const std::string& target, st
   const int slot = register_partial(temp);
   int err = write_all(fd, bytes);
   if (err == 0 && keep_mode && ::fchmod(fd, mode) != 0) err = errno;
-  if (err == 0 && ::fsync(fd) != 0) err = errno;
+  if (err == 0 && keep_mode && ::fsync(fd) != 0) err = errno;  // a file replaced: durable first
   if (::close(fd) != 0 && err == 0) err = errno;
   if (err == 0 && ::rename(temp.c_str(), target.c_str()) != 0) err = errno;
   if (err != 0) ::unlink(temp.c_str());

@@ -15,9 +15,12 @@ Status read_file(const std::string& path, std::string* bytes);
 
 // Writes `bytes` to the output `path` the way its user means it:
 // - a new path or a regular file: atomically. A temporary file beside the
-//   target (PATH.gab-partial-PID-N, created exclusively) is flushed to disk,
-//   then renamed over it, keeping a replaced file's permission bits: a reader
-//   sees the old file or the new one, and on failure the target is untouched.
+//   target (PATH.gab-partial-PID-N, created exclusively) is renamed over it,
+//   keeping a replaced file's permission bits: a reader sees the old file or
+//   the new one, and on failure the target is untouched. A file it replaces
+//   is flushed to disk first, so that a crash cannot leave a part of it in
+//   the old one's place; a new path is not (nothing there to lose, and the
+//   flush would cost a decode of a small mesh more than the decode).
 // - a symbolic link: followed (a dangling one too); its target is written.
 // - anything else that exists (a device such as /dev/null, /dev/stdout, a
 //   FIFO): opened and written in place, every write error reported (ENOSPC
