@@ -9,7 +9,7 @@
 namespace gab_fuzz {
 
 inline gab::Mesh seed_torus() { return gab::testing_util::torus(10, 6); }
-// torus-iterative-large's: past 2^15 vertices.
+// torus-iterative-large's: past 2^14 vertices.
 inline gab::Mesh large_seed_torus() { return gab::testing_util::torus(192, 180); }
 
 }  // namespace gab_fuzz

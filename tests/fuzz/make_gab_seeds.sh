@@ -4,7 +4,7 @@
 #   bash tests/fuzz/make_gab_seeds.sh build/apps/gab
 # Each seed is one options byte (see gab_fuzzer.cpp) then a file made from
 # the 10 x 6 torus of gab_fuzz_mesh.h: one per variant of format version 2;
-# torus-iterative-large from its 192 x 180 torus (past 2^15 vertices, where
+# torus-iterative-large from its 192 x 180 torus (past 2^14 vertices, where
 # operator 2 predicts a chunk around its vertices alone).
 # The seeds are golden files (their bytes are pinned): regenerate them only
 # for a new format version, then update the pinned figures in the golden
