@@ -536,30 +536,49 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
   double scale = 1.0;
   // r = w^2 S c - (L^T L + w^2 S) x, in double (L x first, freed after),
   // and per block its largest |entry| (a maximum is the same in any order).
+  // Each vertex's four doubles in two halves of two (x y, z 0): in
+  // registers on every x86-64, each lane rounding as with one vector of four.
   std::vector<v4d> residual(n);
   {
     std::vector<v4d> lx(n);
-    auto x_of = [x](int32_t v) { return v4d{x[3 * v], x[3 * v + 1], x[3 * v + 2], 0.0}; };
+    double* lx_at = reinterpret_cast<double*>(lx.data());
+    double* residual_at = reinterpret_cast<double*>(residual.data());
+    auto xy_of = [x](int32_t v) { return load2(x + 3 * static_cast<size_t>(v)); };
+    auto z0_of = [x](int32_t v) { return v2d{x[3 * static_cast<size_t>(v) + 2], 0.0}; };
     team.run([&](int32_t begin, int32_t end, int32_t) {
       for (int32_t v = begin; v < end; ++v) {
-        v4d s = static_cast<double>(offsets[v + 1] - offsets[v]) * x_of(v);
-        for (int32_t e = offsets[v]; e < offsets[v + 1]; ++e) s -= x_of(neighbors[e]);
-        lx[v] = s;
+        const double d = static_cast<double>(offsets[v + 1] - offsets[v]);
+        v2d xy = d * xy_of(v), z0 = d * z0_of(v);
+        for (int32_t e = offsets[v]; e < offsets[v + 1]; ++e) {
+          xy -= xy_of(neighbors[e]);
+          z0 -= z0_of(neighbors[e]);
+        }
+        store2(lx_at + 4 * static_cast<size_t>(v), xy);
+        store2(lx_at + 4 * static_cast<size_t>(v) + 2, z0);
       }
     });
     team.run([&](int32_t begin, int32_t end, int32_t b) {
       double largest = 0.0;
       for (int32_t v = begin; v < end; ++v) {
-        v4d s = static_cast<double>(offsets[v + 1] - offsets[v]) * lx[v];
-        for (int32_t e = offsets[v]; e < offsets[v + 1]; ++e) s -= lx[neighbors[e]];
-        v4d rv = -s;
+        const double d = static_cast<double>(offsets[v + 1] - offsets[v]);
+        const double* own = lx_at + 4 * static_cast<size_t>(v);
+        v2d xy = d * load2(own), z0 = d * load2(own + 2);
+        for (int32_t e = offsets[v]; e < offsets[v + 1]; ++e) {
+          const double* u = lx_at + 4 * static_cast<size_t>(neighbors[e]);
+          xy -= load2(u);
+          z0 -= load2(u + 2);
+        }
+        xy = -xy;
+        z0 = -z0;
         const int32_t a = anchor_of[v];
         if (a >= 0) {
           const double* c = &coefficients_[3 * static_cast<size_t>(a)];
-          rv += w2 * (v4d{c[0], c[1], c[2], 0.0} - x_of(v));
+          xy += w2 * (load2(c) - xy_of(v));
+          z0 += w2 * (v2d{c[2], 0.0} - z0_of(v));
         }
-        residual[v] = rv;
-        for (int c = 0; c < 3; ++c) largest = std::max(largest, std::fabs(rv[c]));
+        store2(residual_at + 4 * static_cast<size_t>(v), xy);
+        store2(residual_at + 4 * static_cast<size_t>(v) + 2, z0);
+        largest = std::max({largest, std::fabs(xy[0]), std::fabs(xy[1]), std::fabs(z0[0])});
       }
       partial[b] = v4d{largest, 0.0, 0.0, 0.0};
     });
