@@ -195,7 +195,10 @@ Status estimate(EncodeContext& ctx, const EncodeCandidate& candidate, Estimate* 
   if (options.layout != FileLayout::kLevels) in_selection_order = encode_selection_layout(selection.schedule, grid);
   const bool try_levels = options.layout != FileLayout::kSelectionOrder;
   if (try_levels) {
-    const double growth = options.chunk_growth > 0 ? options.chunk_growth : default_level_growth(selection.flops);
+    const bool iterative = ctx.reconstruction != kGabReconstructionGlobal;
+    const double growth = options.chunk_growth > 0
+                              ? options.chunk_growth
+                              : default_level_growth(selection.flops, iterative, ctx.mesh.num_vertices());
     GAB_RETURN_IF_ERROR(encode_level_layout(selection.schedule, ctx.graph, options.weight, growth, options.threads,
                                             ctx.ordering, ctx.reconstruction, grid, &in_levels));
   }

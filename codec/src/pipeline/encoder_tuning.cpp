@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "gab/codec/gab_format.h"
+#include "reconstruction/shape_operator.h"
 
 namespace gab {
 
@@ -18,7 +19,10 @@ double default_batch_fraction(double flops) {
 
 double default_chunk_growth(double flops) { return 4.0 * std::pow(std::max(1.0, flops / 2e9), 0.6); }
 
-double default_level_growth(double flops) { return 2.0 * std::pow(std::max(1.0, flops / 2e9), 0.6); }
+double default_level_growth(double flops, bool iterative, int32_t n) {
+  if (iterative && n > kLocalPredictionMostVertices) return kIterativeLevelGrowth;
+  return 2.0 * std::pow(std::max(1.0, flops / 2e9), 0.6);
+}
 
 int default_bits(double extent_over_diagonal, double target_rms_rel, double target_linf_rel) {
   if (!(target_rms_rel > 0) && !(target_linf_rel > 0)) return 12;

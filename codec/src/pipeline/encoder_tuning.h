@@ -33,8 +33,15 @@ double default_chunk_growth(double flops);
 
 // Level growth (level layout) for a system whose factorization costs
 // `flops`: 2 while a refactorization is cheap, growing as (flops / 2e9)^0.6
-// beyond like default_chunk_growth.
-double default_level_growth(double flops);
+// beyond like default_chunk_growth. The iterative operator's on meshes
+// past kLocalPredictionMostVertices is kIterativeLevelGrowth: each level
+// costs its decode a prediction over (nearly) the whole mesh, and at 1e-3
+// growth 2 / 3 / 4 gave feline 34,279 / 34,764 / 35,214 bytes and 0.159 /
+// 0.142 / 0.124 s of decode, nefertiti 35,711 / 35,876 / 36,103 and 0.153 /
+// 0.137 / 0.127 s (the whole mesh over a 10 Mbit/s link: 1 ms of bytes for
+// 30 ms of decode). Smaller meshes keep 2: there whole-mesh work is cheap.
+constexpr double kIterativeLevelGrowth = 4.0;
+double default_level_growth(double flops, bool iterative, int32_t n);
 
 // Refinement with an RMS target: the greedy loop first aims the unrefined
 // shape this much above the target, then at what the last try measured.
