@@ -257,6 +257,20 @@ class DracoMesh:
         return res
 
 
+def tools_missing(gab):
+    """Why a comparison cannot run (Draco's tools or the gab binary missing), or None."""
+    if shutil.which("draco_encoder") is None or shutil.which("draco_decoder") is None:
+        return "draco_encoder/draco_decoder not installed (apt-get install -y draco): skipping"
+    if not os.access(gab, os.X_OK):
+        return f"gab binary not found at {gab} (build it first): skipping"
+    return None
+
+
+def default_meshes():
+    """Every OFF of ../shared/meshes next to the repository."""
+    return sorted(glob.glob(os.path.join(ROOT, "..", "shared", "meshes", "*.off")))
+
+
 def draco_at(dm, target):
     """Smallest qp with rms <= target, and the qp just below it."""
     # uniform quantization: rms ~ step / 2 (sqrt(3 / 12)); start from that guess
@@ -305,15 +319,11 @@ def main():
     ap.add_argument("--reorder", action="store_true", help="gab compress --reorder (vertex order not kept)")
     args = ap.parse_args()
 
-    if shutil.which("draco_encoder") is None or shutil.which("draco_decoder") is None:
-        print("draco_encoder/draco_decoder not installed (apt-get install -y draco): skipping")
+    missing = tools_missing(args.gab)
+    if missing:
+        print(missing)
         return 0
-    if not os.access(args.gab, os.X_OK):
-        print(f"gab binary not found at {args.gab} (build it first): skipping")
-        return 0
-    meshes = args.meshes
-    if meshes is None:
-        meshes = sorted(glob.glob(os.path.join(ROOT, "..", "shared", "meshes", "*.off")))
+    meshes = args.meshes if args.meshes is not None else default_meshes()
     if not meshes:
         print("no meshes found: skipping")
         return 0

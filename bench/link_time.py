@@ -23,11 +23,8 @@ missing.
 """
 
 import argparse
-import glob
 import os
-import shutil
 import statistics
-import subprocess
 import sys
 import tempfile
 import time
@@ -35,6 +32,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
+sys.dont_write_bytecode = True  # no __pycache__ left in bench/
 import draco_compare  # noqa: E402  (its OFF reading and Draco quantization search)
 
 
@@ -56,13 +54,11 @@ def main():
     ap.add_argument("--speeds", default="1,10", help="link speeds in Mbit/s, a comma list")
     args = ap.parse_args()
 
-    if shutil.which("draco_encoder") is None or shutil.which("draco_decoder") is None:
-        print("draco_encoder/draco_decoder not installed (apt-get install -y draco): skipping")
+    missing = draco_compare.tools_missing(args.gab)
+    if missing:
+        print(missing)
         return 0
-    if not os.access(args.gab, os.X_OK):
-        print(f"gab binary not found at {args.gab} (build it first): skipping")
-        return 0
-    meshes = args.meshes or sorted(glob.glob(os.path.join(ROOT, "..", "shared", "meshes", "*.off")))
+    meshes = args.meshes if args.meshes is not None else draco_compare.default_meshes()
     if not meshes:
         print("no meshes found: skipping")
         return 0

@@ -85,7 +85,7 @@ int gab_ordering_from_name(const char* name);
    the file: the shape the anchors make. */
 #define GAB_SOLVER_AUTO 0      /* "auto": iterative, or global when refine is set (the refinement needs it) */
 #define GAB_SOLVER_GLOBAL 1    /* "global": the paper's factored least squares; files a few percent smaller,
-                                  decodes several times slower in several times the memory */
+                                  decodes an order of magnitude slower in several times the memory */
 #define GAB_SOLVER_ITERATIVE 2 /* "iterative": fixed conjugate-gradient steps, decode cost linear in n */
 
 /* The GAB_SOLVER_* value a name stands for ("auto", "global" or
