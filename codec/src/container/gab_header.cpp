@@ -123,7 +123,8 @@ Status read_gab_header(ByteReader* in, size_t file_size, GabHeader* h) {
   if (reconstruction > kGabReconstructionIterativeLocal) {
     return Status::Error(StatusCode::kUnsupported,
                          "unsupported .gab reconstruction operator " + std::to_string(reconstruction) +
-                             " (this build knows 0: global least squares, 1: iterative, 2: iterative, local predictions)");
+                             " (this build knows 0: global least squares, 1: iterative, 2: iterative, local "
+                             "predictions)");
   }
   if (reserved != 0) {
     return Status::Error(StatusCode::kUnsupported, "unsupported .gab header: reserved byte 13 is " + hex_byte(reserved));

@@ -6,9 +6,10 @@
 // detail chunk, prefixes).
 // Each seed must keep its bytes, keep decoding to its pinned shape, and be
 // what the encoder writes today for its options (but operator 1's, which it
-// no longer writes: an earlier encoder's, decoded as they are). A change that fails here
-// is a format change: version 2 files exist, so it needs a new version or
-// a new value in a reserved header field (docs/format.md), not new seeds.
+// no longer writes: an earlier encoder's, decoded as they are). A change
+// that fails here is a format change: version 2 files exist, so it needs a
+// new version or a new value in a reserved header field (docs/format.md),
+// not new seeds.
 #include <dirent.h>
 #include <gtest/gtest.h>
 
@@ -126,7 +127,8 @@ const std::vector<Golden>& goldens() {
        "--anchors 20 --chunk-growth 1.5 --layout selection --solver iterative"},
       {"torus-iterative-detail", 0x4547a313ea78c562ull, kGabFlagDetail, 6, 15, 4, 0.000098065,
        "--error 1e-4 --detail on --solver iterative"},
-      {"torus-iterative-large", 0x2b94270f1256cd4aull, kLevels, 12, 300, 3, 0.009721790, "--anchors 300 --solver iterative", true},
+      {"torus-iterative-large", 0x2b94270f1256cd4aull, kLevels, 12, 300, 3, 0.009721790,
+       "--anchors 300 --solver iterative", true},
       // Operator 1, made by an earlier encoder with torus-iterative*'s options.
       {"torus-operator1", 0xa177618616521ad2ull, kLevels, 12, 20, 4, 0.021768607, nullptr},
       {"torus-operator1-selection", 0xd5c603d01d806202ull, 0, 12, 20, 8, 0.021768607, nullptr},
