@@ -4,10 +4,12 @@
 
 namespace gab {
 
-EdgeGraph build_edge_graph(const Mesh& mesh) {
-  const int32_t n = mesh.num_vertices();
-  const int32_t nt = mesh.num_triangles();
-  const int32_t* tri = mesh.triangles.data();
+EdgeGraph build_edge_graph(const Mesh& mesh) { return build_edge_graph(mesh.num_vertices(), mesh.triangles); }
+
+EdgeGraph build_edge_graph(int32_t num_vertices, const std::vector<int32_t>& triangles) {
+  const int32_t n = num_vertices;
+  const int32_t nt = static_cast<int32_t>(triangles.size() / 3);
+  const int32_t* tri = triangles.data();
   EdgeGraph g;
   g.offsets.assign(n + 1, 0);
   // Each triangle offers each of its vertices two neighbours; count, fill,

@@ -673,6 +673,10 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
   for (int32_t v = 0; v < n_; ++v) {
     for (int c = 0; c < 3; ++c) x[3 * v + c] += static_cast<double>(correction[v][c]) / scale;
   }
+  // The steps' vectors go before the shape is copied out: not beside it
+  // (the decode's peak).
+  for (std::vector<v4f>* vectors : {&r, &p, &q, &t, &correction}) std::vector<v4f>().swap(*vectors);
+  std::vector<float>().swap(inv_diag);
   *positions = shape_;
   return Status::Ok();
 }

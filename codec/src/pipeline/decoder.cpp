@@ -307,8 +307,9 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
   const auto connectivity_start = std::chrono::steady_clock::now();
   GAB_RETURN_IF_ERROR(decode_connectivity_section(connectivity, header, options.connectivity, &out.triangles));
   stats->connectivity_s = seconds_since(connectivity_start);
-  out.positions.assign(static_cast<size_t>(n) * 3, 0.0);
-  const EdgeGraph graph = build_edge_graph(out);
+  // The positions come with the final shape: not zero-filled through the
+  // decode beside its work (the decode's peak).
+  const EdgeGraph graph = build_edge_graph(n, out.triangles);
   const bool factored = header.reconstruction == kGabReconstructionGlobal;
   stats->solver = solver_of_header(header.reconstruction);
   if (!factored) {

@@ -20,6 +20,8 @@ struct EdgeGraph {
 // Edges of every triangle, duplicates and degenerate (repeated-vertex)
 // edges removed. O(triangles + vertices).
 EdgeGraph build_edge_graph(const Mesh& mesh);
+// The same from the triangles (3 indices each, in [0, num_vertices)) alone.
+EdgeGraph build_edge_graph(int32_t num_vertices, const std::vector<int32_t>& triangles);
 
 // component[v] in 0..count-1, numbered by smallest vertex. O(V + E).
 std::vector<int32_t> connected_components(const EdgeGraph& graph, int32_t* count);
