@@ -86,7 +86,7 @@ class IterativeReconstruction {
   // start before its harmonic sweeps. Changes nothing. O(n + edges).
   std::vector<double> nearest_anchor_shape() const;
   // The start (what solve(0) gives after restart) at the vertices `at`
-  // only, the same bits: positions[3 v ..] for v in at (positions sized 3 n;
+  // only, the same values: positions[3 v ..] for v in at (positions sized 3 n;
   // its other entries untouched). Reads the kStartSweeps-ring around `at`,
   // so its cost is that ring's size, not n. kFewestHopsLowest only.
   Status start_at(const std::vector<int32_t>& at, std::vector<double>* positions);
