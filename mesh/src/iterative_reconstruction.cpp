@@ -338,12 +338,20 @@ std::vector<double> IterativeReconstruction::nearest_anchor_shape() const {
 }
 
 Status IterativeReconstruction::start_at(const std::vector<int32_t>& at, std::vector<double>* positions) {
+  return start_values(&at, positions);
+}
+
+Status IterativeReconstruction::start(std::vector<double>* positions) { return start_values(nullptr, positions); }
+
+Status IterativeReconstruction::start_values(const std::vector<int32_t>* at_or_all, std::vector<double>* positions) {
   if (graph_ == nullptr) return Status::Error(StatusCode::kInvalidArgument, "start_at before init");
   if (rule_ != NearestRule::kFewestHopsLowest) {
     return Status::Error(StatusCode::kInvalidArgument, "start_at needs the fewest-hops nearest rule");
   }
   const size_t n = static_cast<size_t>(n_);
   if (positions->size() != 3 * n) return Status::Error(StatusCode::kInvalidArgument, "positions need 3 per vertex");
+  const std::vector<int32_t> none;
+  const std::vector<int32_t>& at = at_or_all ? *at_or_all : none;
   for (int32_t v : at) {
     if (v < 0 || v >= n_) return Status::Error(StatusCode::kInvalidArgument, "start_at: vertex out of range");
   }
@@ -375,7 +383,7 @@ Status IterativeReconstruction::start_at(const std::vector<int32_t>& at, std::ve
   // near in memory), by blocks on the threads; the values at `at` are the
   // same. Fewer: only those within reach, found breadth-first.
   constexpr size_t kBall = 3 * kStartSweeps * (kStartSweeps + 1) + 1;  // a regular triangulation's
-  if (at.size() * kBall >= n) {
+  if (!at_or_all || at.size() * kBall >= n) {
     StepTeam team(threads_, n_);
     team.run([&](int32_t begin, int32_t end, int32_t) {
       for (int32_t v = begin; v < end; ++v) start(v);
@@ -432,11 +440,16 @@ Status IterativeReconstruction::start_at(const std::vector<int32_t>& at, std::ve
       std::swap(from, to);
     }
   }
-  for (int32_t v : at) {
+  auto put = [&](int32_t v) {
     for (int k = 0; k < 3; ++k) {
       (*positions)[3 * static_cast<size_t>(v) + k] =
           origin[k] + static_cast<double>(from[4 * static_cast<size_t>(v) + k]) / scale[k];
     }
+  };
+  if (at_or_all) {
+    for (int32_t v : at) put(v);
+  } else {
+    for (int32_t v = 0; v < n_; ++v) put(v);
   }
   return Status::Ok();
 }
@@ -463,11 +476,9 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
   const bool fresh = shape_.empty();
   const size_t n = static_cast<size_t>(n_);
   if (fresh && rule_ == NearestRule::kFewestHopsLowest) {
-    // Operator 2's start: start_at's, at every vertex.
-    std::vector<int32_t> all(n);
-    for (int32_t v = 0; v < n_; ++v) all[v] = v;
-    shape_.assign(3 * n, 0.0);
-    GAB_RETURN_IF_ERROR(start_at(all, &shape_));
+    // Operator 2's start, at every vertex.
+    shape_.resize(3 * n);
+    GAB_RETURN_IF_ERROR(start(&shape_));
     // Its buffers are not needed again before the next prediction: not
     // beside the steps' own (the decode's peak).
     std::vector<float>().swap(from_);

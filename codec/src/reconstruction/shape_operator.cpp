@@ -79,10 +79,7 @@ Status ShapeOperator::prediction(const std::vector<int32_t>* at, std::vector<dou
     return iterative_->solve(steps, positions);
   }
   positions->resize(3 * static_cast<size_t>(iterative_->num_vertices()));
-  if (at) return iterative_->start_at(*at, positions);
-  std::vector<int32_t> all(iterative_->num_vertices());
-  for (size_t v = 0; v < all.size(); ++v) all[v] = static_cast<int32_t>(v);
-  return iterative_->start_at(all, positions);
+  return at ? iterative_->start_at(*at, positions) : iterative_->start(positions);
 }
 
 Status ShapeOperator::greedy_shape(std::vector<double>* positions) {

@@ -90,6 +90,8 @@ class IterativeReconstruction {
   // its other entries untouched). Reads the kStartSweeps-ring around `at`,
   // so its cost is that ring's size, not n. kFewestHopsLowest only.
   Status start_at(const std::vector<int32_t>& at, std::vector<double>* positions);
+  // start_at at every vertex (every entry of positions set). O(n + edges).
+  Status start(std::vector<double>* positions);
   // Forgets the shape: the next solve starts from the nearest-anchor start,
   // so its result depends on the anchors and coefficients alone. O(1).
   void restart() { shape_.clear(); }
@@ -109,6 +111,8 @@ class IterativeReconstruction {
   // kFewestHopsLowest: lowers nearest_ breadth-first from `anchors`
   // (just recorded) where they are nearer, by the rule's order.
   void update_nearest(const std::vector<int32_t>& anchors);
+  // start_at at `at_or_all`, or at every vertex when it is null.
+  Status start_values(const std::vector<int32_t>* at_or_all, std::vector<double>* positions);
   // Operator 2's frame for the start in single precision: per axis the
   // anchors' lowest coefficient and 2^-E, their extent = m 2^E, m in [0.5, 1).
   void start_frame(double origin[3], double scale[3]) const;
