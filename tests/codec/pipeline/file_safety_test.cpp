@@ -98,6 +98,41 @@ TEST(FileSafety, EveryByteFlipIsAnErrorOrAValidMesh) {
   }
 }
 
+TEST(FileSafety, AFileReadAsAnotherOperatorIsAnErrorOrAFiniteMesh) {
+  // Header byte 12 swapped with the header's checksum made whole again: the
+  // chunks are then predicted by an operator they were not coded with
+  // (operator 2's local predictions read as operator 1's or the global
+  // one's, and the other way round). Wrong shapes, but never a crash, never
+  // a non-finite coordinate: a refusal or a mesh.
+  const std::string corpus = std::string(GAB_FUZZ_DIR) + "/corpus/gab/";
+  int decoded = 0;
+  for (const char* name : {"torus-iterative-large", "torus-iterative", "torus-operator1", "torus-levels"}) {
+    std::string bytes;
+    ASSERT_TRUE(read_file(corpus + name, &bytes).ok()) << name;
+    const std::vector<uint8_t> file(bytes.begin() + 1, bytes.end());  // past the options byte
+    const size_t header = header_size(file);
+    for (uint8_t code : {kGabReconstructionGlobal, kGabReconstructionIterative, kGabReconstructionIterativeLocal}) {
+      if (code == file[12]) continue;
+      std::vector<uint8_t> bad = file;
+      bad[12] = code;
+      const uint32_t crc = crc32(bad.data(), header - 4);
+      for (int b = 0; b < 4; ++b) bad[header - 4 + b] = static_cast<uint8_t>(crc >> (8 * b));
+      Mesh out;
+      DecodeStats ds;
+      const Status s = decode_mesh(bad.data(), bad.size(), DecodeOptions(), &out, &ds);
+      if (!s.ok()) {
+        // Corrupt, or (read as the global operator) a factor over the budget.
+        EXPECT_TRUE(s.code() == StatusCode::kParseError || s.code() == StatusCode::kResourceExhausted)
+            << name << " as " << int(code) << ": " << s.message();
+        continue;
+      }
+      ++decoded;
+      for (double x : out.positions) ASSERT_TRUE(std::isfinite(x)) << name << " as " << int(code);
+    }
+  }
+  EXPECT_GT(decoded, 0);
+}
+
 TEST(FileSafety, DamageInsideAConnectivityBlockIsAnErrorOrAValidMesh) {
   // Every byte of the connectivity block flipped with the block's checksum
   // made whole again, so the damage reaches the decoders: the variants the
