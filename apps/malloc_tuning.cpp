@@ -15,11 +15,14 @@ namespace cli {
 void tune_malloc() {
 #if defined(__GLIBC__)
   constexpr int kMmapThreshold = 32 << 20;
+  constexpr int kTrimThreshold = 256 << 20;
   const char* tunables = std::getenv("GLIBC_TUNABLES");
-  if (tunables == nullptr || std::strstr(tunables, "glibc.malloc.mmap_threshold") == nullptr) {
-    // Advisory: a refusal leaves glibc's defaults, which work too.
-    (void)mallopt(M_MMAP_THRESHOLD, kMmapThreshold);
-  }
+  const auto user_set = [tunables](const char* name) {
+    return tunables != nullptr && std::strstr(tunables, name) != nullptr;
+  };
+  // Advisory: a refusal leaves glibc's defaults, which work too.
+  if (!user_set("glibc.malloc.mmap_threshold")) (void)mallopt(M_MMAP_THRESHOLD, kMmapThreshold);
+  if (!user_set("glibc.malloc.trim_threshold")) (void)mallopt(M_TRIM_THRESHOLD, kTrimThreshold);
 #endif
   set_heap_release_after_ordering(true);
 }
