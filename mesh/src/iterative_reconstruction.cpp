@@ -263,8 +263,16 @@ void IterativeReconstruction::update_nearest(const std::vector<int32_t>& anchors
   // neighbours. Within a layer the lowest anchor wins whatever the
   // frontier's order, so the result is the rule's. One key per vertex,
   // (hops << 32) | anchor, compares both at once.
+  //
+  // A vertex lowered twice in a layer joins the next frontier once (a bit
+  // per vertex marks it). A frontier of many vertices is taken in vertex
+  // order, read off those bits: its neighbours' keys are then near in
+  // memory, where the order of discovery scatters them (igea, anchors 2-7%
+  // of its vertices: 1.7-2x faster). A small one is taken as found: reading
+  // the bits costs n / 64 words, at most 8 per vertex taken.
   const EdgeGraph& g = *graph_;
   std::vector<int32_t> frontier, next;
+  std::vector<uint64_t> joined((static_cast<size_t>(n_) + 63) / 64, 0);
   for (int32_t a : anchors) {
     nearest_[a] = static_cast<uint64_t>(a);
     frontier.push_back(a);
@@ -277,8 +285,23 @@ void IterativeReconstruction::update_nearest(const std::vector<int32_t>& anchors
         const int32_t w = g.neighbors[e];
         if (key >= nearest_[w]) continue;
         nearest_[w] = key;
+        uint64_t& word = joined[static_cast<size_t>(w) >> 6];
+        const uint64_t bit = uint64_t{1} << (w & 63);
+        if (word & bit) continue;
+        word |= bit;
         next.push_back(w);
       }
+    }
+    if (next.size() * 8 >= joined.size()) {
+      next.clear();
+      for (size_t i = 0; i < joined.size(); ++i) {
+        for (uint64_t word = joined[i]; word != 0; word &= word - 1) {
+          next.push_back(static_cast<int32_t>(64 * i + static_cast<size_t>(__builtin_ctzll(word))));
+        }
+        joined[i] = 0;
+      }
+    } else {
+      for (int32_t w : next) joined[static_cast<size_t>(w) >> 6] = 0;
     }
     frontier.swap(next);
   }
