@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <queue>
 #include <utility>
 
 #include "gab/mesh/graph_distance.h"
@@ -43,42 +42,62 @@ Status level_order(const EdgeGraph& graph, const std::vector<int32_t>& spread, c
   constexpr int32_t kFar = std::numeric_limits<int32_t>::max();
   for (int32_t& d : distance) d = d < 0 ? kFar : d;
   std::vector<char> candidate(n, 0);
-  // Max-heap of (distance, -vertex): the farthest first, ties to the
-  // smaller index. Entries go stale when a distance shrinks (a fresh one is
-  // pushed) or the vertex is picked; stale ones are skipped when popped.
-  std::priority_queue<std::pair<int32_t, int32_t>> heap;
   for (int32_t v : rest) {
     if (v < 0 || v >= n || candidate[v]) {
       return Status::Error(StatusCode::kInvalidArgument, "level order: vertices out of range or repeated");
     }
     candidate[v] = 1;
-    heap.push({distance[v], -v});
   }
+  // A bucket per distance, and one for the unreached (infinitely far: taken
+  // first), each taken in increasing vertex index once it is the farthest
+  // left: the farthest first, ties to the smaller index. After the
+  // unreached, a pick only brings vertices closer than the farthest, so a
+  // bucket being taken gets no new entries. An entry goes stale when its
+  // vertex comes closer (a fresh one is put in a lower bucket) or is picked,
+  // and is skipped. Sorting a bucket once costs far less than a heap's work
+  // per entry.
+  std::vector<std::vector<int32_t>> buckets;
+  std::vector<int32_t> unreached;
+  auto put = [&](int32_t v, int32_t d) {
+    if (d == kFar) {
+      unreached.push_back(v);
+      return;
+    }
+    if (static_cast<size_t>(d) >= buckets.size()) buckets.resize(static_cast<size_t>(d) + 1);
+    buckets[d].push_back(v);
+  };
+  for (int32_t v : rest) put(v, distance[v]);
   order->reserve(count);
   std::vector<int32_t> queue;
-  while (static_cast<int32_t>(order->size()) < count && !heap.empty()) {
-    const auto [d, minus_v] = heap.top();
-    heap.pop();
-    const int32_t v = -minus_v;
-    if (!candidate[v] || d != distance[v]) continue;
-    candidate[v] = 0;
-    order->push_back(v);
-    // BFS from v, only where it brings a vertex closer; first-in first-out
-    // from one source visits in order of distance, so each vertex settles
-    // at its new distance when first reached.
-    distance[v] = 0;
-    queue.assign(1, v);
-    for (size_t head = 0; head < queue.size(); ++head) {
-      const int32_t x = queue[head];
-      const int32_t next = distance[x] + 1;
-      for (int32_t p = graph.offsets[x]; p < graph.offsets[x + 1]; ++p) {
-        const int32_t u = graph.neighbors[p];
-        if (next >= distance[u]) continue;
-        distance[u] = next;
-        queue.push_back(u);
-        if (candidate[u]) heap.push({next, -u});
+  auto take = [&](std::vector<int32_t>* bucket, int32_t d) {
+    std::sort(bucket->begin(), bucket->end());
+    for (size_t i = 0; i < bucket->size() && static_cast<int32_t>(order->size()) < count; ++i) {
+      const int32_t v = (*bucket)[i];
+      if (!candidate[v] || distance[v] != d) continue;
+      candidate[v] = 0;
+      order->push_back(v);
+      // BFS from v, only where it brings a vertex closer; first-in first-out
+      // from one source visits in order of distance, so each vertex settles
+      // at its new distance when first reached.
+      distance[v] = 0;
+      queue.assign(1, v);
+      for (size_t head = 0; head < queue.size(); ++head) {
+        const int32_t x = queue[head];
+        const int32_t next = distance[x] + 1;
+        for (int32_t p = graph.offsets[x]; p < graph.offsets[x + 1]; ++p) {
+          const int32_t u = graph.neighbors[p];
+          if (next >= distance[u]) continue;
+          distance[u] = next;
+          queue.push_back(u);
+          if (candidate[u]) put(u, next);
+        }
       }
     }
+    std::vector<int32_t>().swap(*bucket);
+  };
+  take(&unreached, kFar);
+  for (size_t d = buckets.size(); d-- > 0 && static_cast<int32_t>(order->size()) < count;) {
+    take(&buckets[d], static_cast<int32_t>(d));  // puts go to buckets below d: no reallocation under it
   }
   return Status::Ok();
 }

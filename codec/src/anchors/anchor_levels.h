@@ -56,9 +56,8 @@ uint32_t level_growth16(double growth);
 // farthest-point order: each pick is the vertex of rest farthest in hops
 // from `spread` and the picks before it, ties to the smaller index; a vertex
 // that none of them reaches is infinitely far. O((V + E) * r) in the worst
-// case, r the number of times a vertex's distance shrinks (a few on meshes:
-// 7-13 ms for the shared meshes' anchor sets), plus O(log) heap work per
-// shrink of a rest vertex.
+// case, r the number of times a vertex's distance shrinks (a few on meshes),
+// plus a sort of each distance's entries (one per shrink of a rest vertex).
 Status level_order(const EdgeGraph& graph, const std::vector<int32_t>& spread, const std::vector<int32_t>& rest,
                    int32_t count, std::vector<int32_t>* order);
 

@@ -69,6 +69,55 @@ TEST(LevelLayout, LevelOrderIsFarthestFirstTiesToTheSmallerIndex) {
   EXPECT_FALSE(level_order(graph, {0}, {2}, 2, &order).ok());
 }
 
+TEST(LevelLayout, LevelOrderAgreesWithABruteForceFarthestPointSearch) {
+  // Every pick recomputed from scratch: breadth-first hops from the spread
+  // set and the picks so far, the farthest vertex of the rest left, ties to
+  // the smaller index, the unreached infinitely far. Spread sets of one
+  // vertex to hundreds on a torus, so picks tie often and distances shrink
+  // many times; beside it a strip of 120 vertices no spread vertex reaches,
+  // whose hops from its first pick run past the torus's farthest.
+  Mesh mesh = rough_torus(24, 16, 0.02);
+  const int32_t torus = mesh.num_vertices();
+  for (int32_t i = 0; i < 60; ++i) {
+    mesh.positions.insert(mesh.positions.end(), {i * 1.0, 5.0, 0.0, i * 1.0, 6.0, 0.0});
+    const int32_t a = torus + 2 * i;
+    if (i + 1 < 60) mesh.triangles.insert(mesh.triangles.end(), {a, a + 2, a + 1, a + 1, a + 2, a + 3});
+  }
+  const EdgeGraph graph = build_edge_graph(mesh);
+  const int32_t n = graph.num_vertices();
+  for (int32_t stride : {torus, 37, 5}) {
+    std::vector<int32_t> spread, rest;
+    for (int32_t v = 0; v < n; ++v) (v < torus && v % stride == 3 ? spread : rest).push_back(v);
+    std::vector<int32_t> expected, sources = spread;
+    std::vector<char> picked(n, 0);
+    const int32_t count = static_cast<int32_t>(rest.size()) * 3 / 4;
+    for (int32_t pick = 0; pick < count; ++pick) {
+      std::vector<int32_t> hops(n, -1), queue = sources;
+      for (int32_t v : sources) hops[v] = 0;
+      for (size_t head = 0; head < queue.size(); ++head) {
+        const int32_t u = queue[head];
+        for (int32_t p = graph.offsets[u]; p < graph.offsets[u + 1]; ++p) {
+          if (hops[graph.neighbors[p]] < 0) {
+            hops[graph.neighbors[p]] = hops[u] + 1;
+            queue.push_back(graph.neighbors[p]);
+          }
+        }
+      }
+      for (int32_t& h : hops) h = h < 0 ? n : h;  // unreached: farther than any hops
+      int32_t best = -1;
+      for (int32_t v : rest) {
+        if (!picked[v] && (best < 0 || hops[v] > hops[best])) best = v;  // rest is increasing: ties keep the smaller
+      }
+      picked[best] = 1;
+      expected.push_back(best);
+      sources.push_back(best);
+    }
+    std::vector<int32_t> order;
+    ASSERT_TRUE(level_order(graph, spread, rest, count, &order).ok());
+    EXPECT_EQ(order, expected) << "spread every " << stride << " vertices";
+  }
+}
+
 TEST(LevelLayout, DecodesToTheEncodersAnchorsAndSavesTheSelectionOrder) {
   const Mesh mesh = rough_torus(60, 30, 0.02);
   EncodeOptions options;
