@@ -56,6 +56,10 @@ int run_info(int argc, char** argv) {
     o.add("ordering", std::string(ordering_name(info.ordering)));
     o.add("reconstruction", static_cast<int64_t>(info.reconstruction));
     o.add("solver", std::string(solver_name(solver_of_header(info.reconstruction))));
+    o.add("prediction_sweeps", static_cast<int64_t>(info.prediction_sweeps));
+    o.add("final_sweeps", static_cast<int64_t>(info.final_sweeps));
+    o.add("final_steps16", static_cast<int64_t>(info.final_steps16));
+    o.add("final_most_steps", static_cast<int64_t>(info.final_most_steps));
     o.add("sections", static_cast<int64_t>(info.sections));
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
@@ -70,10 +74,17 @@ int run_info(int argc, char** argv) {
                  "; "
            : std::string()) +
       solver_name(file_solver) + " reconstruction";
-  std::printf("%d anchors in %d chunks%s%s; q = %d bits, w = %g, %s\n", info.anchors, info.chunks,
+  // An iterative file's decode work (operators 2 and 3; operator 1's is fixed).
+  char work[160] = "";
+  if (info.final_most_steps > 0 || info.final_sweeps > 0 || info.prediction_sweeps > 0) {
+    std::snprintf(work, sizeof work,
+                  " (start sweeps %d per prediction, %d final; final steps %g per anchor spacing, at most %d)",
+                  info.prediction_sweeps, info.final_sweeps, info.final_steps16 / 16.0, info.final_most_steps);
+  }
+  std::printf("%d anchors in %d chunks%s%s; q = %d bits, w = %g, %s%s\n", info.anchors, info.chunks,
               info.levels ? " (chunk 0 codes the anchor set, later chunks are the decoder's levels)" : "",
               info.truncated ? (" (truncated: " + std::to_string(info.chunks_present) + " complete)").c_str() : "",
-              info.bits, info.weight, solver.c_str());
+              info.bits, info.weight, solver.c_str(), work);
   std::printf("%zu bytes: geometry %zu (%.3f bits/vertex), connectivity %zu (%s)", info.bytes, info.geometry_bytes,
               bpv, info.connectivity_bytes,
               info.geometry_only ? "a hash" : "valence coded");

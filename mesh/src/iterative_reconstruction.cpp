@@ -245,6 +245,16 @@ Status IterativeReconstruction::init(const EdgeGraph& graph, double weight, cons
   return Status::Ok();
 }
 
+Status IterativeReconstruction::set_start_sweeps(int32_t prediction, int32_t final) {
+  if (prediction < 0 || prediction > kMostStartSweeps || final < 0 || final > kMostStartSweeps) {
+    return Status::Error(StatusCode::kInvalidArgument,
+                         "start sweeps must be in 0.." + std::to_string(kMostStartSweeps));
+  }
+  prediction_sweeps_ = prediction;
+  final_sweeps_ = final;
+  return Status::Ok();
+}
+
 Status IterativeReconstruction::add_anchors(const std::vector<int32_t>& anchors,
                                             const std::vector<double>& coefficients) {
   if (graph_ == nullptr) return Status::Error(StatusCode::kInvalidArgument, "add_anchors before init");
@@ -361,12 +371,15 @@ std::vector<double> IterativeReconstruction::nearest_anchor_shape() const {
 }
 
 Status IterativeReconstruction::start_at(const std::vector<int32_t>& at, std::vector<double>* positions) {
-  return start_values(&at, positions);
+  return start_values(&at, prediction_sweeps_, positions);
 }
 
-Status IterativeReconstruction::start(std::vector<double>* positions) { return start_values(nullptr, positions); }
+Status IterativeReconstruction::start(std::vector<double>* positions) {
+  return start_values(nullptr, prediction_sweeps_, positions);
+}
 
-Status IterativeReconstruction::start_values(const std::vector<int32_t>* at_or_all, std::vector<double>* positions) {
+Status IterativeReconstruction::start_values(const std::vector<int32_t>* at_or_all, int32_t sweeps,
+                                             std::vector<double>* positions) {
   if (graph_ == nullptr) return Status::Error(StatusCode::kInvalidArgument, "start_at before init");
   if (rule_ != NearestRule::kFewestHopsLowest) {
     return Status::Error(StatusCode::kInvalidArgument, "start_at needs the fewest-hops nearest rule");
@@ -400,18 +413,19 @@ Status IterativeReconstruction::start_values(const std::vector<int32_t>* at_or_a
     // sweeps: in both buffers.
     if (fixed(v)) std::copy(x, x + 4, to + 4 * static_cast<size_t>(v));
   };
-  // Sweep s needs its values within kStartSweeps - s hops of `at` and reads
-  // one hop further. Vertices whose neighbourhoods (about kBall vertices
-  // each) cover the mesh: every vertex is swept, in vertex order (neighbours
-  // near in memory), by blocks on the threads; the values at `at` are the
-  // same. Fewer: only those within reach, found breadth-first.
-  constexpr size_t kBall = 3 * kStartSweeps * (kStartSweeps + 1) + 1;  // a regular triangulation's
-  if (!at_or_all || at.size() * kBall >= n) {
+  // Sweep s needs its values within `sweeps` - s hops of `at` and reads
+  // one hop further. Vertices whose neighbourhoods (about `ball` vertices
+  // each, a regular triangulation's) cover the mesh: every vertex is swept,
+  // in vertex order (neighbours near in memory), by blocks on the threads;
+  // the values at `at` are the same. Fewer: only those within reach, found
+  // breadth-first.
+  const size_t ball = 3 * static_cast<size_t>(sweeps) * static_cast<size_t>(sweeps + 1) + 1;
+  if (!at_or_all || at.size() * ball >= n) {
     StepTeam team(threads_, n_);
     team.run([&](int32_t begin, int32_t end, int32_t) {
       for (int32_t v = begin; v < end; ++v) start(v);
     });
-    for (int sweep = 1; sweep <= kStartSweeps; ++sweep) {
+    for (int sweep = 1; sweep <= sweeps; ++sweep) {
       team.run([&](int32_t begin, int32_t end, int32_t) {
         for (int32_t v = begin; v < end; ++v) {
           if (!fixed(v)) harmonic_row_float(g, from, v, to + 4 * static_cast<size_t>(v));
@@ -429,7 +443,7 @@ Status IterativeReconstruction::start_values(const std::vector<int32_t>* at_or_a
       std::fill(reached_.begin(), reached_.end(), 0u);
       call_ = 1;
     }
-    // The vertices within kStartSweeps hops of `at`, breadth-first (so in
+    // The vertices within sweeps hops of `at`, breadth-first (so in
     // increasing hops), each with its hops.
     std::vector<int32_t> region;
     for (int32_t v : at) {
@@ -440,7 +454,7 @@ Status IterativeReconstruction::start_values(const std::vector<int32_t>* at_or_a
     }
     for (size_t i = 0; i < region.size(); ++i) {
       const int32_t u = region[i];
-      if (depth_[u] == kStartSweeps) break;
+      if (depth_[u] == sweeps) break;
       for (int32_t e = g.offsets[u]; e < g.offsets[u + 1]; ++e) {
         const int32_t w = g.neighbors[e];
         if (reached_[w] == call_) continue;
@@ -452,10 +466,10 @@ Status IterativeReconstruction::start_values(const std::vector<int32_t>* at_or_a
     std::vector<int32_t> free;  // in increasing hops
     for (int32_t v : region) {
       start(v);
-      if (!fixed(v) && depth_[v] < kStartSweeps) free.push_back(v);
+      if (!fixed(v) && depth_[v] < sweeps) free.push_back(v);
     }
-    for (int sweep = 1; sweep <= kStartSweeps; ++sweep) {
-      const int8_t reach = static_cast<int8_t>(kStartSweeps - sweep);
+    for (int sweep = 1; sweep <= sweeps; ++sweep) {
+      const int8_t reach = static_cast<int8_t>(sweeps - sweep);
       for (int32_t v : free) {
         if (depth_[v] > reach) break;
         harmonic_row_float(g, from, v, to + 4 * static_cast<size_t>(v));
@@ -499,9 +513,9 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
   const bool fresh = shape_.empty();
   const size_t n = static_cast<size_t>(n_);
   if (fresh && rule_ == NearestRule::kFewestHopsLowest) {
-    // Operator 2's start, at every vertex.
+    // Operator 2's start, at every vertex, with the final shape's sweeps.
     shape_.resize(3 * n);
-    GAB_RETURN_IF_ERROR(start(&shape_));
+    GAB_RETURN_IF_ERROR(start_values(nullptr, final_sweeps_, &shape_));
     // Its buffers are not needed again before the next prediction: not
     // beside the steps' own (the decode's peak).
     std::vector<float>().swap(from_);

@@ -76,7 +76,7 @@ class CodecTest(unittest.TestCase):
         self.assertNotEqual(base, gab.compress(V, F, ordering="nd"))
         # The iterative solver is the default; the file records the solver (header byte 12).
         self.assertEqual(base, gab.compress(V, F, solver="iterative"))
-        self.assertEqual(base[12], 2)
+        self.assertEqual(base[12], 3)
         self.assertEqual(gab.compress(V, F, solver="global")[12], 0)
         self.assertEqual(gab.compress(V, F, refine=True)[12], 0)
 

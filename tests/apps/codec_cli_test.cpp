@@ -109,7 +109,7 @@ TEST(CodecCliTest, CompressDecompressInfoRoundTrip) {
   EXPECT_EQ(json_number(i.out, "connectivity_bytes"), json_number(c.out, "connectivity_bytes"));
   EXPECT_EQ(json_number(i.out, "order_bytes"), json_number(c.out, "order_bytes"));
   EXPECT_EQ(json_number(i.out, "version"), 2);
-  EXPECT_EQ(json_number(i.out, "reconstruction"), 2);  // the iterative operator, the default
+  EXPECT_EQ(json_number(i.out, "reconstruction"), 3);  // the iterative operator, the default
   EXPECT_NE(i.out.find("\"solver\": \"iterative\""), std::string::npos) << i.out;
   EXPECT_EQ(json_number(i.out, "sections"), 0);
 }
@@ -326,8 +326,15 @@ TEST(CodecCliTest, SolverIsChosenRecordedAndChecked) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find(std::string("\"solver\": \"") + solver + "\""), std::string::npos) << r.out;
     r = run_gab("info " + gab);
-    EXPECT_NE(r.out.find(std::string(solver[0] == 'g' ? "w = 100, ordered by AMD; " : "w = 100, ") + solver +
-                         " reconstruction\n"),
+    EXPECT_NE(r.out.find(solver[0] == 'g'
+                             ? "w = 100, ordered by AMD; global reconstruction\n"
+                             : "w = 100, iterative reconstruction (start sweeps 4 per prediction, 8 final; final "
+                               "steps 1 per anchor spacing, at most 32)\n"),
+              std::string::npos)
+        << r.out;
+    r = run_gab("info " + gab + " --json");
+    EXPECT_NE(r.out.find(solver[0] == 'g' ? "\"prediction_sweeps\": 0, \"final_sweeps\": 0"
+                                          : "\"prediction_sweeps\": 4, \"final_sweeps\": 8"),
               std::string::npos)
         << r.out;
   }

@@ -221,7 +221,7 @@ TEST(CapiTest, OptionsStructIsReadUpToItsSize) {
       ASSERT_EQ(compress(&o, &file).code, GAB_OK);
       ASSERT_GT(file.size(), 12u);
       EXPECT_EQ(file[12], solver == GAB_SOLVER_GLOBAL || refine ? gab::kGabReconstructionGlobal
-                                                                 : gab::kGabReconstructionIterativeLocal);
+                                                                 : gab::kGabReconstructionIterativeTuned);
     }
   }
   gab_compress_options_init(&o, sizeof o);

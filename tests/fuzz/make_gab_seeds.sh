@@ -5,14 +5,14 @@
 # Each seed is one options byte (see gab_fuzzer.cpp) then a file made from
 # the 10 x 6 torus of gab_fuzz_mesh.h: one per variant of format version 2;
 # torus-iterative-large from its 192 x 180 torus (past 2^14 vertices, where
-# operator 2 predicts a chunk around its vertices alone).
+# operators 2 and 3 predict a chunk around its vertices alone).
 # The seeds are golden files (their bytes are pinned): regenerate them only
 # for a new format version, then update the pinned figures in the golden
 # test. A new variant adds its line and seed beside the others.
-# torus-operator1* are not made here: operator 1's files (the iterative
-# operator before 2, header byte 12), which today's encoder no longer
-# writes, kept as an earlier encoder made them (torus-iterative*'s options
-# with that encoder).
+# torus-operator1* and torus-operator2* are not made here: operators 1 and
+# 2's files (the iterative operators before 3, header byte 12), which
+# today's encoder no longer writes, kept as earlier encoders made them
+# (torus-iterative*'s options with those encoders).
 set -euo pipefail
 gab="$1"
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -56,7 +56,7 @@ c -o "$tmp/iterative-selection.gab" --anchors 20 --chunk-growth 1.5 --layout sel
 c -o "$tmp/iterative-detail.gab" --error 1e-4 --detail on --solver iterative
 "$gab" compress -i "$tmp/large.off" -o "$tmp/iterative-large.gab" --anchors 300 --solver iterative 2>/dev/null
 mkdir -p "$out"
-find "$out" -name 'torus-*' ! -name 'torus-operator1*' -delete
+find "$out" -name 'torus-*' ! -name 'torus-operator[12]*' -delete
 { printf '\x00'; cat "$tmp/full.gab"; } > "$out/torus-full"
 { printf '\x16'; cat "$tmp/full.gab"; } > "$out/torus-prefix-5"
 { printf '\x01'; cat "$tmp/geo.gab"; } > "$out/torus-geometry-only"

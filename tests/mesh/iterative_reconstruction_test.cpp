@@ -150,30 +150,63 @@ TEST(IterativeReconstructionTest, StartAtIsTheStartAtThoseVertices) {
   // start_at evaluates the start (solve(0) after restart) around the given
   // vertices only: the same values there, other entries untouched; before
   // and after anchors join, for a few vertices (their neighbourhoods alone
-  // swept) and for all of them (every vertex swept).
+  // swept) and for all of them (every vertex swept); with the default
+  // sweeps and others (set_start_sweeps, the same for both), which change
+  // the start.
   const Mesh m = testing_util::bumpy_torus(80, 60);
   const EdgeGraph g = build_edge_graph(m);
   const int32_t n = m.num_vertices();
   const std::vector<int32_t> anchors = every(n, 37);
-  IterativeReconstruction rec;
-  rec.set_nearest_rule(IterativeReconstruction::NearestRule::kFewestHopsLowest);
-  ASSERT_TRUE(rec.init(g, 100, anchors, coefficients(m, anchors)).ok());
-  for (int round = 0; round < 2; ++round) {
-    std::vector<double> start;
-    rec.restart();
-    ASSERT_TRUE(rec.solve(0, &start).ok());
-    const std::vector<int32_t> few = {5, 3000, 3001, 4799, 17};
-    std::vector<double> x(3 * static_cast<size_t>(n), -7.0);
-    ASSERT_TRUE(rec.start_at(few, &x).ok());
-    for (int32_t v = 0; v < n; ++v) {
-      const bool asked = std::find(few.begin(), few.end(), v) != few.end();
-      for (int k = 0; k < 3; ++k) EXPECT_EQ(x[3 * v + k], asked ? start[3 * v + k] : -7.0) << v;
+  std::vector<double> default_start;
+  for (int32_t sweeps : {IterativeReconstruction::kStartSweeps, 0, 3, IterativeReconstruction::kMostStartSweeps}) {
+    IterativeReconstruction rec;
+    rec.set_nearest_rule(IterativeReconstruction::NearestRule::kFewestHopsLowest);
+    ASSERT_TRUE(rec.set_start_sweeps(sweeps, sweeps).ok());
+    ASSERT_TRUE(rec.init(g, 100, anchors, coefficients(m, anchors)).ok());
+    for (int round = 0; round < 2; ++round) {
+      std::vector<double> start;
+      rec.restart();
+      ASSERT_TRUE(rec.solve(0, &start).ok());
+      if (round == 0 && sweeps == IterativeReconstruction::kStartSweeps) default_start = start;
+      if (round == 0 && sweeps != IterativeReconstruction::kStartSweeps) EXPECT_NE(start, default_start) << sweeps;
+      const std::vector<int32_t> few = {5, 3000, 3001, 4799, 17};
+      std::vector<double> x(3 * static_cast<size_t>(n), -7.0);
+      ASSERT_TRUE(rec.start_at(few, &x).ok());
+      for (int32_t v = 0; v < n; ++v) {
+        const bool asked = std::find(few.begin(), few.end(), v) != few.end();
+        for (int k = 0; k < 3; ++k) EXPECT_EQ(x[3 * v + k], asked ? start[3 * v + k] : -7.0) << sweeps << " " << v;
+      }
+      ASSERT_TRUE(rec.start_at(every(n, 1), &x).ok());
+      EXPECT_EQ(x, start) << sweeps;
+      const std::vector<int32_t> more = every(n, 37, 11 + round);
+      ASSERT_TRUE(rec.add_anchors(more, coefficients(m, more)).ok());
     }
-    ASSERT_TRUE(rec.start_at(every(n, 1), &x).ok());
-    EXPECT_EQ(x, start);
-    const std::vector<int32_t> more = every(n, 37, 11 + round);
-    ASSERT_TRUE(rec.add_anchors(more, coefficients(m, more)).ok());
   }
+}
+
+TEST(IterativeReconstructionTest, PredictionsAndTheFinalStartTakeTheirOwnSweeps) {
+  // set_start_sweeps(p, f): start and start_at sweep p times, a fresh
+  // solve's start f times; each is the start of an operator set to that
+  // count for both.
+  const Mesh m = testing_util::bumpy_torus(40, 30);
+  const EdgeGraph g = build_edge_graph(m);
+  const std::vector<int32_t> anchors = every(m.num_vertices(), 23);
+  auto made = [&](int32_t prediction, int32_t final, std::vector<double>* predicted, std::vector<double>* solved) {
+    IterativeReconstruction rec;
+    rec.set_nearest_rule(IterativeReconstruction::NearestRule::kFewestHopsLowest);
+    ASSERT_TRUE(rec.set_start_sweeps(prediction, final).ok());
+    ASSERT_TRUE(rec.init(g, 100, anchors, coefficients(m, anchors)).ok());
+    predicted->assign(3 * static_cast<size_t>(m.num_vertices()), 0.0);
+    ASSERT_TRUE(rec.start(predicted).ok());
+    ASSERT_TRUE(rec.solve(0, solved).ok());
+  };
+  std::vector<double> p2, f2, p6, f6, p, f;
+  made(2, 2, &p2, &f2);
+  made(6, 6, &p6, &f6);
+  made(2, 6, &p, &f);
+  EXPECT_EQ(p, p2);
+  EXPECT_EQ(f, f6);
+  EXPECT_NE(p2, p6);
 }
 
 TEST(IterativeReconstructionTest, ZeroStepsGiveTheStartAfterItsHarmonicSweeps) {
@@ -338,6 +371,8 @@ TEST(IterativeReconstructionTest, BadArgumentsNameTheProblem) {
   EXPECT_EQ(rec.add_anchors({9}, {1, 1, 1}).message(), "vertex 9 is already an anchor");
   EXPECT_EQ(rec.set_coefficients(1, std::vector<double>(6, 0)).message(), "coefficients past the last anchor");
   EXPECT_EQ(rec.solve(-1, &x).message(), "negative step count");
+  EXPECT_EQ(rec.set_start_sweeps(17, 8).message(), "start sweeps must be in 0..16");
+  EXPECT_EQ(rec.set_start_sweeps(8, -1).message(), "start sweeps must be in 0..16");
   x.assign(3 * 18, 0.0);
   EXPECT_EQ(rec.start_at({1}, &x).message(), "start_at needs the fewest-hops nearest rule");
   rec.set_nearest_rule(IterativeReconstruction::NearestRule::kFewestHopsLowest);

@@ -120,11 +120,11 @@ Status read_gab_header(ByteReader* in, size_t file_size, GabHeader* h) {
     return Status::Error(StatusCode::kUnsupported, "unsupported .gab ordering " + std::to_string(ordering) +
                                                        " (this build knows 0: amd, 1: nd)");
   }
-  if (reconstruction > kGabReconstructionIterativeLocal) {
+  if (reconstruction > kGabReconstructionIterativeTuned) {
     return Status::Error(StatusCode::kUnsupported,
                          "unsupported .gab reconstruction operator " + std::to_string(reconstruction) +
                              " (this build knows 0: global least squares, 1: iterative, 2: iterative, local "
-                             "predictions)");
+                             "predictions, 3: iterative, local predictions, tuned)");
   }
   if (reserved != 0) {
     return Status::Error(StatusCode::kUnsupported, "unsupported .gab header: reserved byte 13 is " + hex_byte(reserved));

@@ -27,7 +27,7 @@ ChunkLayout encode_selection_layout(const AnchorSchedule& schedule, const GridPo
 
 Status encode_level_layout(const AnchorSchedule& schedule, const EdgeGraph& graph, double weight, double growth,
                            int32_t threads, const OrderingPlan& ordering, uint8_t reconstruction,
-                           const GridPositions& grid, ChunkLayout* out) {
+                           const IterativeTuning& tuning, const GridPositions& grid, ChunkLayout* out) {
   std::vector<int32_t> spread(schedule.order.begin(), schedule.order.begin() + schedule.spread);
   std::vector<int32_t> rest(schedule.order.begin() + schedule.spread, schedule.order.end());
   std::sort(spread.begin(), spread.end());
@@ -48,6 +48,7 @@ Status encode_level_layout(const AnchorSchedule& schedule, const EdgeGraph& grap
   // prediction is the spread set's, the schedule's first shape: one
   // factorization saved); the iterative operator's from the spread set on.
   ShapeOperator levels(reconstruction);
+  GAB_RETURN_IF_ERROR(tune(tuning, &levels));
   levels.set_threads(threads);
   levels.apply(ordering);
   const bool from_spread = !levels.global();

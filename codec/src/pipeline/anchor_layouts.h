@@ -10,6 +10,7 @@
 #include "gab/status.h"
 #include "pipeline/anchor_selection.h"
 #include "pipeline/ordering_choice.h"
+#include "reconstruction/iterative_tuning.h"
 
 namespace gab {
 
@@ -42,10 +43,11 @@ ChunkLayout encode_selection_layout(const AnchorSchedule& schedule, const GridPo
 // spread set and the rest's subset, then one level's positions per chunk,
 // each predicted by the reconstruction from the levels before it (level 1:
 // from the spread set, the schedule's first shape) by the operator
-// `reconstruction` names (global: factored in `ordering`). Cost: the
-// decoder's, less the first shape: levels - 1 shapes and anchor additions.
+// `reconstruction` names (global: factored in `ordering`; operator 3 with
+// `tuning`). Cost: the decoder's, less the first shape: levels - 1 shapes
+// and anchor additions.
 Status encode_level_layout(const AnchorSchedule& schedule, const EdgeGraph& graph, double weight, double growth,
                            int32_t threads, const OrderingPlan& ordering, uint8_t reconstruction,
-                           const GridPositions& grid, ChunkLayout* out);
+                           const IterativeTuning& tuning, const GridPositions& grid, ChunkLayout* out);
 
 }  // namespace gab

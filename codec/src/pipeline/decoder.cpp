@@ -24,6 +24,7 @@
 #include "detail/detail_chunk.h"
 #include "gab/mesh/edge_graph.h"
 #include "pipeline/ordering_choice.h"
+#include "reconstruction/iterative_tuning.h"
 #include "reconstruction/shape_operator.h"
 
 namespace gab {
@@ -117,6 +118,20 @@ Status read_chunk_frame(ByteReader* in, int32_t chunk, ChunkDecoding* st, const 
   return Status::Ok();
 }
 
+// Operator 3's parameters at the head of chunk 0's payload: set on the
+// reconstruction, the payload advanced past them.
+Status read_operator_tuning(ChunkDecoding* st, const uint8_t** payload, size_t* size) {
+  if (st->header.reconstruction != kGabReconstructionIterativeTuned) return Status::Ok();
+  IterativeTuning tuning;
+  size_t offset = 0;
+  const Status s = parse_iterative_tuning(*payload, *size, &tuning, &offset);
+  if (!s.ok()) return corrupt("chunk 0: " + s.message());
+  GAB_RETURN_IF_ERROR(st->rec.set_tuning(tuning));
+  *payload += offset;
+  *size -= offset;
+  return Status::Ok();
+}
+
 // Anchors `anchors` of chunk `chunk` at grid indices `grid` (3 each) join
 // the reconstruction (chunk 0 factors it); then, if `predict` (the
 // selection layout, another chunk following), the prediction at every
@@ -167,6 +182,7 @@ Status decode_selection_chunks(ByteReader* in, AnchorChunkCoder* coder, ChunkDec
     size_t payload_size = 0;
     GAB_RETURN_IF_ERROR(read_chunk_frame(in, chunk, st, &payload, &payload_size));
     if (!payload) break;
+    if (chunk == 0) GAB_RETURN_IF_ERROR(read_operator_tuning(st, &payload, &payload_size));
     // Chunk 0 is decoded whole (it anchors every component); later ones up
     // to the anchors wanted.
     std::vector<int32_t> anchors, grid;
@@ -193,6 +209,7 @@ Status decode_level_chunks(ByteReader* in, AnchorChunkCoder* coder, ChunkDecodin
   const uint8_t* payload = nullptr;
   size_t payload_size = 0;
   GAB_RETURN_IF_ERROR(read_chunk_frame(in, 0, st, &payload, &payload_size));
+  GAB_RETURN_IF_ERROR(read_operator_tuning(st, &payload, &payload_size));
   LevelPlan plan;
   size_t offset = 0;
   Status s = parse_level_plan(payload, payload_size, header.anchors, header.anchor_chunks(), &plan, &offset);

@@ -29,6 +29,8 @@
 #include "pipeline/encode_candidates.h"
 #include "pipeline/encoder_tuning.h"
 #include "pipeline/ordering_choice.h"
+#include "reconstruction/iterative_tuning.h"
+#include "reconstruction/shape_operator.h"
 
 namespace gab {
 
@@ -58,6 +60,15 @@ Status check_options(const EncodeOptions& o) {
   }
   if (o.solver == Solver::kIterative && o.refine) {
     return bad("the refinement chunk needs the global reconstruction operator");
+  }
+  const int32_t most_sweeps = IterativeReconstruction::kMostStartSweeps;
+  if (o.prediction_sweeps < -1 || o.prediction_sweeps > most_sweeps || o.final_sweeps < -1 ||
+      o.final_sweeps > most_sweeps) {
+    return bad("sweeps must be in 0.." + std::to_string(most_sweeps) + " (or -1: the encoder's)");
+  }
+  if (o.final_steps16 < -1 || o.final_steps16 > kMostFinalSteps || o.final_most_steps < -1 ||
+      o.final_most_steps > kMostFinalSteps) {
+    return bad("final steps must be in 0.." + std::to_string(kMostFinalSteps) + " (or -1: the encoder's)");
   }
   return check_codec_ordering(o.ordering);
 }
@@ -105,14 +116,26 @@ std::vector<uint8_t> assemble_file(const GabHeader& header, const Mesh& mesh, co
 // iterative operator unless the refinement chunk needs the global one).
 uint8_t reconstruction_of(const EncodeOptions& o) {
   const bool global = o.solver == Solver::kGlobal || (o.solver == Solver::kAuto && o.refine);
-  return global ? kGabReconstructionGlobal : kGabReconstructionIterativeLocal;
+  return global ? kGabReconstructionGlobal : kGabReconstructionIterativeTuned;
+}
+
+// The iterative operator's parameters: the options', else the encoder's for n vertices.
+IterativeTuning tuning_of(const EncodeOptions& o, int32_t n) {
+  IterativeTuning t = default_iterative_tuning(n);
+  if (o.prediction_sweeps >= 0) t.prediction_sweeps = o.prediction_sweeps;
+  if (o.final_sweeps >= 0) t.final_sweeps = o.final_sweeps;
+  if (o.final_steps16 >= 0) t.final_steps16 = o.final_steps16;
+  if (o.final_most_steps >= 0) t.final_most = o.final_most_steps;
+  return t;
 }
 
 // What every candidate of one encode shares, built once.
 struct EncodeContext {
   EncodeContext(const Mesh& m, const EncodeOptions& o, const CodedConnectivity& c)
       : mesh(m), options(o), coded(c), box(box_of(m)), graph(build_edge_graph(m)),
-        ordering(encoder_ordering(o.ordering, m.num_vertices())), reconstruction(reconstruction_of(o)) {}
+        ordering(encoder_ordering(o.ordering, m.num_vertices())), reconstruction(reconstruction_of(o)),
+        tuning(tuning_of(o, m.num_vertices())) {}
+
 
   double scale() const { return box.diagonal > 0 ? 1.0 / box.diagonal : 1.0; }
   // Built for the first detail candidate.
@@ -129,6 +152,7 @@ struct EncodeContext {
   const EdgeGraph graph;
   OrderingPlan ordering;  // its permutation remembered after the first factorization
   const uint8_t reconstruction;  // kGabReconstruction*: the operator options.solver names
+  const IterativeTuning tuning;  // its parameters (operator 3)
 
  private:
   DetailTopology detail_topology_;
@@ -185,6 +209,7 @@ Status estimate(EncodeContext& ctx, const EncodeCandidate& candidate, Estimate* 
     // The selection's factor goes before the level layout's is made: at
     // 2.4M vertices each is gigabytes.
     ShapeOperator rec(ctx.reconstruction);
+    GAB_RETURN_IF_ERROR(tune(ctx.tuning, &rec));
     GAB_RETURN_IF_ERROR(select_anchors(mesh, ctx.graph, candidate.anchors, options, grid, ctx.scale(), ctx.ordering,
                                        &rec, &e->selection));
     if (rec.relaxed()) ctx.ordering.remember(*rec.relaxed());
@@ -200,11 +225,12 @@ Status estimate(EncodeContext& ctx, const EncodeCandidate& candidate, Estimate* 
                               ? options.chunk_growth
                               : default_level_growth(selection.flops, iterative, ctx.mesh.num_vertices());
     GAB_RETURN_IF_ERROR(encode_level_layout(selection.schedule, ctx.graph, options.weight, growth, options.threads,
-                                            ctx.ordering, ctx.reconstruction, grid, &in_levels));
+                                            ctx.ordering, ctx.reconstruction, ctx.tuning, grid, &in_levels));
   }
   e->levels = try_levels &&
               (options.layout == FileLayout::kLevels || in_levels.bytes() <= in_selection_order.bytes());
   e->layout = std::move(e->levels ? in_levels : in_selection_order);
+  if (ctx.reconstruction == kGabReconstructionIterativeTuned) prepend_iterative_tuning(ctx.tuning, &e->layout.chunks[0]);
   if (selection.refined) {
     e->layout.chunks.push_back(
         encode_refinement_chunk(e->layout.file_order, selection.schedule.order, selection.refined_grid, grid.index));

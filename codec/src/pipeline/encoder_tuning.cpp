@@ -24,6 +24,15 @@ double default_level_growth(double flops, bool iterative, int32_t n) {
   return 2.0 * std::pow(std::max(1.0, flops / 2e9), 0.6);
 }
 
+IterativeTuning default_iterative_tuning(int32_t n) {
+  IterativeTuning t;
+  t.prediction_sweeps = kTunedPredictionSweeps;
+  t.final_sweeps = IterativeReconstruction::kStartSweeps;
+  t.final_steps16 = n > kFewerFinalStepsFrom ? 8 : 16;
+  t.final_most = 32;
+  return t;
+}
+
 int default_bits(double extent_over_diagonal, double target_rms_rel, double target_linf_rel) {
   if (!(target_rms_rel > 0) && !(target_linf_rel > 0)) return 12;
   for (int q = kGabMinBits; q < kGabMaxBits; ++q) {

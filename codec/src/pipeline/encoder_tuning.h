@@ -7,6 +7,8 @@
 
 #include <cstdint>
 
+#include "reconstruction/iterative_tuning.h"
+
 namespace gab {
 
 // The q the encoder picks for an error target on a mesh whose longest box
@@ -42,6 +44,20 @@ double default_chunk_growth(double flops);
 // 30 ms of decode). Smaller meshes keep 2: there whole-mesh work is cheap.
 constexpr double kIterativeLevelGrowth = 4.0;
 double default_level_growth(double flops, bool iterative, int32_t n);
+
+// The iterative operator's parameters (operator 3, docs/format.md 5.2.3)
+// for n vertices: prediction sweeps kTunedPredictionSweeps, final sweeps 8,
+// final steps one per anchor spacing (at most 32), half of that past
+// kFewerFinalStepsFrom vertices. Measured at 1e-3 --reorder against
+// operator 2 (8, 8, 1 per spacing; bytes, and the decode's work modelled
+// as 13 ns a sweep and 19 ns a step per vertex), docs/tuning-codec.md:
+// 4 prediction sweeps, 1.000-1.022x bytes (1.014x over eight shared
+// meshes) for 4-13 ms less per decode of 25-50k vertices; half the final
+// steps, igea 1.031x and 22 ms less, but camel-head 1.26x, bunny 1.05x
+// for 1-2 ms. At 10 Mbit/s a percent of igea's file is 0.3 ms.
+constexpr int32_t kTunedPredictionSweeps = 4;
+constexpr int32_t kFewerFinalStepsFrom = 1 << 16;
+IterativeTuning default_iterative_tuning(int32_t n);
 
 // Refinement with an RMS target: the greedy loop first aims the unrefined
 // shape this much above the target, then at what the last try measured.

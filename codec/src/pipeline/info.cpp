@@ -12,6 +12,7 @@
 #include "detail/detail_chunk.h"
 #include "gab/codec/decoder.h"
 #include "pipeline/ordering_choice.h"
+#include "reconstruction/iterative_tuning.h"
 
 namespace gab {
 
@@ -36,6 +37,12 @@ Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
   info->levels = header.levels();
   info->reordered = header.reordered();
   info->reconstruction = header.reconstruction;
+  if (header.reconstruction == kGabReconstructionIterativeLocal) {
+    info->prediction_sweeps = kOperator2Tuning.prediction_sweeps;
+    info->final_sweeps = kOperator2Tuning.final_sweeps;
+    info->final_steps16 = kOperator2Tuning.final_steps16;
+    info->final_most_steps = kOperator2Tuning.final_most;
+  }
   info->sections = header.sections;
   info->detail = header.detail();
   info->ordering = file_ordering(header.ordering);
@@ -73,6 +80,18 @@ Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
       info->detail_step = params.step;
       info->chunks_present = chunk + 1;
       continue;
+    }
+    if (chunk == 0 && header.reconstruction == kGabReconstructionIterativeTuned) {
+      IterativeTuning tuning;
+      size_t offset = 0;
+      const Status s = parse_iterative_tuning(payload, payload_size, &tuning, &offset);
+      if (!s.ok()) return corrupt("chunk 0: " + s.message());
+      info->prediction_sweeps = tuning.prediction_sweeps;
+      info->final_sweeps = tuning.final_sweeps;
+      info->final_steps16 = tuning.final_steps16;
+      info->final_most_steps = tuning.final_most;
+      payload += offset;
+      payload_size -= offset;
     }
     const bool refinement = header.refined() && chunk == header.refinement_chunk();
     uint64_t count = 0;

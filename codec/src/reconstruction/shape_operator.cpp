@@ -19,14 +19,26 @@ int32_t local_prediction_steps(int32_t n, int32_t k) {
 }
 
 ShapeOperator::ShapeOperator(uint8_t code) : code_(code) {
-  if (code == kGabReconstructionIterative || code == kGabReconstructionIterativeLocal) {
-    iterative_ = std::make_unique<IterativeReconstruction>();
-    if (code == kGabReconstructionIterativeLocal) {
-      iterative_->set_nearest_rule(IterativeReconstruction::NearestRule::kFewestHopsLowest);
-    }
-  } else {
+  if (code == kGabReconstructionGlobal) {
     global_ = std::make_unique<RelaxedReconstruction>();
+    return;
   }
+  iterative_ = std::make_unique<IterativeReconstruction>();
+  if (local()) iterative_->set_nearest_rule(IterativeReconstruction::NearestRule::kFewestHopsLowest);
+}
+
+bool ShapeOperator::local() const {
+  return code_ == kGabReconstructionIterativeLocal || code_ == kGabReconstructionIterativeTuned;
+}
+
+Status ShapeOperator::set_tuning(const IterativeTuning& tuning) {
+  if (code_ != kGabReconstructionIterativeTuned) {
+    return Status::Error(StatusCode::kInvalidArgument, "only operator 3 takes parameters");
+  }
+  if (!tuning_in_range(tuning)) return Status::Error(StatusCode::kInvalidArgument, "operator parameters out of range");
+  GAB_RETURN_IF_ERROR(iterative_->set_start_sweeps(tuning.prediction_sweeps, tuning.final_sweeps));
+  tuning_ = tuning;
+  return Status::Ok();
 }
 
 void ShapeOperator::set_threads(int32_t threads) {
@@ -62,8 +74,9 @@ Status ShapeOperator::set_coefficients(int32_t first, const std::vector<double>&
 Status ShapeOperator::shape(std::vector<double>* positions) {
   if (global_) return global_->reconstruct(positions);
   iterative_->restart();
-  return iterative_->solve(
-      iterative_steps(iterative_->num_vertices(), iterative_->num_anchors(), kIterativeFinalSteps), positions);
+  const int32_t n = iterative_->num_vertices(), k = iterative_->num_anchors();
+  return iterative_->solve(local() ? final_steps(tuning_, n, k) : iterative_steps(n, k, kIterativeFinalSteps),
+                           positions);
 }
 
 Status ShapeOperator::prediction(const std::vector<int32_t>* at, std::vector<double>* positions) {
@@ -86,6 +99,10 @@ Status ShapeOperator::greedy_shape(std::vector<double>* positions) {
   if (global_) return global_->reconstruct(positions);
   return iterative_->solve(
       iterative_steps(iterative_->num_vertices(), iterative_->num_anchors(), kIterativeGreedySteps), positions);
+}
+
+Status tune(const IterativeTuning& tuning, ShapeOperator* op) {
+  return op->code() == kGabReconstructionIterativeTuned ? op->set_tuning(tuning) : Status::Ok();
 }
 
 int32_t ShapeOperator::num_anchors() const { return global_ ? global_->num_anchors() : iterative_->num_anchors(); }

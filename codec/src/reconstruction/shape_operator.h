@@ -7,7 +7,9 @@
 // (IterativeReconstruction), linear in n: a function of the anchor set and
 // its coefficients alone, whatever order or chunks they came in;
 // kGabReconstructionIterativeLocal the same shape, a chunk predicted by the
-// start alone at the chunk's vertices (cost: the ring around them).
+// start alone at the chunk's vertices (cost: the ring around them);
+// kGabReconstructionIterativeTuned operator 2 with its sweeps and final
+// steps set by the file (iterative_tuning.h).
 #pragma once
 
 #include <cstdint>
@@ -18,6 +20,7 @@
 #include "gab/mesh/iterative_reconstruction.h"
 #include "gab/mesh/relaxed_reconstruction.h"
 #include "gab/status.h"
+#include "reconstruction/iterative_tuning.h"
 
 namespace gab {
 
@@ -63,6 +66,9 @@ class ShapeOperator {
   explicit ShapeOperator(uint8_t code);
   uint8_t code() const { return code_; }
   bool global() const { return global_ != nullptr; }
+  // Operator 3 only, before init: its parameters (default kOperator2Tuning's).
+  Status set_tuning(const IterativeTuning& tuning);
+  const IterativeTuning& tuning() const { return tuning_; }
 
   // Threads for the factorizations or the iterative steps (the same shapes
   // for any count).
@@ -101,9 +107,16 @@ class ShapeOperator {
   const RelaxedReconstruction* relaxed() const { return global_.get(); }
 
  private:
+  // Operators 2 and 3: predictions by the start alone, final steps by the tuning.
+  bool local() const;
+
   uint8_t code_;
+  IterativeTuning tuning_ = kOperator2Tuning;
   std::unique_ptr<RelaxedReconstruction> global_;
   std::unique_ptr<IterativeReconstruction> iterative_;
 };
+
+// `tuning` on an operator 3 (its set_tuning); the others take none: Ok.
+Status tune(const IterativeTuning& tuning, ShapeOperator* op);
 
 }  // namespace gab

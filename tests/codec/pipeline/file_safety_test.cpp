@@ -101,17 +101,20 @@ TEST(FileSafety, EveryByteFlipIsAnErrorOrAValidMesh) {
 TEST(FileSafety, AFileReadAsAnotherOperatorIsAnErrorOrAFiniteMesh) {
   // Header byte 12 swapped with the header's checksum made whole again: the
   // chunks are then predicted by an operator they were not coded with
-  // (operator 2's local predictions read as operator 1's or the global
-  // one's, and the other way round). Wrong shapes, but never a crash, never
-  // a non-finite coordinate: a refusal or a mesh.
+  // (operators 2 and 3's local predictions read as operator 1's or the
+  // global one's, and the other way round; operator 3's parameters read as
+  // chunk 0's first bytes, or those bytes as its parameters). Wrong shapes,
+  // but never a crash, never a non-finite coordinate: a refusal or a mesh.
   const std::string corpus = std::string(GAB_FUZZ_DIR) + "/corpus/gab/";
   int decoded = 0;
-  for (const char* name : {"torus-iterative-large", "torus-iterative", "torus-operator1", "torus-levels"}) {
+  for (const char* name : {"torus-iterative-large", "torus-iterative", "torus-operator2", "torus-operator1",
+                           "torus-levels"}) {
     std::string bytes;
     ASSERT_TRUE(read_file(corpus + name, &bytes).ok()) << name;
     const std::vector<uint8_t> file(bytes.begin() + 1, bytes.end());  // past the options byte
     const size_t header = header_size(file);
-    for (uint8_t code : {kGabReconstructionGlobal, kGabReconstructionIterative, kGabReconstructionIterativeLocal}) {
+    for (uint8_t code : {kGabReconstructionGlobal, kGabReconstructionIterative, kGabReconstructionIterativeLocal,
+                         kGabReconstructionIterativeTuned}) {
       if (code == file[12]) continue;
       std::vector<uint8_t> bad = file;
       bad[12] = code;
@@ -290,9 +293,9 @@ TEST(FileSafety, HeaderErrorsNameTheProblem) {
     const char* message;
   } newer[] = {
       {11, 2, "unsupported .gab ordering 2 (this build knows 0: amd, 1: nd)"},
-      {12, 3,
-       "unsupported .gab reconstruction operator 3 (this build knows 0: global least squares, 1: iterative, 2: "
-       "iterative, local predictions)"},
+      {12, 4,
+       "unsupported .gab reconstruction operator 4 (this build knows 0: global least squares, 1: iterative, 2: "
+       "iterative, local predictions, 3: iterative, local predictions, tuned)"},
       {13, 7, "unsupported .gab header: reserved byte 13 is 0x07"},
   };
   for (const auto& n : newer) {

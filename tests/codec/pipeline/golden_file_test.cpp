@@ -5,8 +5,8 @@
 // layouts, both orderings, every reconstruction operator, geometry only, the
 // detail chunk, prefixes).
 // Each seed must keep its bytes, keep decoding to its pinned shape, and be
-// what the encoder writes today for its options (but operator 1's, which it
-// no longer writes: an earlier encoder's, decoded as they are). A change
+// what the encoder writes today for its options (but operators 1 and 2's,
+// which it no longer writes: earlier encoders', decoded as they are). A change
 // that fails here is a format change: version 2 files exist, so it needs a
 // new version or a new value in a reserved header field (docs/format.md),
 // not new seeds.
@@ -88,7 +88,7 @@ struct Golden {
   uint8_t flags;       // header byte 9
   int bits, anchors, chunks;
   double rms_rel;       // of the decoded shape against seed_torus, in its numbering
-  const char* options;  // make_gab_seeds.sh's for the file; null: operator 1's, not written today
+  const char* options;  // make_gab_seeds.sh's for the file; null: an earlier operator's, not written today
   bool large = false;   // made from large_seed_torus, not seed_torus
 };
 
@@ -121,14 +121,21 @@ const std::vector<Golden>& goldens() {
        "--error 1e-4 --detail on --solver global"},
       {"torus-detail-geometry-only", 0xdb991622f7b0d688ull, kGeo | kGabFlagDetail, 6, 15, 4, 0.000099905,
        "--error 1e-4 --detail on --geometry-only --solver global"},
-      {"torus-iterative", 0xc1212b18592d3d6cull, kLevels, 12, 20, 4, 0.020931225,
+      {"torus-iterative", 0xb2534681edb46cacull, kLevels, 12, 20, 4, 0.020931225,
        "--anchors 20 --chunk-growth 1.5 --solver iterative"},
-      {"torus-iterative-selection", 0x9bec0fe97beac200ull, 0, 12, 20, 8, 0.020931225,
+      {"torus-iterative-selection", 0xbb1c4420dfdbe731ull, 0, 12, 20, 8, 0.020931225,
        "--anchors 20 --chunk-growth 1.5 --layout selection --solver iterative"},
-      {"torus-iterative-detail", 0x4547a313ea78c562ull, kGabFlagDetail, 6, 15, 4, 0.000098065,
+      {"torus-iterative-detail", 0x2c233562d9e348eeull, kGabFlagDetail, 6, 15, 4, 0.000098065,
        "--error 1e-4 --detail on --solver iterative"},
-      {"torus-iterative-large", 0x2b94270f1256cd4aull, kLevels, 12, 300, 3, 0.009721790,
+      {"torus-iterative-large", 0x028fd7c359addc96ull, kLevels, 12, 300, 3, 0.009721790,
        "--anchors 300 --solver iterative", true},
+      // Operator 2, made by an earlier encoder with torus-iterative*'s options:
+  // operator 3's shapes (the same final sweeps and steps at these sizes),
+  // other predictions (8 sweeps), so other bytes.
+      {"torus-operator2", 0xc1212b18592d3d6cull, kLevels, 12, 20, 4, 0.020931225, nullptr},
+      {"torus-operator2-selection", 0x9bec0fe97beac200ull, 0, 12, 20, 8, 0.020931225, nullptr},
+      {"torus-operator2-detail", 0x4547a313ea78c562ull, kGabFlagDetail, 6, 15, 4, 0.000098065, nullptr},
+      {"torus-operator2-large", 0x2b94270f1256cd4aull, kLevels, 12, 300, 3, 0.009721790, nullptr, true},
       // Operator 1, made by an earlier encoder with torus-iterative*'s options.
       {"torus-operator1", 0xa177618616521ad2ull, kLevels, 12, 20, 4, 0.021768607, nullptr},
       {"torus-operator1-selection", 0xd5c603d01d806202ull, 0, 12, 20, 8, 0.021768607, nullptr},
@@ -211,8 +218,8 @@ TEST(GoldenFiles, DetailSeedsDecodeToTheirPinnedBits) {
 }
 
 TEST(GoldenFiles, IterativeSeedsDecodeToTheirPinnedBits) {
-  // The iterative operators fix every operation (docs/format.md 5.2.1,
-  // 5.2.2): their shapes, whole or a prefix, are the same bits on any
+  // The iterative operators fix every operation (docs/format.md 5.2.1 to
+  // 5.2.3): their shapes, whole or a prefix, are the same bits on any
   // machine, SIMD level and thread count, so they are pinned bit for bit.
   struct Seed {
     const char* name;
@@ -226,6 +233,12 @@ TEST(GoldenFiles, IterativeSeedsDecodeToTheirPinnedBits) {
                         Seed{"torus-iterative-detail", -1, 0xd91e627a6525b252ull},
                         Seed{"torus-iterative-large", -1, 0x0041af6f9dc57a05ull},
                         Seed{"torus-iterative-large", 100, 0xa84f37c9b1745f4eull},
+                        Seed{"torus-operator2", -1, 0xc306299c072e51efull},
+                        Seed{"torus-operator2", 10, 0x6798242a3a1f823dull},
+                        Seed{"torus-operator2-selection", -1, 0xc306299c072e51efull},
+                        Seed{"torus-operator2-detail", -1, 0xd91e627a6525b252ull},
+                        Seed{"torus-operator2-large", -1, 0x0041af6f9dc57a05ull},
+                        Seed{"torus-operator2-large", 100, 0xa84f37c9b1745f4eull},
                         Seed{"torus-operator1", -1, 0x0276aba1b3f1ff13ull},
                         Seed{"torus-operator1", 10, 0xbd475e0a4716f1fcull},
                         Seed{"torus-operator1-selection", -1, 0x0276aba1b3f1ff13ull},
@@ -320,7 +333,7 @@ TEST(GoldenFiles, SeedsPassTheFuzzersChecks) {
     for (double x : out.positions) ASSERT_TRUE(std::isfinite(x)) << e->d_name;
   }
   closedir(d);
-  EXPECT_EQ(seen, static_cast<int>(goldens().size()) + 4);  // and the four prefixes
+  EXPECT_EQ(seen, static_cast<int>(goldens().size()) + 5);  // and the five prefixes
 }
 
 }  // namespace

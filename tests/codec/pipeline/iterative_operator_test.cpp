@@ -1,12 +1,13 @@
-// Files made with the iterative reconstruction operator (header byte 12 = 1,
-// docs/format.md 5.2.1): the decoder computes the encoder's shapes exactly,
-// in both layouts, with and without the detail layer, for any prefix; the
-// operator is recorded; its option errors.
+// Files made with the iterative reconstruction operator (header byte 12 = 3,
+// docs/format.md 5.2.3): the decoder computes the encoder's shapes exactly,
+// in both layouts, with and without the detail layer, for any prefix and
+// any of its parameters; the operator is recorded; its option errors.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "common/gab_files.h"
+#include "container/crc32.h"
 #include "gab/codec/decoder.h"
 #include "gab/codec/encoder.h"
 #include "gab/codec/gab_format.h"
@@ -31,7 +32,7 @@ TEST(IterativeOperator, DecodesToTheEncodersShapeInEveryLayout) {
       EncodeStats es;
       const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
       ASSERT_GT(file.size(), 12u);
-      EXPECT_EQ(file[12], kGabReconstructionIterativeLocal);
+      EXPECT_EQ(file[12], kGabReconstructionIterativeTuned);
       EXPECT_GT(es.chunks, 1);
       EXPECT_EQ(es.detail, target < 5e-4);
       DecodeStats ds;
@@ -108,6 +109,84 @@ TEST(IterativeOperator, OptionErrors) {
   EXPECT_EQ(encode_mesh(mesh, options, &file, &es).message(), "unknown reconstruction operator");
 }
 
+// Operator 3's sweeps and final steps travel in the file (chunk 0's head):
+// whatever the encoder chose, the decoder computes its shapes exactly, and
+// `gab info` reads them back.
+TEST(IterativeOperator, TheFileCarriesItsParameters) {
+  const Mesh mesh = bumpy_torus(40, 24);  // 960 vertices: the default rule's 4, 8, 16, 32
+  struct Tuning {
+    int32_t prediction_sweeps, final_sweeps, final_steps16, final_most;
+  };
+  for (const Tuning& t : {Tuning{-1, -1, -1, -1}, Tuning{0, 0, 0, 0}, Tuning{2, 5, 8, 20}, Tuning{16, 16, 64, 64}}) {
+    for (FileLayout layout : {FileLayout::kLevels, FileLayout::kSelectionOrder}) {
+      EncodeOptions options;
+      options.target_rms_rel = 3e-3;
+      options.layout = layout;
+      options.detail = DetailMode::kOff;
+      options.prediction_sweeps = t.prediction_sweeps;
+      options.final_sweeps = t.final_sweeps;
+      options.final_steps16 = t.final_steps16;
+      options.final_most_steps = t.final_most;
+      EncodeStats es;
+      const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
+      DecodeStats ds;
+      const Mesh out = decode_or_die(file, DecodeOptions(), &ds);
+      EXPECT_NEAR(relative_rms(mesh, out), es.rms_rel, 1e-14 + 1e-12 * es.rms_rel) << t.final_steps16;
+      EXPECT_LE(es.rms_rel, 3e-3);
+      GabFileInfo info;
+      ASSERT_TRUE(read_gab_info(file.data(), file.size(), &info).ok());
+      EXPECT_EQ(info.reconstruction, kGabReconstructionIterativeTuned);
+      EXPECT_EQ(info.prediction_sweeps, t.prediction_sweeps < 0 ? 4 : t.prediction_sweeps);
+      EXPECT_EQ(info.final_sweeps, t.final_sweeps < 0 ? 8 : t.final_sweeps);
+      EXPECT_EQ(info.final_steps16, t.final_steps16 < 0 ? 16 : t.final_steps16);
+      EXPECT_EQ(info.final_most_steps, t.final_most < 0 ? 32 : t.final_most);
+    }
+  }
+}
+
+// A forged parameter past its range is refused by name, by the decoder and
+// by read_gab_info (each bounds a decode's work: at most 16 sweeps a start
+// and 64 steps a shape), and so are options past them.
+TEST(IterativeOperator, ParametersOutOfRangeAreNamedErrors) {
+  const Mesh mesh = bumpy_torus(16, 10);
+  EncodeOptions options;
+  options.target_rms_rel = 3e-3;
+  EncodeStats es;
+  const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
+  GabFileInfo info;
+  ASSERT_TRUE(read_gab_info(file.data(), file.size(), &info).ok());
+  const size_t frame = info.header_bytes + info.connectivity_bytes + info.order_bytes;  // chunk 0's
+  const struct {
+    size_t field;
+    uint8_t value;
+    const char* message;
+  } forged[] = {{0, 17, "chunk 0: the operator's prediction sweeps 17 exceeds 16"},
+                {1, 200, "chunk 0: the operator's final sweeps 200 exceeds 16"},
+                {2, 65, "chunk 0: the operator's final steps per spacing (sixteenths) 65 exceeds 64"},
+                {3, 255, "chunk 0: the operator's most final steps 255 exceeds 64"}};
+  for (const auto& f : forged) {
+    std::vector<uint8_t> bad = file;
+    bad[frame + 8 + f.field] = f.value;
+    uint32_t length = 0;
+    for (int b = 0; b < 4; ++b) length |= static_cast<uint32_t>(bad[frame + b]) << (8 * b);
+    const uint32_t crc = crc32(bad.data() + frame + 8, length);
+    for (int b = 0; b < 4; ++b) bad[frame + 4 + b] = static_cast<uint8_t>(crc >> (8 * b));
+    Mesh out;
+    DecodeStats ds;
+    const Status s = decode_mesh(bad.data(), bad.size(), DecodeOptions(), &out, &ds);
+    EXPECT_EQ(s.code(), StatusCode::kParseError);
+    EXPECT_EQ(s.message(), f.message);
+    EXPECT_EQ(read_gab_info(bad.data(), bad.size(), &info).message(), f.message);
+  }
+  std::vector<uint8_t> out;
+  options.prediction_sweeps = 17;
+  EXPECT_EQ(encode_mesh(mesh, options, &out, &es).message(), "sweeps must be in 0..16 (or -1: the encoder's)");
+  options.prediction_sweeps = -1;
+  options.final_most_steps = 65;
+  EXPECT_EQ(encode_mesh(mesh, options, &out, &es).message(),
+            "final steps must be in 0..64 (or -1: the encoder's)");
+}
+
 // Single precision steps at any magnitude: the residual is scaled by a
 // power of two, so a mesh scaled by 2^k (coordinates near 1e90 or 1e-90,
 // far outside float's range) codes to the same error, and a weight whose
@@ -150,7 +229,7 @@ TEST(IterativeOperator, IsTheDefaultUnlessTheRefinementNeedsTheGlobalOne) {
     EncodeStats es;
     const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
     ASSERT_GT(file.size(), 12u);
-    EXPECT_EQ(file[12], refine ? kGabReconstructionGlobal : kGabReconstructionIterativeLocal);
+    EXPECT_EQ(file[12], refine ? kGabReconstructionGlobal : kGabReconstructionIterativeTuned);
     EXPECT_EQ(es.solver, refine ? Solver::kGlobal : Solver::kIterative);
     DecodeStats ds;
     decode_or_die(file, DecodeOptions(), &ds);

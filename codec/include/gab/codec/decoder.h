@@ -87,6 +87,9 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
 struct GabFileInfo {
   int version = 0;
   int reconstruction = 0;  // the reconstruction operator (gab_format.h, header byte 12)
+  // Operators 2 and 3: their sweeps and final steps (EncodeOptions's fields of these names; operator 3's
+  // from chunk 0, read when it is present); 0 otherwise.
+  int32_t prediction_sweeps = 0, final_sweeps = 0, final_steps16 = 0, final_most_steps = 0;
   int32_t sections = 0;    // framed sections after the geometry chunks
   int32_t num_vertices = 0, num_triangles = 0;
   int bits = 0;

@@ -92,6 +92,15 @@ struct EncodeOptions {
   Ordering ordering = Ordering::kAuto;
   // The reconstruction operator, recorded in the file (gab_format.h, header byte 12).
   Solver solver = Solver::kAuto;
+  // The iterative operator's work per decode, recorded in the file (docs/format.md 5.2.3); -1 each: the
+  // encoder's (by the mesh's size). Fewer sweeps and steps decode faster and the file grows (more anchors
+  // for the same error, rougher predictions). Harmonic sweeps of a chunk's prediction and of the final
+  // shape's start (0..16); the final shape's conjugate-gradient steps per anchor spacing n / k, in
+  // sixteenths (0..64), and at most (0..64).
+  int32_t prediction_sweeps = -1;
+  int32_t final_sweeps = -1;
+  int32_t final_steps16 = -1;
+  int32_t final_most_steps = -1;
   std::function<void(int32_t, double)> progress;  // after every reconstruction: (anchors so far, relative RMS)
 };
 

@@ -54,11 +54,13 @@ constexpr uint8_t kGabOrderingNestedDissection = 1;
 // factored. 1: the same system by a fixed number of conjugate-gradient steps
 // per shape, linear in n, a chunk predicted by such steps too (docs/format.md
 // 5.2.1). 2: 1's shape (its start's ties broken another way), a chunk
-// predicted by the start alone, evaluated around the chunk's vertices: the
-// encoder's iterative operator (5.2.2).
+// predicted by the start alone, evaluated around the chunk's vertices
+// (5.2.2). 3: 2 with its sweeps and final steps given at the head of chunk
+// 0: the encoder's iterative operator (5.2.3).
 constexpr uint8_t kGabReconstructionGlobal = 0;
 constexpr uint8_t kGabReconstructionIterative = 1;
 constexpr uint8_t kGabReconstructionIterativeLocal = 2;
+constexpr uint8_t kGabReconstructionIterativeTuned = 3;
 
 // The operator as an option (EncodeOptions::solver) and in the stats.
 // kIterative: cost linear in n, memory a few arrays per vertex. kGlobal:

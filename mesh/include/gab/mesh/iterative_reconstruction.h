@@ -10,13 +10,14 @@
 // The result is a fixed computation, not "the solution to a tolerance": the
 // steps start from the previous shape (the first time, and after restart,
 // from the start: each vertex at its nearest anchor's coefficients, ties
-// broken by the NearestRule, then kStartSweeps harmonic sweeps), and every
-// floating-point operation happens in one order. Sums over vertices add
+// broken by the NearestRule, then kStartSweeps harmonic sweeps or as many
+// as set_start_sweeps says), and every floating-point operation happens in
+// one order. Sums over vertices add
 // runs of 64 vertices, then fixed blocks of kBlock vertices in vertex
 // order, then the blocks in block order, whatever the thread count; so two
 // programs making the same calls get the same bits on any machine with IEEE
 // arithmetic and no contraction, which is what lets an encoder and a
-// decoder share the shape (docs/format.md 5.2.1 and 5.2.2 spell out every
+// decoder share the shape (docs/format.md 5.2.1 to 5.2.3 spell out every
 // operation).
 //
 // As the steps grow the shape tends to the global least squares, to about
@@ -58,6 +59,11 @@ class IterativeReconstruction {
   };
   // Before init (default kDiscovery).
   void set_nearest_rule(NearestRule rule) { rule_ = rule; }
+  // kFewestHopsLowest: the harmonic sweeps of start_at and start
+  // (`prediction`) and of solve's fresh start (`final`), each in
+  // 0..kMostStartSweeps (default kStartSweeps both). Before init.
+  static constexpr int32_t kMostStartSweeps = 16;
+  Status set_start_sweeps(int32_t prediction, int32_t final);
 
   // Starts over on `graph` (kept by reference: it must outlive this) with
   // weight w and the initial anchors (distinct vertices; every connected
@@ -87,8 +93,9 @@ class IterativeReconstruction {
   std::vector<double> nearest_anchor_shape() const;
   // The start (what solve(0) gives after restart) at the vertices `at`
   // only, the same values: positions[3 v ..] for v in at (positions sized 3 n;
-  // its other entries untouched). Reads the kStartSweeps-ring around `at`,
-  // so its cost is that ring's size, not n. kFewestHopsLowest only.
+  // its other entries untouched). Reads the ring of the prediction sweeps'
+  // hops around `at`, so its cost is that ring's size, not n.
+  // kFewestHopsLowest only.
   Status start_at(const std::vector<int32_t>& at, std::vector<double>* positions);
   // start_at at every vertex (every entry of positions set). O(n + edges).
   Status start(std::vector<double>* positions);
@@ -111,8 +118,9 @@ class IterativeReconstruction {
   // kFewestHopsLowest: lowers nearest_ breadth-first from `anchors`
   // (just recorded) where they are nearer, by the rule's order.
   void update_nearest(const std::vector<int32_t>& anchors);
-  // start_at at `at_or_all`, or at every vertex when it is null.
-  Status start_values(const std::vector<int32_t>* at_or_all, std::vector<double>* positions);
+  // start_at at `at_or_all`, or at every vertex when it is null, with
+  // `sweeps` harmonic sweeps.
+  Status start_values(const std::vector<int32_t>* at_or_all, int32_t sweeps, std::vector<double>* positions);
   // Operator 2's frame for the start in single precision: per axis the
   // anchors' lowest coefficient and 2^-E, their extent = m 2^E, m in [0.5, 1).
   void start_frame(double origin[3], double scale[3]) const;
@@ -126,6 +134,7 @@ class IterativeReconstruction {
   std::vector<int32_t> anchor_of_;    // vertex -> index in anchors_, or -1
   std::vector<double> shape_;         // 3 per vertex once solved
   NearestRule rule_ = NearestRule::kDiscovery;
+  int32_t prediction_sweeps_ = kStartSweeps, final_sweeps_ = kStartSweeps;
   // kFewestHopsLowest: per vertex (hops to its nearest anchor << 32) | that
   // anchor's vertex index, so one comparison orders by the rule.
   std::vector<uint64_t> nearest_;
