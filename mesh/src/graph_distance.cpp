@@ -63,12 +63,15 @@ Status farthest_point_sampling(const EdgeGraph& graph, int32_t count, const std:
   const int32_t n = graph.num_vertices();
   const int32_t kFar = INT32_MAX;  // not reachable from any chosen vertex
   std::vector<int32_t> dist(n, kFar), queue;
-  // Heap of (distance, -vertex): the top is the farthest, smallest index
-  // first. Entries go stale when a distance shrinks; they are skipped.
-  std::vector<std::pair<int32_t, int32_t>> heap;
-  heap.reserve(static_cast<size_t>(n) * 2);
-  for (int32_t v = 0; v < n; ++v) heap.emplace_back(kFar, -v);
-  std::make_heap(heap.begin(), heap.end());
+  // A bucket per distance, and the unreached (every vertex at first, in
+  // increasing index: taken first), each taken in increasing vertex index
+  // once it is the farthest left: the farthest first, ties to the smaller
+  // index. Past the unreached a pick only brings vertices closer than the
+  // farthest, so a bucket being taken gets no new entries. An entry goes
+  // stale when its vertex comes closer (a fresh one is put in a lower
+  // bucket); stale ones are skipped. Sorting a bucket once costs far less
+  // than a heap's work per entry.
+  std::vector<std::vector<int32_t>> buckets;
   std::vector<int32_t> out;
   out.reserve(std::min(count, n));
 
@@ -83,25 +86,29 @@ Status farthest_point_sampling(const EdgeGraph& graph, int32_t count, const std:
         if (dist[v] + 1 < dist[u]) {
           dist[u] = dist[v] + 1;
           queue.push_back(u);
-          heap.emplace_back(dist[u], -u);
-          std::push_heap(heap.begin(), heap.end());
+          if (static_cast<size_t>(dist[u]) >= buckets.size()) buckets.resize(static_cast<size_t>(dist[u]) + 1);
+          buckets[dist[u]].push_back(u);
         }
       }
     }
   };
+  auto full = [&]() { return static_cast<int32_t>(out.size()) >= count; };
 
   for (int32_t s : seeds) {
-    if (static_cast<int32_t>(out.size()) >= count) break;
+    if (full()) break;
     add(s);
   }
-  while (static_cast<int32_t>(out.size()) < count) {
-    while (!heap.empty() && dist[-heap.front().second] != heap.front().first) {
-      std::pop_heap(heap.begin(), heap.end());
-      heap.pop_back();
+  for (int32_t v = 0; v < n && !full(); ++v) {
+    if (dist[v] == kFar) add(v);  // the smallest vertex of a component nothing reaches yet
+  }
+  // Distance 0 is a chosen vertex: every vertex is then chosen.
+  for (size_t d = buckets.size(); d-- > 1 && !full();) {
+    std::vector<int32_t>& bucket = buckets[d];
+    std::sort(bucket.begin(), bucket.end());
+    for (size_t i = 0; i < bucket.size() && !full(); ++i) {
+      if (dist[bucket[i]] == static_cast<int32_t>(d)) add(bucket[i]);  // puts go below d: no reallocation
     }
-    if (heap.empty() || heap.front().first == 0) break;  // every vertex chosen
-    const int32_t v = -heap.front().second;
-    add(v);
+    std::vector<int32_t>().swap(bucket);
   }
   *picked = std::move(out);
   return Status::Ok();

@@ -22,8 +22,8 @@ Status bfs_distances(const EdgeGraph& graph, const std::vector<int32_t>& sources
 // any is refined; with no seeds the first pick is vertex 0. Stops at `count`
 // vertices in all or when every vertex is chosen. `picked` = seeds, then
 // picks in order. Deterministic. O(V + E) per pick in the worst case (each
-// pick re-runs BFS only where distances shrink) plus O(log V) heap work per
-// distance change.
+// pick re-runs BFS only where distances shrink) plus a sort of each
+// distance's entries (one per distance change).
 Status farthest_point_sampling(const EdgeGraph& graph, int32_t count, const std::vector<int32_t>& seeds,
                                std::vector<int32_t>* picked);
 
