@@ -14,10 +14,14 @@ namespace gab {
 namespace {
 
 // Anchors to add in the next greedy step: the batch fraction of those so
-// far, but near an RMS target (0: none) only as many as the error curve's
-// last two points (rms ~ k^-alpha) say are still needed.
-int32_t next_batch(double target_rms_rel, double fraction, const std::vector<GreedyStep>& curve, int32_t cap) {
+// far (`far_fraction` while the error is over kFarErrorOverTarget times an
+// RMS target, when larger), but near an RMS target (0: none) only as many
+// as the error curve's last two points (rms ~ k^-alpha) say are still needed.
+int32_t next_batch(double target_rms_rel, double fraction, double far_fraction, const std::vector<GreedyStep>& curve,
+                   int32_t cap) {
   const int32_t k = curve.back().anchors;
+  const bool far = target_rms_rel > 0 && curve.back().rms_rel > kFarErrorOverTarget * target_rms_rel;
+  if (far) fraction = std::max(fraction, far_fraction);
   int64_t wanted = fraction > 0 ? static_cast<int64_t>(std::ceil(fraction * k)) : 1;
   if (target_rms_rel > 0 && curve.size() >= 2) {
     const GreedyStep& a = curve[curve.size() - 2];
@@ -171,6 +175,8 @@ Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const AnchorRule
   // Without a factor (the iterative operator) the cheap regime's defaults.
   out->flops = rec->relaxed() ? rec->relaxed()->cholesky().symbolic().flops : 0.0;
   const double fraction = options.batch_fraction >= 0 ? options.batch_fraction : default_batch_fraction(out->flops);
+  // A fraction asked for is kept; below kFarBatchFromVertices a round costs little.
+  const double far_fraction = options.batch_fraction >= 0 || n < kFarBatchFromVertices ? 0.0 : kFarBatchFraction;
   const double growth = options.chunk_growth > 0 ? options.chunk_growth : default_chunk_growth(out->flops);
 
   // A grid of step s errs s / 2 in RMS.
@@ -224,7 +230,8 @@ Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const AnchorRule
     GAB_RETURN_IF_ERROR(refinement.before_step(rec->relaxed(), out->rms_rel, out->linf_rel, &stop));
     if (stop) break;
     const std::vector<int32_t> next =
-        pick_error_maxima(graph, error2, *rec, next_batch(refinement.position_target(), fraction, out->curve, cap));
+        pick_error_maxima(graph, error2, *rec,
+                          next_batch(refinement.position_target(), fraction, far_fraction, out->curve, cap));
     GAB_RETURN_IF_ERROR(rec->add_anchors(next, grid.coefficients_of(next)));
     schedule.order.insert(schedule.order.end(), next.begin(), next.end());
     const int32_t opened_at = schedule.cuts.back();
