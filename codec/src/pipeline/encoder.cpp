@@ -136,7 +136,6 @@ struct EncodeContext {
         ordering(encoder_ordering(o.ordering, m.num_vertices())), reconstruction(reconstruction_of(o)),
         tuning(tuning_of(o, m.num_vertices())) {}
 
-
   double scale() const { return box.diagonal > 0 ? 1.0 / box.diagonal : 1.0; }
   // Built for the first detail candidate.
   const DetailTopology& detail_topology() {
@@ -230,7 +229,9 @@ Status estimate(EncodeContext& ctx, const EncodeCandidate& candidate, Estimate* 
   e->levels = try_levels &&
               (options.layout == FileLayout::kLevels || in_levels.bytes() <= in_selection_order.bytes());
   e->layout = std::move(e->levels ? in_levels : in_selection_order);
-  if (ctx.reconstruction == kGabReconstructionIterativeTuned) prepend_iterative_tuning(ctx.tuning, &e->layout.chunks[0]);
+  if (ctx.reconstruction == kGabReconstructionIterativeTuned) {
+    prepend_iterative_tuning(ctx.tuning, &e->layout.chunks[0]);  // the head of chunk 0 (format 5.2.3)
+  }
   if (selection.refined) {
     e->layout.chunks.push_back(
         encode_refinement_chunk(e->layout.file_order, selection.schedule.order, selection.refined_grid, grid.index));

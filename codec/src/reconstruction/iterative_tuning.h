@@ -23,11 +23,6 @@ struct IterativeTuning {
   // min(final_most, ceil(final_steps16 n / (16 k))), each in 0..kMostFinalSteps.
   int32_t final_steps16 = 16;
   int32_t final_most = 32;
-
-  bool operator==(const IterativeTuning& o) const {
-    return prediction_sweeps == o.prediction_sweeps && final_sweeps == o.final_sweeps &&
-           final_steps16 == o.final_steps16 && final_most == o.final_most;
-  }
 };
 constexpr int32_t kMostFinalSteps = 64;
 // Operator 2's fixed parameters.

@@ -68,7 +68,6 @@ class ShapeOperator {
   bool global() const { return global_ != nullptr; }
   // Operator 3 only, before init: its parameters (default kOperator2Tuning's).
   Status set_tuning(const IterativeTuning& tuning);
-  const IterativeTuning& tuning() const { return tuning_; }
 
   // Threads for the factorizations or the iterative steps (the same shapes
   // for any count).
