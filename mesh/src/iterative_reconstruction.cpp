@@ -443,7 +443,7 @@ Status IterativeReconstruction::start_values(const std::vector<int32_t>* at_or_a
       std::fill(reached_.begin(), reached_.end(), 0u);
       call_ = 1;
     }
-    // The vertices within sweeps hops of `at`, breadth-first (so in
+    // The vertices within `sweeps` hops of `at`, breadth-first (so in
     // increasing hops), each with its hops.
     std::vector<int32_t> region;
     for (int32_t v : at) {

@@ -12,13 +12,12 @@
 // from the start: each vertex at its nearest anchor's coefficients, ties
 // broken by the NearestRule, then kStartSweeps harmonic sweeps or as many
 // as set_start_sweeps says), and every floating-point operation happens in
-// one order. Sums over vertices add
-// runs of 64 vertices, then fixed blocks of kBlock vertices in vertex
-// order, then the blocks in block order, whatever the thread count; so two
-// programs making the same calls get the same bits on any machine with IEEE
-// arithmetic and no contraction, which is what lets an encoder and a
-// decoder share the shape (docs/format.md 5.2.1 to 5.2.3 spell out every
-// operation).
+// one order. Sums over vertices add runs of 64 vertices, then fixed blocks
+// of kBlock vertices in vertex order, then the blocks in block order,
+// whatever the thread count; so two programs making the same calls get the
+// same bits on any machine with IEEE arithmetic and no contraction, which
+// is what lets an encoder and a decoder share the shape (docs/format.md
+// 5.2.1 to 5.2.3 spell out every operation).
 //
 // As the steps grow the shape tends to the global least squares, to about
 // 1e-7 of the correction the steps add (single precision); how many a use
