@@ -426,11 +426,18 @@ Status IterativeReconstruction::start_values(const std::vector<int32_t>* at_or_a
       for (int32_t v = begin; v < end; ++v) start(v);
     });
     for (int sweep = 1; sweep <= sweeps; ++sweep) {
-      team.run([&](int32_t begin, int32_t end, int32_t) {
-        for (int32_t v = begin; v < end; ++v) {
+      if (sweep == sweeps && at_or_all) {
+        // The last sweep's values are read at `at` alone.
+        for (int32_t v : at) {
           if (!fixed(v)) harmonic_row_float(g, from, v, to + 4 * static_cast<size_t>(v));
         }
-      });
+      } else {
+        team.run([&](int32_t begin, int32_t end, int32_t) {
+          for (int32_t v = begin; v < end; ++v) {
+            if (!fixed(v)) harmonic_row_float(g, from, v, to + 4 * static_cast<size_t>(v));
+          }
+        });
+      }
       std::swap(from, to);
     }
   } else {

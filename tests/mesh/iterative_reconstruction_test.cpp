@@ -168,14 +168,22 @@ TEST(IterativeReconstructionTest, StartAtIsTheStartAtThoseVertices) {
       rec.restart();
       ASSERT_TRUE(rec.solve(0, &start).ok());
       if (round == 0 && sweeps == IterativeReconstruction::kStartSweeps) default_start = start;
-      if (round == 0 && sweeps != IterativeReconstruction::kStartSweeps) EXPECT_NE(start, default_start) << sweeps;
-      const std::vector<int32_t> few = {5, 3000, 3001, 4799, 17};
-      std::vector<double> x(3 * static_cast<size_t>(n), -7.0);
-      ASSERT_TRUE(rec.start_at(few, &x).ok());
-      for (int32_t v = 0; v < n; ++v) {
-        const bool asked = std::find(few.begin(), few.end(), v) != few.end();
-        for (int k = 0; k < 3; ++k) EXPECT_EQ(x[3 * v + k], asked ? start[3 * v + k] : -7.0) << sweeps << " " << v;
+      if (round == 0 && sweeps != IterativeReconstruction::kStartSweeps) {
+        EXPECT_NE(start, default_start) << sweeps;
       }
+      // A few vertices (their neighbourhoods swept), every 7th (every
+      // vertex swept but in the last sweep), all of them.
+      for (const std::vector<int32_t>& some : {std::vector<int32_t>{5, 3000, 3001, 4799, 17}, every(n, 7, 3)}) {
+        std::vector<double> x(3 * static_cast<size_t>(n), -7.0);
+        ASSERT_TRUE(rec.start_at(some, &x).ok());
+        for (int32_t v = 0; v < n; ++v) {
+          const bool asked = std::find(some.begin(), some.end(), v) != some.end();
+          for (int k = 0; k < 3; ++k) {
+            EXPECT_EQ(x[3 * v + k], asked ? start[3 * v + k] : -7.0) << sweeps << " " << v;
+          }
+        }
+      }
+      std::vector<double> x(3 * static_cast<size_t>(n), -7.0);
       ASSERT_TRUE(rec.start_at(every(n, 1), &x).ok());
       EXPECT_EQ(x, start) << sweeps;
       const std::vector<int32_t> more = every(n, 37, 11 + round);
