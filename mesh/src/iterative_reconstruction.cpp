@@ -421,9 +421,19 @@ Status IterativeReconstruction::start_values(const std::vector<int32_t>* at_or_a
   // breadth-first.
   const size_t ball = 3 * static_cast<size_t>(sweeps) * static_cast<size_t>(sweeps + 1) + 1;
   if (!at_or_all || at.size() * ball >= n) {
+    // Each anchor's value made once, every vertex a copy of its nearest's
+    // (start(v) for every v, the same bits).
+    std::vector<float> anchor_start(4 * anchors_.size());
+    for (size_t a = 0; a < anchors_.size(); ++a) {
+      for (int k = 0; k < 3; ++k) anchor_start[4 * a + k] = to_float((coefficients_[3 * a + k] - origin[k]) * scale[k]);
+    }
     StepTeam team(threads_, n_);
     team.run([&](int32_t begin, int32_t end, int32_t) {
-      for (int32_t v = begin; v < end; ++v) start(v);
+      for (int32_t v = begin; v < end; ++v) {
+        const float* value = &anchor_start[4 * static_cast<size_t>(anchor_of[nearest_anchor(v)])];
+        std::copy(value, value + 4, from + 4 * static_cast<size_t>(v));
+        if (fixed(v)) std::copy(value, value + 4, to + 4 * static_cast<size_t>(v));
+      }
     });
     for (int sweep = 1; sweep <= sweeps; ++sweep) {
       if (sweep == sweeps && at_or_all) {
