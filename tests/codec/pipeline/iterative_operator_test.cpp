@@ -8,6 +8,7 @@
 
 #include "common/gab_files.h"
 #include "container/crc32.h"
+#include "reconstruction/iterative_tuning.h"
 #include "gab/codec/decoder.h"
 #include "gab/codec/encoder.h"
 #include "gab/codec/gab_format.h"
@@ -178,6 +179,12 @@ TEST(IterativeOperator, ParametersOutOfRangeAreNamedErrors) {
     EXPECT_EQ(s.message(), f.message);
     EXPECT_EQ(read_gab_info(bad.data(), bad.size(), &info).message(), f.message);
   }
+  // A chunk 0 too short to hold them.
+  const uint8_t three[] = {4, 8, 16};
+  IterativeTuning tuning;
+  size_t offset = 0;
+  EXPECT_EQ(parse_iterative_tuning(three, sizeof three, &tuning, &offset).message(),
+            "the operator's parameters are cut short");
   std::vector<uint8_t> out;
   options.prediction_sweeps = 17;
   EXPECT_EQ(encode_mesh(mesh, options, &out, &es).message(), "sweeps must be in 0..16 (or -1: the encoder's)");
