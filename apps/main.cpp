@@ -71,6 +71,17 @@ int main(int argc, char** argv) {
   }
   if (!std::strcmp(command, "--version")) command = "version";
   if (const gab::cli::Command* c = gab::cli::find_command(command)) {
+    // `gab CMD --help` (or -h) anywhere among its arguments: its usage and
+    // what it does, on stdout, and nothing run.
+    for (int i = 2; i < argc; ++i) {
+      if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) {
+        std::string text = "usage: " + gab::cli::usage_text(*c) + "\n\n";
+        append_lines(c->summary, "", 0, &text);
+        text += "\nThe options: docs/cli.md; every command: gab help.\n";
+        std::fputs(text.c_str(), stdout);
+        return gab::cli::kExitOk;
+      }
+    }
     // The library reports failures as Status; what escapes as an exception
     // (memory exhausted, above all) is still one line and exit 1.
     try {

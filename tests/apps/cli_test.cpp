@@ -106,6 +106,25 @@ TEST(CliTest, BadUsageExitsTwo) {
   EXPECT_EQ(run_gab("help").exit_code, 0);
 }
 
+TEST(CliTest, EveryCommandAnswersHelp) {
+  // --help or -h anywhere after the command: its usage and summary on
+  // stdout, exit 0, nothing run (no input read, no output written).
+  for (const char* command :
+       {"factor", "study", "diff", "subdivide", "compress", "decompress", "info", "demo", "version"}) {
+    const CommandResult r = run_gab(std::string(command) + " --help");
+    EXPECT_EQ(r.exit_code, 0) << command << ": " << r.err;
+    EXPECT_EQ(r.out.rfind(std::string("usage: gab ") + command, 0), 0u) << r.out;
+    EXPECT_NE(r.out.find("every command: gab help"), std::string::npos) << r.out;
+    EXPECT_EQ(r.err, "") << command;
+    EXPECT_EQ(run_gab(std::string(command) + " -h").out, r.out) << command;
+  }
+  const std::string out = write_scratch_file("help-not-written.gab", "untouched");
+  const CommandResult r = run_gab("compress -i missing.off -o " + out + " --help");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream in(out);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), "untouched");
+}
+
 TEST(CliTest, UnsupportedExtensionIsBadInput) {
   const CommandResult r = run_gab("factor model.stl");
   EXPECT_EQ(r.exit_code, 1);
