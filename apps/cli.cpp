@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "commands.h"
+#include "gab/mesh/file_io.h"
 #include "gab/sparse/symbolic.h"
 
 namespace gab {
@@ -23,6 +24,12 @@ int usage_error(const std::string& command, const std::string& message) {
   std::fprintf(stderr, "gab %s: %s\nusage: %s\n", command.c_str(), message.c_str(),
                c != nullptr ? usage_text(*c).c_str() : "gab help");
   return kExitUsage;
+}
+
+int check_output(const std::string& command, const std::string& out, const std::vector<std::string>& inputs) {
+  const Status s = check_output_file(out, inputs);
+  if (s.ok()) return kExitOk;
+  return s.code() == StatusCode::kInvalidArgument ? usage_error(command, s.message()) : fail(s.message());
 }
 
 bool Args::parse(int argc, char** argv, const std::vector<std::string>& valued,

@@ -24,6 +24,12 @@ int fail(const std::string& message);
 // stderr; returns kExitUsage.
 int usage_error(const std::string& command, const std::string& message);
 
+// Before `command` does its work: whether it can write its output `out`
+// (check_output_file). kExitOk when it can; else the usage error (the
+// output is one of `inputs`) or the failure (a directory, a folder that
+// does not exist), printed.
+int check_output(const std::string& command, const std::string& out, const std::vector<std::string>& inputs);
+
 // Options of one sub-command: "--name value" pairs, flags, positionals.
 class Args {
  public:

@@ -93,6 +93,7 @@ int run_compress(int argc, char** argv) {
   }
   const bool json = args.has("--json");
   const std::string in = args.get("-i"), out = args.get("-o");
+  if (const int refused = check_output("compress", out, {in})) return refused;
 
   Mesh mesh;
   Status status = read_mesh(in, &mesh);

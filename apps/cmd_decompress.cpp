@@ -71,6 +71,9 @@ int run_decompress(int argc, char** argv) {
   if (ext != "obj" && ext != "off" && ext != "ply") {
     return usage_error("decompress", "output must be .obj, .off or .ply: " + out);
   }
+  std::vector<std::string> inputs = {in};
+  if (args.has("--connectivity")) inputs.push_back(args.get("--connectivity"));
+  if (const int refused = check_output("decompress", out, inputs)) return refused;
 
   std::string bytes;
   Status status = read_file(in, &bytes);

@@ -21,6 +21,7 @@ int run_subdivide(int argc, char** argv) {
   // Each level multiplies the size by 4: 6 levels take a 40k-vertex mesh to 160M vertices.
   if (!args.get_int("--levels", 0, 6, &levels)) return usage_error("subdivide", args.error());
   const std::string in = args.positionals()[0], out = args.get("-o");
+  if (const int refused = check_output("subdivide", out, {in})) return refused;
   Mesh mesh;
   Status status = read_mesh(in, &mesh);
   if (!status.ok()) return fail(status.message());

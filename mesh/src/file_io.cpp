@@ -185,6 +185,32 @@ Status write_output_file(const std::string& path, std::string_view bytes) {
   return replace_atomically(path, target, bytes, st.st_mode & 07777, true);
 }
 
+Status check_output_file(const std::string& path, const std::vector<std::string>& inputs) {
+  if (names_descriptor(path)) return Status::Ok();
+  std::string target;
+  GAB_RETURN_IF_ERROR(link_target(path, &target));
+  struct stat st;
+  if (::stat(target.c_str(), &st) == 0) {
+    if (S_ISDIR(st.st_mode)) return io_error(path, "cannot write", EISDIR);
+    for (const std::string& input : inputs) {
+      struct stat in;
+      if (::stat(input.c_str(), &in) == 0 && in.st_dev == st.st_dev && in.st_ino == st.st_ino) {
+        return Status::Error(StatusCode::kInvalidArgument,
+                             "the output " + path + " is the input " + input + ": writing it would replace the input");
+      }
+    }
+    return Status::Ok();
+  }
+  if (errno != ENOENT) return io_error(path, "cannot write", errno);
+  const size_t slash = target.find_last_of('/');
+  const std::string folder = slash == std::string::npos ? "." : slash == 0 ? "/" : target.substr(0, slash);
+  struct stat fs;
+  if (::stat(folder.c_str(), &fs) != 0 || !S_ISDIR(fs.st_mode)) {
+    return Status::Error(StatusCode::kIoError, path + ": cannot write: the folder " + folder + " does not exist");
+  }
+  return Status::Ok();
+}
+
 void remove_partial_outputs() noexcept {
   for (PartialSlot& slot : partial_slots) {
     if (slot.state.load(std::memory_order_acquire) == 2) ::unlink(slot.path);

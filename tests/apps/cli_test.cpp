@@ -125,6 +125,38 @@ TEST(CliTest, EveryCommandAnswersHelp) {
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), "untouched");
 }
 
+TEST(CliTest, OutputsAreCheckedBeforeTheWork) {
+  // A new output in a folder that does not exist: refused before the input
+  // is read (a missing input would be the error otherwise). An output that
+  // is the input, by name or through a link: a usage error, the input
+  // untouched. A directory: refused.
+  const std::string mesh = write_scratch_file("outputs-in.off", kOctahedron);
+  const std::string folder = mesh.substr(0, mesh.find_last_of('/'));
+  CommandResult r = run_gab("compress -i missing.off -o " + folder + "/no-such-folder/out.gab");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "gab: error: " + folder + "/no-such-folder/out.gab: cannot write: the folder " + folder +
+                       "/no-such-folder does not exist\n");
+  r = run_gab("decompress -i missing.gab -o " + folder + "/no-such-folder/out.ply");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
+  const std::string link = folder + "/outputs-link.off";
+  ::unlink(link.c_str());
+  ASSERT_EQ(::symlink(mesh.c_str(), link.c_str()), 0);
+  for (const std::string& command : {"compress -i " + mesh + " -o " + mesh, "compress -i " + mesh + " -o " + link,
+                                     "subdivide " + mesh + " -o " + link,
+                                     "decompress -i x.gab --connectivity " + mesh + " -o " + mesh}) {
+    r = run_gab(command);
+    EXPECT_EQ(r.exit_code, 2) << command;
+    EXPECT_NE(r.err.find(": writing it would replace the input\nusage: gab "), std::string::npos) << r.err;
+    std::ifstream in(mesh);
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), kOctahedron) << command;
+  }
+  r = run_gab("compress -i " + mesh + " -o " + folder);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "gab: error: " + folder + ": cannot write: Is a directory\n");
+  ::unlink(link.c_str());
+}
+
 TEST(CliTest, UnsupportedExtensionIsBadInput) {
   const CommandResult r = run_gab("factor model.stl");
   EXPECT_EQ(r.exit_code, 1);

@@ -4,6 +4,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "gab/status.h"
 
@@ -30,6 +31,13 @@ Status read_file(const std::string& path, std::string* bytes);
 // decision its owner made: make it writable or remove it first).
 // Errors: kIoError naming `path` and the reason. O(size).
 Status write_output_file(const std::string& path, std::string_view bytes);
+
+// Before the work that makes an output's bytes: whether write_output_file
+// can write `path`. kIoError naming `path` when it is a directory, or when
+// it is new and its folder does not exist; kInvalidArgument when it is the
+// same file as one of `inputs` (writing it would replace that input).
+// Descriptors (/dev/stdout, ...) pass. A few stat calls.
+Status check_output_file(const std::string& path, const std::vector<std::string>& inputs);
 
 // Removes the temporary files of the writes in progress: for a program's
 // SIGINT / SIGTERM handler (the library installs none). Async-signal-safe.
