@@ -58,12 +58,22 @@ Status bfs_distances(const EdgeGraph& graph, const std::vector<int32_t>& sources
 
 Status farthest_point_sampling(const EdgeGraph& graph, int32_t count, const std::vector<int32_t>& seeds,
                                std::vector<int32_t>* picked) {
+  return farthest_point_sampling(graph, count, seeds, nullptr, picked);
+}
+
+Status farthest_point_sampling(const EdgeGraph& graph, int32_t count, const std::vector<int32_t>& seeds,
+                               const std::vector<int32_t>* candidates, std::vector<int32_t>* picked) {
   GAB_RETURN_IF_ERROR(check_vertices(graph, seeds, "seed", true));
+  if (candidates) GAB_RETURN_IF_ERROR(check_vertices(graph, *candidates, "candidate", true));
   if (count < 0) return Status::Error(StatusCode::kInvalidArgument, "negative sample count " + std::to_string(count));
   const int32_t n = graph.num_vertices();
   const int32_t kFar = INT32_MAX;  // not reachable from any chosen vertex
+  std::vector<char> candidate(n, candidates ? 0 : 1);
+  if (candidates) {
+    for (int32_t v : *candidates) candidate[v] = 1;
+  }
   std::vector<int32_t> dist(n, kFar), queue;
-  // A bucket per distance, and the unreached (every vertex at first, in
+  // A bucket per distance, and the unreached (every candidate at first, in
   // increasing index: taken first), each taken in increasing vertex index
   // once it is the farthest left: the farthest first, ties to the smaller
   // index. Past the unreached a pick only brings vertices closer than the
@@ -75,10 +85,10 @@ Status farthest_point_sampling(const EdgeGraph& graph, int32_t count, const std:
   std::vector<int32_t> out;
   out.reserve(std::min(count, n));
 
-  auto add = [&](int32_t s) {
-    out.push_back(s);
-    dist[s] = 0;
-    queue.assign(1, s);
+  // Breadth-first from the queue's vertices (at distance 0), only where it
+  // brings a vertex closer; first-in first-out visits in order of distance,
+  // so each vertex settles at its new distance when first reached.
+  auto spread_from_queue = [&]() {
     for (size_t q = 0; q < queue.size(); ++q) {
       const int32_t v = queue[q];
       for (int32_t p = graph.offsets[v]; p < graph.offsets[v + 1]; ++p) {
@@ -86,22 +96,33 @@ Status farthest_point_sampling(const EdgeGraph& graph, int32_t count, const std:
         if (dist[v] + 1 < dist[u]) {
           dist[u] = dist[v] + 1;
           queue.push_back(u);
+          if (!candidate[u]) continue;
           if (static_cast<size_t>(dist[u]) >= buckets.size()) buckets.resize(static_cast<size_t>(dist[u]) + 1);
           buckets[dist[u]].push_back(u);
         }
       }
     }
   };
+  auto add = [&](int32_t s) {
+    out.push_back(s);
+    dist[s] = 0;
+    queue.assign(1, s);
+    spread_from_queue();
+  };
   auto full = [&]() { return static_cast<int32_t>(out.size()) >= count; };
 
-  for (int32_t s : seeds) {
-    if (full()) break;
-    add(s);
+  // The seeds (as many as count allows) at once: one search from all of them.
+  queue.clear();
+  for (size_t i = 0; i < seeds.size() && !full(); ++i) {
+    out.push_back(seeds[i]);
+    dist[seeds[i]] = 0;
+    queue.push_back(seeds[i]);
   }
+  spread_from_queue();
   for (int32_t v = 0; v < n && !full(); ++v) {
-    if (dist[v] == kFar) add(v);  // the smallest vertex of a component nothing reaches yet
+    if (candidate[v] && dist[v] == kFar) add(v);  // the smallest of a component nothing reaches yet
   }
-  // Distance 0 is a chosen vertex: every vertex is then chosen.
+  // Distance 0 is a chosen vertex: every candidate is then chosen.
   for (size_t d = buckets.size(); d-- > 1 && !full();) {
     std::vector<int32_t>& bucket = buckets[d];
     std::sort(bucket.begin(), bucket.end());

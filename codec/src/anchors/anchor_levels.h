@@ -55,9 +55,8 @@ uint32_t level_growth16(double growth);
 // The first `count` vertices of `rest` (distinct, none in `spread`) in
 // farthest-point order: each pick is the vertex of rest farthest in hops
 // from `spread` and the picks before it, ties to the smaller index; a vertex
-// that none of them reaches is infinitely far. O((V + E) * r) in the worst
-// case, r the number of times a vertex's distance shrinks (a few on meshes),
-// plus a sort of each distance's entries (one per shrink of a rest vertex).
+// that none of them reaches is infinitely far: farthest_point_sampling's
+// picks among `rest` after the seeds `spread` (graph_distance.h, its cost).
 Status level_order(const EdgeGraph& graph, const std::vector<int32_t>& spread, const std::vector<int32_t>& rest,
                    int32_t count, std::vector<int32_t>* order);
 

@@ -26,5 +26,11 @@ Status bfs_distances(const EdgeGraph& graph, const std::vector<int32_t>& sources
 // distance's entries (one per distance change).
 Status farthest_point_sampling(const EdgeGraph& graph, int32_t count, const std::vector<int32_t>& seeds,
                                std::vector<int32_t>* picked);
+// The same with the picks made among `candidates` alone (distinct, in
+// range; null: every vertex), distances still from every chosen vertex: a
+// candidate that is a seed is never picked again, and the picks stop when
+// the candidates run out.
+Status farthest_point_sampling(const EdgeGraph& graph, int32_t count, const std::vector<int32_t>& seeds,
+                               const std::vector<int32_t>* candidates, std::vector<int32_t>* picked);
 
 }  // namespace gab
