@@ -14,14 +14,14 @@ namespace gab {
 namespace {
 
 // Anchors to add in the next greedy step: the batch fraction of those so
-// far (`far_fraction` while the error is over kFarErrorOverTarget times an
+// far (the far one while the error is over kFarErrorOverTarget times an
 // RMS target, when larger), but near an RMS target (0: none) only as many
 // as the error curve's last two points (rms ~ k^-alpha) say are still needed.
-int32_t next_batch(double target_rms_rel, double fraction, double far_fraction, const std::vector<GreedyStep>& curve,
+int32_t next_batch(double target_rms_rel, const GreedyBatches& batches, const std::vector<GreedyStep>& curve,
                    int32_t cap) {
   const int32_t k = curve.back().anchors;
   const bool far = target_rms_rel > 0 && curve.back().rms_rel > kFarErrorOverTarget * target_rms_rel;
-  if (far) fraction = std::max(fraction, far_fraction);
+  const double fraction = far ? std::max(batches.fraction, batches.far_fraction) : batches.fraction;
   int64_t wanted = fraction > 0 ? static_cast<int64_t>(std::ceil(fraction * k)) : 1;
   if (target_rms_rel > 0 && curve.size() >= 2) {
     const GreedyStep& a = curve[curve.size() - 2];
@@ -34,6 +34,103 @@ int32_t next_batch(double target_rms_rel, double fraction, double far_fraction, 
   }
   return static_cast<int32_t>(std::min<int64_t>(std::max<int64_t>(wanted, 1), cap - k));
 }
+
+// The loop's targets, relative to the diagonal (0: none); met when either is.
+struct Targets {
+  double rms = 0, linf = 0;
+  double scale = 1;  // 1 / the diagonal
+  bool met(const VertexDistance& d) const {
+    return (rms > 0 && d.rms * scale <= rms) || (linf > 0 && d.linf * scale <= linf);
+  }
+};
+
+// A count of anchors and the relative RMS of the decoder's shape there
+// (negative: not evaluated; anchors -1: none).
+struct Evaluated {
+  int32_t anchors = -1;
+  double rms_rel = -1;
+};
+
+// The iterative operator's shape is a function of the anchor set alone, so
+// every prefix of the selection order (the spread set and more) is a file.
+// Once the anchors so far meet the targets, the shortest prefix that does,
+// searched between a count that misses and one that meets: the RMS
+// interpolated in log-log between them (rms ~ k^-alpha) for an RMS target,
+// halved for an L-inf one, at most kTrimEvaluations shapes, each the
+// decoder's on a fresh operator.
+class ShortestPrefix {
+ public:
+  ShortestPrefix(const EdgeGraph& graph, const Mesh& mesh, const GridPositions& grid, const EncodeOptions& options,
+                 const ShapeOperator& like, const std::vector<int32_t>& order, const Targets& targets)
+      : graph_(graph), mesh_(mesh), grid_(grid), options_(options), like_(like), order_(order), targets_(targets) {}
+
+  // `lo`: a count below found->anchors that misses the targets, its RMS
+  // `lo_rms` (negative: not known, evaluated first: if it meets them after
+  // all, it is the answer). *found: the count that meets them, replaced by
+  // a shorter one that does, with its shape and distance.
+  Status run(int32_t lo, double lo_rms, Evaluated* found, std::vector<double>* shape, VertexDistance* distance) {
+    Evaluated low{lo, lo_rms};
+    if (low.anchors < 0 || low.anchors >= found->anchors) return Status::Ok();
+    std::vector<double> s;
+    VertexDistance d;
+    int evaluations = 0;
+    if (low.rms_rel < 0) {
+      GAB_RETURN_IF_ERROR(evaluate(low.anchors, &s, &d));
+      ++evaluations;
+      low.rms_rel = d.rms * targets_.scale;
+      if (targets_.met(d)) {
+        *found = low;
+        *shape = std::move(s);
+        *distance = d;
+        return Status::Ok();
+      }
+    }
+    while (evaluations < kTrimEvaluations &&
+           found->anchors - low.anchors > std::max<int32_t>(1, found->anchors / kTrimPrecision)) {
+      double t = 0.5;
+      if (targets_.rms > 0 && low.rms_rel > targets_.rms && found->rms_rel < low.rms_rel) {
+        t = std::log(low.rms_rel / targets_.rms) / std::log(low.rms_rel / found->rms_rel);
+      }
+      // Inside the bracket, never at an end: the log-log line may be off.
+      t = std::min(0.9, std::max(0.1, t));
+      const int32_t span = found->anchors - low.anchors;
+      const int32_t k =
+          std::min(found->anchors - 1, low.anchors + std::max(1, static_cast<int32_t>(std::ceil(t * span))));
+      GAB_RETURN_IF_ERROR(evaluate(k, &s, &d));
+      ++evaluations;
+      const Evaluated at{k, d.rms * targets_.scale};
+      if (targets_.met(d)) {
+        *found = at;
+        *shape = s;
+        *distance = d;
+      } else {
+        low = at;
+      }
+    }
+    return Status::Ok();
+  }
+
+ private:
+  Status evaluate(int32_t k, std::vector<double>* shape, VertexDistance* distance) const {
+    ShapeOperator op(like_.code());
+    GAB_RETURN_IF_ERROR(tune(like_.tuning(), &op));
+    op.set_threads(options_.threads);
+    const std::vector<int32_t> prefix(order_.begin(), order_.begin() + k);
+    GAB_RETURN_IF_ERROR(op.init(graph_, options_.weight, prefix, grid_.coefficients_of(prefix)));
+    GAB_RETURN_IF_ERROR(op.shape(shape));
+    std::vector<double> error2;
+    squared_vertex_errors(mesh_, *shape, &error2, distance);
+    return Status::Ok();
+  }
+
+  const EdgeGraph& graph_;
+  const Mesh& mesh_;
+  const GridPositions& grid_;
+  const EncodeOptions& options_;
+  const ShapeOperator& like_;
+  const std::vector<int32_t>& order_;
+  const Targets targets_;
+};
 
 // The refined coefficients of the current anchor set, as grid indices (3 per
 // anchor, in rec->anchors() order), and the errors of their reconstruction.
@@ -174,9 +271,9 @@ Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const AnchorRule
   GAB_RETURN_IF_ERROR(rec->init(graph, options.weight, schedule.order, grid.coefficients_of(schedule.order)));
   // Without a factor (the iterative operator) the cheap regime's defaults.
   out->flops = rec->relaxed() ? rec->relaxed()->cholesky().symbolic().flops : 0.0;
-  const double fraction = options.batch_fraction >= 0 ? options.batch_fraction : default_batch_fraction(out->flops);
-  // A fraction asked for is kept; below kFarBatchFromVertices a round costs little.
-  const double far_fraction = options.batch_fraction >= 0 || n < kFarBatchFromVertices ? 0.0 : kFarBatchFraction;
+  // A fraction asked for is kept throughout.
+  const GreedyBatches batches = options.batch_fraction >= 0 ? GreedyBatches{options.batch_fraction, 0.0}
+                                                            : default_greedy_batches(out->flops, !rec->global(), n);
   const double growth = options.chunk_growth > 0 ? options.chunk_growth : default_chunk_growth(out->flops);
 
   // A grid of step s errs s / 2 in RMS.
@@ -186,43 +283,71 @@ Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const AnchorRule
   const double target_linf = rules.target_linf_rel;
   RefinementSearch refinement(mesh, rules.refine, options.refine_iterations, target_rms, target_linf, grid.quantizer,
                               scale);
-  auto meets_a_target = [&](const VertexDistance& d) {
-    return (target_rms > 0 && d.rms * scale <= target_rms) || (target_linf > 0 && d.linf * scale <= target_linf);
+  const Targets targets{target_rms, target_linf, scale};
+  const bool iterative = !rec->global();
+  auto near_a_target = [&](const GreedyStep& at) {
+    return (target_rms > 0 && at.rms_rel <= kDecoderCheckWithin * target_rms) ||
+           (target_linf > 0 && at.linf_rel <= kDecoderCheckWithin * target_linf);
   };
   std::vector<double> shape, error2(n);
+  // Iterative: the most anchors whose decoder's shape missed the targets.
+  Evaluated missed;
   while (true) {
-    GAB_RETURN_IF_ERROR(rec->greedy_shape(&shape));
+    const int32_t k = rec->num_anchors();
+    const bool far =
+        target_rms > 0 && (out->curve.empty() || out->curve.back().rms_rel > kFarErrorOverTarget * target_rms);
+    // Iterative, once near a target: the decoder's shape alone.
+    const bool near = iterative && !out->curve.empty() && near_a_target(out->curve.back());
     VertexDistance distance;
-    squared_vertex_errors(mesh, shape, &error2, &distance);
-    if (!rec->global()) {
-      // The greedy shape is not the decoder's: where the loop may stop (the
-      // file's error), the decoder's shape instead.
-      if (meets_a_target(distance) || rec->num_anchors() >= cap) {
-        GAB_RETURN_IF_ERROR(rec->shape(&shape));
-        squared_vertex_errors(mesh, shape, &error2, &distance);
-      }
+    if (!near) {
+      GAB_RETURN_IF_ERROR(rec->greedy_shape(greedy_steps(n, far), &shape));
+      squared_vertex_errors(mesh, shape, &error2, &distance);
+    }
+    bool met = !iterative && targets.met(distance);
+    if (iterative && (near || near_a_target({k, distance.rms * scale, distance.linf * scale}) || k >= cap)) {
+      // The ranking shape is not the decoder's: where the loop may stop (the
+      // file's error), the decoder's shape instead, which ranks the next
+      // batch too.
+      GAB_RETURN_IF_ERROR(rec->shape(&shape));
+      squared_vertex_errors(mesh, shape, &error2, &distance);
+      met = targets.met(distance);
+      if (!met) missed = {k, distance.rms * scale};
     }
     out->rms_rel = distance.rms * scale;
     out->linf_rel = distance.linf * scale;
-    out->curve.push_back({rec->num_anchors(), out->rms_rel, out->linf_rel});
-    if (options.progress) options.progress(rec->num_anchors(), out->rms_rel);
-    if (rec->num_anchors() == schedule.cuts.back()) {
+    out->curve.push_back({k, out->rms_rel, out->linf_rel});
+    if (options.progress) options.progress(k, out->rms_rel);
+    if (k == schedule.cuts.back()) {
       // No anchor since the last cut: what the decoder holds when the next chunk starts.
       schedule.shapes.resize(schedule.cuts.size());
-      if (rec->global()) {
-        schedule.shapes.back() = shape;
-      } else {
+      if (iterative) {
         GAB_RETURN_IF_ERROR(rec->prediction(nullptr, &schedule.shapes.back()));
-        // The greedy shapes drift from the decoder's (each warm from the
-        // last, fewer steps): the decoder's shape here sets them back on it
-        // (fewer anchors for the target: 1.6% fewer bytes over five shared
-        // meshes at 1e-3), and is the warm start of the next.
-        std::vector<double> decoded;
-        GAB_RETURN_IF_ERROR(rec->shape(&decoded));
+      } else {
+        schedule.shapes.back() = shape;
       }
     }
-    if (meets_a_target(distance)) break;
-    if (rec->num_anchors() >= cap) {
+    if (met) {
+      if (iterative) {
+        // The last batch may have overshot: its shortest prefix that meets the targets.
+        Evaluated below = missed;
+        if (below.anchors < 0 && out->curve.size() >= 2) below = {out->curve[out->curve.size() - 2].anchors, -1.0};
+        ShortestPrefix search(graph, mesh, grid, options, *rec, schedule.order, targets);
+        Evaluated found{k, out->rms_rel};
+        GAB_RETURN_IF_ERROR(
+            search.run(std::max(below.anchors, schedule.spread), below.rms_rel, &found, &shape, &distance));
+        if (found.anchors < k) {
+          schedule.order.resize(found.anchors);
+          while (schedule.cuts.back() > found.anchors) schedule.cuts.pop_back();
+          schedule.shapes.resize(std::min(schedule.shapes.size(), schedule.cuts.size()));
+          GAB_RETURN_IF_ERROR(rec->init(graph, options.weight, schedule.order, grid.coefficients_of(schedule.order)));
+          out->rms_rel = distance.rms * scale;
+          out->linf_rel = distance.linf * scale;
+          out->curve.push_back({found.anchors, out->rms_rel, out->linf_rel});
+        }
+      }
+      break;
+    }
+    if (k >= cap) {
       GAB_RETURN_IF_ERROR(refinement.at_cap(rec->relaxed(), out->rms_rel, out->linf_rel));
       break;
     }
@@ -230,8 +355,8 @@ Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const AnchorRule
     GAB_RETURN_IF_ERROR(refinement.before_step(rec->relaxed(), out->rms_rel, out->linf_rel, &stop));
     if (stop) break;
     const std::vector<int32_t> next =
-        pick_error_maxima(graph, error2, *rec,
-                          next_batch(refinement.position_target(), fraction, far_fraction, out->curve, cap));
+        pick_error_maxima(graph, error2, *rec, next_batch(refinement.position_target(), batches, out->curve, cap),
+                          iterative ? batch_separation(n, k) : 0);
     GAB_RETURN_IF_ERROR(rec->add_anchors(next, grid.coefficients_of(next)));
     schedule.order.insert(schedule.order.end(), next.begin(), next.end());
     const int32_t opened_at = schedule.cuts.back();

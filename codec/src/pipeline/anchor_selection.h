@@ -61,8 +61,11 @@ struct Selection {
 // schedule's shapes, the last shape and its errors are the decoder's.
 // `scale`: 1 / the bounding-box diagonal. Cost, global: a factorization,
 // then per step a solve and an update or refactorization (and a refinement
-// try: 2 * refine_iterations + 1 solves); iterative: per step the greedy
-// shape's steps, and at each cut and stopping point the decoder's shape's.
+// try: 2 * refine_iterations + 1 solves); iterative: per step a ranking
+// shape (the decoder's start and a few steps: greedy_steps) or near a target
+// the decoder's shape, at each cut a prediction, and at the end up to
+// kTrimEvaluations decoder's shapes (the shortest prefix that meets the
+// target: the schedule's order ends there).
 Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const AnchorRules& rules,
                       const EncodeOptions& options, const GridPositions& grid, double scale,
                       const OrderingPlan& ordering, ShapeOperator* rec, Selection* out);

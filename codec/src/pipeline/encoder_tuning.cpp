@@ -17,6 +17,22 @@ double default_batch_fraction(double flops) {
   return std::min(0.12, 0.05 * std::pow(std::max(1.0, flops / 2e9), 0.8));
 }
 
+GreedyBatches default_greedy_batches(double flops, bool iterative, int32_t n) {
+  const bool small = n < kFarBatchFromVertices;
+  if (!iterative) return {default_batch_fraction(flops), small ? 0.0 : kFarBatchFraction};
+  if (small) return {kSmallIterativeBatchFraction, kSmallIterativeFarBatchFraction};
+  return {kIterativeBatchFraction, kIterativeFarBatchFraction};
+}
+
+int32_t greedy_steps(int32_t n, bool far) {
+  if (far && n >= kFarBatchFromVertices) return kFarGreedySteps;
+  return std::max(kGreedySteps, kGreedyStepBudget / std::max(n, 1));
+}
+
+int32_t batch_separation(int32_t n, int32_t k) {
+  return static_cast<int32_t>(kBatchSeparation * std::sqrt(static_cast<double>(n) / std::max(k, 1)));
+}
+
 double default_chunk_growth(double flops) { return 4.0 * std::pow(std::max(1.0, flops / 2e9), 0.6); }
 
 double default_level_growth(double flops, bool iterative, int32_t n) {

@@ -20,13 +20,26 @@ int default_bits(double extent_over_diagonal, double target_rms_rel, double targ
 
 // The farthest-point spread set the greedy loop starts from: n / 1000 up to
 // 50,000 vertices, growing as n^4 / 1.25e17 beyond (at most n / 50), so
-// large meshes take fewer, costlier greedy steps.
+// large meshes take fewer, costlier greedy steps. With the iterative
+// operator a smaller set codes smaller (igea at 1e-3: 39,190 bytes from 134
+// spread anchors against 41,269 from 2,606) but decodes slower (243 ms
+// against 188: each level costs its decode passes over the mesh).
 int32_t default_initial_anchors(int32_t n);
 
 // The greedy batch fraction for a system whose factorization costs `flops`:
 // 5% while a refactorization is cheap, growing as (flops / 2e9)^0.8 up to
 // 12% so that large meshes need a bounded number of steps.
 double default_batch_fraction(double flops);
+
+// The greedy loop's batches: a fraction of the anchors so far, and a larger
+// one (when more) while far above an RMS target.
+struct GreedyBatches {
+  double fraction = 0;
+  double far_fraction = 0;
+};
+// The global operator's: default_batch_fraction, and kFarBatchFraction on
+// meshes of kFarBatchFromVertices and more; the iterative operator's below.
+GreedyBatches default_greedy_batches(double flops, bool iterative, int32_t n);
 
 // On meshes of kFarBatchFromVertices and more, while the greedy loop's
 // error is over kFarErrorOverTarget times an RMS target, its batches are
@@ -40,6 +53,43 @@ double default_batch_fraction(double flops);
 constexpr double kFarBatchFraction = 0.15;
 constexpr double kFarErrorOverTarget = 3.0;
 constexpr int32_t kFarBatchFromVertices = 1 << 14;
+
+// The iterative operator's greedy loop (operator 3; the global one keeps
+// the rules above). Measured at 1e-3 --reorder on the eight shared meshes
+// against the loop of warm greedy shapes, 5% batches and the default spread
+// set (docs/tuning-codec.md): 1.1% fewer bytes in about half the time.
+// - Batches: kIterativeBatchFraction of the anchors so far, and
+//   kIterativeFarBatchFraction while the error is over kFarErrorOverTarget
+//   times an RMS target, on meshes of kFarBatchFromVertices and more; below
+//   that, the kSmall* fractions.
+// - Its picks at least kBatchSeparation anchor spacings apart (the spacing
+//   sqrt(n / k) hops): what lets a batch be that large.
+// - Vertices ranked by the decoder's shape cut to greedy_steps steps
+//   (ShapeOperator::greedy_shape): its start and sweeps, where most of its
+//   error is decided, and the few steps a ranking needs.
+// - The decoder's own shape evaluated once the ranking shape's error is
+//   within kDecoderCheckWithin of a target; when it meets the target, the
+//   shortest prefix of the selection order that does is searched
+//   (the operator's shape depends on the anchor set alone), at most
+//   kTrimEvaluations shapes, to within 1 / kTrimPrecision of the count.
+constexpr double kIterativeBatchFraction = 0.2;
+constexpr double kIterativeFarBatchFraction = 0.5;
+constexpr double kSmallIterativeBatchFraction = 0.1;
+constexpr double kSmallIterativeFarBatchFraction = 0.2;
+constexpr double kBatchSeparation = 0.8;
+constexpr double kDecoderCheckWithin = 1.15;
+constexpr int kTrimEvaluations = 4;
+constexpr int32_t kTrimPrecision = 250;
+// The ranking shape's steps for n vertices: kGreedySteps, more on small
+// meshes (kGreedyStepBudget / n: a step costs little there, and camel-head
+// codes 10% smaller with its decoder's steps), kFarGreedySteps while far
+// from the target on meshes of kFarBatchFromVertices and more.
+constexpr int32_t kGreedySteps = 8;
+constexpr int32_t kGreedyStepBudget = 1 << 18;
+constexpr int32_t kFarGreedySteps = 2;
+int32_t greedy_steps(int32_t n, bool far);
+// The separation in hops of a batch's picks with k anchors on n vertices.
+int32_t batch_separation(int32_t n, int32_t k);
 
 // Chunk growth (selection order) for a system whose factorization costs
 // `flops`: 4 while a refactorization is cheap, growing as (flops / 2e9)^0.6

@@ -16,9 +16,13 @@ namespace gab {
 // mean over their closed 1-ring, largest first, ties to the smaller index.
 // With count == 1 the worst free vertex (the paper's rule), local maximum or
 // not; if no free vertex is a local maximum, the worst free vertex, so a
-// greedy loop always progresses. Needs a free vertex. O(V + E + c log c),
-// c the local maxima.
+// greedy loop always progresses. With `separation` > 0 hops a batch takes
+// the maxima in that order but none within `separation` hops of one taken
+// before it (so it may hold fewer than `count`): a large batch then spreads
+// its anchors as one at a time would, rather than putting several on one
+// broad bump that one anchor pulls into place. Needs a free vertex.
+// O(V + E + c log c), c the local maxima, plus the separation's balls.
 std::vector<int32_t> pick_error_maxima(const EdgeGraph& graph, const std::vector<double>& error,
-                                       const ShapeOperator& rec, int32_t count);
+                                       const ShapeOperator& rec, int32_t count, int32_t separation = 0);
 
 }  // namespace gab

@@ -71,12 +71,15 @@ Status ShapeOperator::set_coefficients(int32_t first, const std::vector<double>&
   return global_ ? global_->set_coefficients(first, coefficients) : iterative_->set_coefficients(first, coefficients);
 }
 
+int32_t ShapeOperator::final_step_count() const {
+  const int32_t n = iterative_->num_vertices(), k = iterative_->num_anchors();
+  return local() ? final_steps(tuning_, n, k) : iterative_steps(n, k, kIterativeFinalSteps);
+}
+
 Status ShapeOperator::shape(std::vector<double>* positions) {
   if (global_) return global_->reconstruct(positions);
   iterative_->restart();
-  const int32_t n = iterative_->num_vertices(), k = iterative_->num_anchors();
-  return iterative_->solve(local() ? final_steps(tuning_, n, k) : iterative_steps(n, k, kIterativeFinalSteps),
-                           positions);
+  return iterative_->solve(final_step_count(), positions);
 }
 
 Status ShapeOperator::prediction(const std::vector<int32_t>* at, std::vector<double>* positions) {
@@ -95,10 +98,10 @@ Status ShapeOperator::prediction(const std::vector<int32_t>* at, std::vector<dou
   return at ? iterative_->start_at(*at, positions) : iterative_->start(positions);
 }
 
-Status ShapeOperator::greedy_shape(std::vector<double>* positions) {
+Status ShapeOperator::greedy_shape(int32_t most_steps, std::vector<double>* positions) {
   if (global_) return global_->reconstruct(positions);
-  return iterative_->solve(
-      iterative_steps(iterative_->num_vertices(), iterative_->num_anchors(), kIterativeGreedySteps), positions);
+  iterative_->restart();
+  return iterative_->solve(std::min(std::max(most_steps, 0), final_step_count()), positions);
 }
 
 Status tune(const IterativeTuning& tuning, ShapeOperator* op) {

@@ -43,8 +43,6 @@ struct IterativeSteps {
 };
 constexpr IterativeSteps kIterativeFinalSteps = {1.0, 32};
 constexpr IterativeSteps kIterativePredictionSteps = {0.75, 16};
-// The encoder's greedy shapes, each warm from the one before: fewer steps.
-constexpr IterativeSteps kIterativeGreedySteps = {0.5, 16};
 int32_t iterative_steps(int32_t n, int32_t k, const IterativeSteps& rule);
 
 // Operator 2 predicts a chunk by its start alone (each vertex at its nearest
@@ -68,6 +66,7 @@ class ShapeOperator {
   bool global() const { return global_ != nullptr; }
   // Operator 3 only, before init: its parameters (default kOperator2Tuning's).
   Status set_tuning(const IterativeTuning& tuning);
+  const IterativeTuning& tuning() const { return tuning_; }
 
   // Threads for the factorizations or the iterative steps (the same shapes
   // for any count).
@@ -93,9 +92,10 @@ class ShapeOperator {
   // (fewer steps); operator 2's start, at a cost of the ring around `at`.
   Status prediction(const std::vector<int32_t>* at, std::vector<double>* positions);
   // A shape for the encoder's greedy loop, which only ranks vertices by
-  // error: iterative, the final rule's steps from the shape before (warm;
-  // not what a decoder computes); global, shape's.
-  Status greedy_shape(std::vector<double>* positions);
+  // error: global, shape's; iterative, shape's computation cut to at most
+  // `most_steps` steps (the same start: what the decoder's shape errs where
+  // the anchors leave it to the steps, for less).
+  Status greedy_shape(int32_t most_steps, std::vector<double>* positions);
 
   int32_t num_anchors() const;
   bool is_anchor(int32_t v) const;
@@ -108,6 +108,8 @@ class ShapeOperator {
  private:
   // Operators 2 and 3: predictions by the start alone, final steps by the tuning.
   bool local() const;
+  // Iterative: the conjugate-gradient steps of shape() for the anchors so far.
+  int32_t final_step_count() const;
 
   uint8_t code_;
   IterativeTuning tuning_ = kOperator2Tuning;
