@@ -166,6 +166,11 @@ Status improve_detail(const DetailTopology& topo, const DetailFrame& frame, cons
       DetailParams p = from;
       p.*weight = value;
       Trial t = search.run(p);
+      if (!t.met && t.chunk.size() < best.chunk.size()) {
+        // Smaller but just past the target at this step (a blend moves the
+        // errors a little): the largest step that meets it with this blend.
+        t = search.largest_step(p, p.step * search.headroom(t) * (1 - kFitMargin), lo, hi);
+      }
       if (t.met && t.chunk.size() < best.chunk.size()) best = std::move(t);
     }
   };
