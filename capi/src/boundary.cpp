@@ -82,6 +82,7 @@ extern "C" const char* gab_error_name(int code) {
     case GAB_E_UNSUPPORTED: return "GAB_E_UNSUPPORTED";
     case GAB_E_STATE: return "GAB_E_STATE";
     case GAB_E_INTERNAL: return "GAB_E_INTERNAL";
+    case GAB_W_TRUNCATED: return "GAB_W_TRUNCATED";
   }
   return "GAB_E_UNKNOWN";
 }

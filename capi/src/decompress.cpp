@@ -3,6 +3,7 @@
 // untrusted bytes holds here: errors, never reads outside `data`, memory
 // within the options' budget.
 #include <cstddef>
+#include <cstdio>
 #include <cstring>
 
 #include "boundary.h"
@@ -34,7 +35,8 @@ Status read_options(const gab_decompress_options* in, DecodeOptions* out) {
 int decompress(const char* function, const unsigned char* data, size_t size, const DecodeOptions* fixed,
                const gab_decompress_options* options, double** positions, int32_t* n, int32_t** triangles,
                int32_t* t, char* message, size_t message_size) {
-  return guarded(function, message, message_size, [&]() -> Status {
+  DecodeStats stats;
+  const int code = guarded(function, message, message_size, [&]() -> Status {
     GAB_RETURN_IF_ERROR(clear_mesh_outputs(positions, n, triangles, t));
     GAB_RETURN_IF_ERROR(require(data != nullptr || size == 0, "data is NULL"));
     static const unsigned char kEmpty = 0;
@@ -45,10 +47,15 @@ int decompress(const char* function, const unsigned char* data, size_t size, con
       GAB_RETURN_IF_ERROR(read_options(options, &decode_options));
     }
     Mesh mesh;
-    DecodeStats stats;
     GAB_RETURN_IF_ERROR(decode_mesh(data != nullptr ? data : &kEmpty, size, decode_options, &mesh, &stats));
     return export_mesh(mesh, positions, n, triangles, t);
   });
+  if (code != GAB_OK || !stats.truncated) return code;
+  char text[160];
+  std::snprintf(text, sizeof text, "the file is truncated: decoded %d of %d chunks (%d of %d anchors)", stats.chunks,
+                stats.chunks_in_file, stats.anchors, stats.anchors_in_file);
+  write_message(function, text, message, message_size);
+  return GAB_W_TRUNCATED;
 }
 
 }  // namespace

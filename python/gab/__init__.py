@@ -12,17 +12,28 @@ arrays in and out).
     x = chol.solve(b)
     chol.add_anchor(j, w)                    # now the factor of A + w^2 e_j e_j^T
 
-Every failure of the library raises GabError with its message.
+Every failure of the library raises GabError with its message; a file cut
+short decodes to its complete chunks with a TruncatedWarning.
 """
 
 import ctypes
 import os
+import warnings
 
 import numpy as np
 
-from ._capi import LIB, CompressOptions, DecompressOptions, GabError, check, message_buffer
+from ._capi import (
+    GAB_W_TRUNCATED,
+    LIB,
+    CompressOptions,
+    DecompressOptions,
+    GabError,
+    TruncatedWarning,
+    check,
+    message_buffer,
+)
 
-__all__ = ["Cholesky", "GabError", "compress", "decompress", "read_mesh", "version"]
+__all__ = ["Cholesky", "GabError", "TruncatedWarning", "compress", "decompress", "read_mesh", "version"]
 
 _DETAIL = {"auto": 0, "on": 1, "off": 2}
 _DEFAULT_ERROR = 1e-3
@@ -168,8 +179,9 @@ def decompress(data, anchors=None, max_memory=None, threads=1):
     take (None: 32 KiB per byte of the file, at least 64 MiB; -1: no limit;
     over it GabError GAB_E_RESOURCE_EXHAUSTED says how much it needs).
     threads: for the factorizations (0: every core; same shape for any
-    count). A file cut short decodes to its complete chunks; damaged or
-    forged bytes raise GabError."""
+    count). A file cut short decodes to its complete chunks and warns
+    (TruncatedWarning, saying how many of how many); damaged or forged
+    bytes raise GabError."""
     data = bytes(data)
     options = DecompressOptions()
     LIB.gab_decompress_options_init(ctypes.byref(options), ctypes.sizeof(options))
@@ -182,6 +194,11 @@ def decompress(data, anchors=None, max_memory=None, threads=1):
     message = message_buffer()
     code = LIB.gab_decompress_ex(data, len(data), ctypes.byref(options), ctypes.byref(positions),
                                  ctypes.byref(n), ctypes.byref(triangles), ctypes.byref(t), message, len(message))
+    if code == GAB_W_TRUNCATED:
+        mesh = _take_mesh(positions, n, triangles, t)
+        text = message.value.decode(errors="replace").removeprefix("gab_decompress_ex: ")
+        warnings.warn(TruncatedWarning(text), stacklevel=2)
+        return mesh
     check(code, message)
     return _take_mesh(positions, n, triangles, t)
 

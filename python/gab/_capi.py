@@ -18,6 +18,16 @@ class GabError(Exception):
         self.name = LIB.gab_error_name(code).decode()
 
 
+class TruncatedWarning(UserWarning):
+    """decompress: the file ends inside a chunk (a transfer cut short); the
+    mesh returned is the shape of its complete chunks, the message says how
+    many of how many. warnings.simplefilter("error", gab.TruncatedWarning)
+    makes it an exception."""
+
+
+GAB_W_TRUNCATED = 100
+
+
 class CompressOptions(ctypes.Structure):
     """gab_compress_options, field for field (gab.h)."""
 

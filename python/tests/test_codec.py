@@ -4,6 +4,7 @@ import math
 import os
 import tempfile
 import unittest
+import warnings
 
 import numpy as np
 
@@ -51,6 +52,29 @@ class CodecTest(unittest.TestCase):
         self.assertEqual(oriented_set(G), oriented_set(F))
         self.assertLessEqual(relative_rms(V, W), 1e-3)
         self.assertGreater(relative_rms(V, W), 0)
+
+    def test_a_file_cut_short_warns_and_decodes_its_complete_chunks(self):
+        V, F = bumpy_torus(60, 40)
+        data = gab.compress(V, F, error=1e-3, reorder=True)
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")  # the whole file: no warning
+            W, _ = gab.decompress(data)
+        errors = []
+        for share in (0.5, 0.85, 0.99):
+            with self.assertWarns(gab.TruncatedWarning) as caught:
+                U, G = gab.decompress(data[: int(share * len(data))])
+            self.assertRegex(str(caught.warning), r"^the file is truncated: decoded \d+ of \d+ chunks \(\d+ of \d+ anchors\)$")
+            self.assertEqual(U.shape, V.shape)
+            self.assertEqual(len(G), len(F))
+            errors.append(relative_rms(W, U))
+        self.assertGreater(errors[0], 0)
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", gab.TruncatedWarning)
+            with self.assertRaises(gab.TruncatedWarning):
+                gab.decompress(data[: len(data) - 1])
+        with self.assertRaises(gab.GabError) as cut:
+            gab.decompress(data[: len(data) // 50])
+        self.assertEqual(cut.exception.name, "GAB_E_PARSE")
 
     def test_anchor_prefixes_are_coarser_levels(self):
         V, F = bumpy_torus(30, 20)

@@ -45,7 +45,7 @@ Outcome decompress_outcome(const unsigned char* data, size_t size, int32_t max_a
   const bool cleared = positions == nullptr && triangles == nullptr && n == 0 && t == 0;
   gab_free(positions);
   gab_free(triangles);
-  if (code != GAB_OK && !cleared) return {GAB_E_INTERNAL, "outputs not cleared on failure"};
+  if (code != GAB_OK && code != GAB_W_TRUNCATED && !cleared) return {GAB_E_INTERNAL, "outputs not cleared on failure"};
   return {code, message};
 }
 
@@ -139,6 +139,55 @@ TEST(CapiTest, AnchorPrefixesAreCoarserLevels) {
     gab_free(triangles);
   }
   gab_free(file);
+}
+
+TEST(CapiTest, AFileCutShortIsAWarningWithTheMeshOfItsCompleteChunks) {
+  const Mesh mesh = bumpy_torus(60, 40);
+  gab::EncodeOptions options;
+  options.target_rms_rel = 1e-3;
+  options.reorder = true;
+  gab::EncodeStats encoded;
+  const std::vector<uint8_t> file = gab::testing_util::encode_or_die(mesh, options, &encoded);
+  EXPECT_STREQ(gab_error_name(GAB_W_TRUNCATED), "GAB_W_TRUNCATED");
+  int warned = 0;
+  for (double share : {0.10, 0.50, 0.85, 0.99, 1.0}) {
+    const size_t size = static_cast<size_t>(share * static_cast<double>(file.size()));
+    // The C++ decoder says what the cut leaves.
+    gab::Mesh expected;
+    gab::DecodeStats stats;
+    const gab::Status status = gab::decode_mesh(file.data(), size, gab::DecodeOptions(), &expected, &stats);
+    char message[256];
+    double* positions = nullptr;
+    int32_t* triangles = nullptr;
+    int32_t n = 0, t = 0;
+    const int code = gab_decompress(file.data(), size, -1, &positions, &n, &triangles, &t, message, sizeof message);
+    if (!status.ok()) {
+      EXPECT_EQ(code, GAB_E_PARSE) << share << ": " << message;
+    } else if (!stats.truncated) {
+      EXPECT_EQ(code, GAB_OK) << share << ": " << message;
+      EXPECT_STREQ(message, "");
+    } else {
+      ++warned;
+      EXPECT_EQ(code, GAB_W_TRUNCATED) << share;
+      EXPECT_EQ(std::string(message), "gab_decompress: the file is truncated: decoded " +
+                                          std::to_string(stats.chunks) + " of " + std::to_string(stats.chunks_in_file) +
+                                          " chunks (" + std::to_string(stats.anchors) + " of " +
+                                          std::to_string(stats.anchors_in_file) + " anchors)");
+      ASSERT_EQ(n, mesh.num_vertices());
+      EXPECT_EQ(std::vector<double>(positions, positions + 3 * static_cast<size_t>(n)), expected.positions);
+      EXPECT_LT(stats.anchors, encoded.anchors);
+    }
+    gab_free(positions);
+    gab_free(triangles);
+  }
+  EXPECT_GE(warned, 2);  // 85% and 99% at least cut the geometry's chunks
+  // A prefix of anchors that the cut leaves whole is no warning.
+  const size_t size = file.size() - 1;
+  gab::Mesh coarse;
+  gab::DecodeStats stats;
+  ASSERT_TRUE(gab::decode_mesh(file.data(), size, gab::DecodeOptions(), &coarse, &stats).ok());
+  ASSERT_TRUE(stats.truncated);
+  EXPECT_EQ(decompress_outcome(file.data(), size, stats.anchors).code, GAB_OK);
 }
 
 TEST(CapiTest, OptionsStructIsReadUpToItsSize) {

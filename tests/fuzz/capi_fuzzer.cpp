@@ -4,7 +4,8 @@
 // else the whole file); the rest is the file. Checks beyond "no crash": a
 // failure is a known code with a one-line message starting
 // "gab_decompress: " and NULL / 0 outputs; a success is a mesh with finite
-// coordinates and triangles inside it. The default decode limit (64 MiB for
+// coordinates and triangles inside it, and so is a file cut short
+// (GAB_W_TRUNCATED), its message saying so. The default decode limit (64 MiB for
 // a file this small) bounds what a forged file can ask for.
 #include <cmath>
 #include <cstdint>
@@ -24,14 +25,17 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   char message[256];
   const int code = gab_decompress(file, file_size, max_anchors, &positions, &n, &triangles, &t, message,
                                   sizeof message);
-  if (code != GAB_OK) {
+  if (code == GAB_W_TRUNCATED) {
+    gab_fuzz::require(std::strncmp(message, "gab_decompress: the file is truncated: ", 39) == 0,
+                      "truncation without its message");
+  } else if (code != GAB_OK) {
     gab_fuzz::require(code > GAB_OK && code <= GAB_E_INTERNAL && code != GAB_E_INTERNAL, "unknown or internal code");
     gab_fuzz::require(std::strncmp(message, "gab_decompress: ", 16) == 0, "message without the function's name");
     gab_fuzz::require(std::strchr(message, '\n') == nullptr, "message spans lines");
     gab_fuzz::require(positions == nullptr && triangles == nullptr && n == 0 && t == 0, "outputs set on failure");
     return 0;
   }
-  gab_fuzz::require(message[0] == '\0', "message on success");
+  gab_fuzz::require(code == GAB_W_TRUNCATED || message[0] == '\0', "message on success");
   gab_fuzz::require(n > 0 && t > 0 && positions != nullptr && triangles != nullptr, "empty mesh on success");
   for (int64_t i = 0; i < 3 * int64_t{n}; ++i) gab_fuzz::require(std::isfinite(positions[i]), "non-finite coordinate");
   for (int64_t i = 0; i < 3 * int64_t{t}; ++i) {

@@ -2,10 +2,12 @@
    Cholesky engine behind it, for C99 and anything that calls C.
 
    Contract, for every function below:
-   - It returns GAB_OK (0) or one of the GAB_E_* codes; the codes keep their
-     values across versions. Functions taking `message, message_size` write a
-     one-line message there on failure ("" on success), truncated to fit and
-     always NUL-terminated; message may be NULL (then message_size is ignored).
+   - It returns GAB_OK (0) or one of the GAB_E_* codes, or where a function
+     says so a GAB_W_* warning: done, its outputs set, with something the
+     caller must know; the codes keep their values across versions.
+     Functions taking `message, message_size` write a one-line message there
+     on failure or warning ("" on success), truncated to fit and always
+     NUL-terminated; message may be NULL (then message_size is ignored).
    - Nothing is thrown across it and nothing aborts: bad arguments (NULL
      pointers, negative counts, indices out of range) are reported, and so is
      memory that cannot be had.
@@ -46,7 +48,12 @@ extern "C" {
 #define GAB_E_STATE 9                 /* a call out of order (a solve before a factorization) */
 #define GAB_E_INTERNAL 10             /* a failure that is a bug in gab: please report the message */
 
-/* The name of an error code ("GAB_E_PARSE"), "GAB_OK", or "GAB_E_UNKNOWN". */
+/* Warnings: nonzero, so `if (code != GAB_OK)` stops on them too; a caller
+   that can use the outputs anyway tests for the warning by name. */
+#define GAB_W_TRUNCATED 100 /* gab_decompress*: the file ends inside a chunk (a transfer cut short): the mesh
+                               is the shape of its complete chunks, the message says how many of how many */
+
+/* The name of a code ("GAB_E_PARSE", "GAB_W_TRUNCATED"), "GAB_OK", or "GAB_E_UNKNOWN". */
 const char* gab_error_name(int code);
 
 /* ---- Library ------------------------------------------------------------- */
@@ -135,8 +142,10 @@ int gab_compress_ex(const double* positions, int32_t n, const int32_t* triangles
                     char* message, size_t message_size);
 
 /* max_anchors < 0: the whole file, else the first max_anchors anchors (a
-   coarser level). A file cut short decodes to its complete chunks. The
-   decode's memory is bounded as gab_decompress_options' default says. */
+   coarser level). A file cut short decodes to its complete chunks and
+   returns GAB_W_TRUNCATED with the mesh set (unless max_anchors ends within
+   them: then the cut is not reached and the code is GAB_OK). The decode's
+   memory is bounded as gab_decompress_options' default says. */
 int gab_decompress(const unsigned char* data, size_t size, int32_t max_anchors,
                    double** positions, int32_t* n, int32_t** triangles, int32_t* t,
                    char* message, size_t message_size);
