@@ -25,7 +25,7 @@ constexpr double kDefaultError = 1e-3;
 int run_compress(int argc, char** argv) {
   Args args;
   if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--error", "--linf", "--bits", "--weight", "--batch-fraction", "--batch", "--chunk-growth",
-                   "--initial", "--threads", "--layout", "--detail", "--ordering", "--solver"},
+                   "--initial", "--threads", "--layout", "--detail", "--ordering", "--solver", "--order-out"},
                   {"--json", "--geometry-only", "--refine", "--reorder"})) {
     return usage_error("compress", args.error());
   }
@@ -62,6 +62,9 @@ int run_compress(int argc, char** argv) {
   if (options.reorder && options.geometry_only) {
     return usage_error("compress", "--reorder codes the connectivity: it cannot go with --geometry-only");
   }
+  if (args.has("--order-out") && !options.reorder) {
+    return usage_error("compress", "--order-out writes the numbering --reorder makes: without it the numbering is kept");
+  }
   // The chunk layout (encoder.h FileLayout); "selection" files are readable by older builds.
   const std::string layout = args.get("--layout", "smaller");
   if (layout == "levels") {
@@ -94,6 +97,11 @@ int run_compress(int argc, char** argv) {
   const bool json = args.has("--json");
   const std::string in = args.get("-i"), out = args.get("-o");
   if (const int refused = check_output("compress", out, {in})) return refused;
+  const std::string order_out = args.get("--order-out", "");
+  if (!order_out.empty()) {
+    if (order_out == out) return usage_error("compress", "--order-out and -o name the same file");
+    if (const int refused = check_output("compress", order_out, {in, out})) return refused;
+  }
 
   Mesh mesh;
   Status status = read_mesh(in, &mesh);
@@ -111,6 +119,14 @@ int run_compress(int argc, char** argv) {
   if (!status.ok()) return fail(in + ": " + status.message());
   status = write_output_file(out, std::string_view(reinterpret_cast<const char*>(file.data()), file.size()));
   if (!status.ok()) return fail(status.message());
+  if (!order_out.empty()) {
+    // Line i: the decoded index of input vertex i (gab diff --map reads it).
+    std::string lines;
+    lines.reserve(8 * stats.new_index.size());
+    for (int32_t v : stats.new_index) lines += std::to_string(v) + "\n";
+    status = write_output_file(order_out, lines);
+    if (!status.ok()) return fail(status.message());
+  }
   if (!stats.target_met && stats.detail) {
     std::fprintf(stderr,
                  "gab compress: warning: the error target is out of reach: the detail layer's finest step leaves "

@@ -1,15 +1,21 @@
 // gab diff (its options: commands.cpp)
-// Compares two meshes: per-vertex distances (when the vertex counts match)
-// and the Metro-style symmetric surface distance, absolute and relative to
-// the bounding-box diagonal of A.
+// Compares two meshes: per-vertex distances (where the numberings
+// correspond) and the Metro-style symmetric surface distance, absolute and
+// relative to the bounding-box diagonal of A.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "cli.h"
 #include "commands.h"
+#include "gab/mesh/file_io.h"
 #include "gab/mesh/mesh_io.h"
 #include "gab/mesh/metrics.h"
+#include "gab/mesh/renumber.h"
+#include "gab/mesh/triangle_set.h"
 
 namespace gab {
 namespace cli {
@@ -19,11 +25,54 @@ namespace {
 // value / diagonal, or NaN (printed as null) when the diagonal is 0.
 double relative(double value, double diagonal) { return diagonal > 0 ? value / diagonal : std::nan(""); }
 
+// A --map file: one index per line (blank lines and surrounding spaces
+// allowed), line i the index in B of A's vertex i: a permutation of
+// 0..n-1 for n vertices.
+Status read_vertex_map(const std::string& path, int32_t n, std::vector<int32_t>* map) {
+  std::string text;
+  GAB_RETURN_IF_ERROR(read_file(path, &text));
+  map->clear();
+  std::vector<char> seen(static_cast<size_t>(n), 0);
+  size_t line = 0, at = 0;
+  while (at < text.size()) {
+    const size_t end = std::min(text.find('\n', at), text.size());
+    ++line;
+    std::string field = text.substr(at, end - at);
+    at = end + 1;
+    const size_t first = field.find_first_not_of(" \t\r");
+    if (first == std::string::npos) continue;
+    field = field.substr(first, field.find_last_not_of(" \t\r") - first + 1);
+    const std::string where = path + ": line " + std::to_string(line) + ": ";
+    char* stop = nullptr;
+    const long long value = std::strtoll(field.c_str(), &stop, 10);
+    if (field.empty() || *stop != '\0' || field[0] == '+') {
+      return Status::Error(StatusCode::kParseError, where + "'" + field + "' is not a vertex index");
+    }
+    if (static_cast<int64_t>(map->size()) >= n) {
+      return Status::Error(StatusCode::kParseError, where + "more indices than A's " + std::to_string(n) + " vertices");
+    }
+    if (value < 0 || value >= n) {
+      return Status::Error(StatusCode::kParseError,
+                           where + "index " + field + " is outside 0.." + std::to_string(n - 1));
+    }
+    if (seen[static_cast<size_t>(value)]) {
+      return Status::Error(StatusCode::kParseError, where + "index " + field + " is given twice");
+    }
+    seen[static_cast<size_t>(value)] = 1;
+    map->push_back(static_cast<int32_t>(value));
+  }
+  if (static_cast<int32_t>(map->size()) != n) {
+    return Status::Error(StatusCode::kParseError, path + ": " + std::to_string(map->size()) +
+                                                      " indices for A's " + std::to_string(n) + " vertices");
+  }
+  return Status::Ok();
+}
+
 }  // namespace
 
 int run_diff(int argc, char** argv) {
   Args args;
-  if (!args.parse(argc, argv, {"--samples"}, {"--json"})) return usage_error("diff", args.error());
+  if (!args.parse(argc, argv, {"--samples", "--map"}, {"--json"})) return usage_error("diff", args.error());
   if (args.positionals().size() != 2) return usage_error("diff", "expected two mesh files");
   int64_t samples = -1;
   if (!args.get_int("--samples", 0, 1000000000, &samples)) return usage_error("diff", args.error());
@@ -38,9 +87,37 @@ int run_diff(int argc, char** argv) {
   status = read_mesh(path_b, &b);
   if (!status.ok()) return fail(status.message());
 
+  // Per-vertex figures only where vertex i of A is vertex i of B (or
+  // map[i], with --map): the same count and the same triangles by index.
+  // A renumbered mesh (a --reorder decode, another tool's output) would
+  // otherwise pair unrelated vertices.
+  std::string why_not;
+  Mesh b_in_a_order;
+  const Mesh* paired = &b;
+  if (a.num_vertices() != b.num_vertices()) {
+    why_not = "the vertex counts differ (" + std::to_string(a.num_vertices()) + " and " +
+              std::to_string(b.num_vertices()) + ")";
+  } else {
+    if (args.has("--map")) {
+      std::vector<int32_t> map;
+      status = read_vertex_map(args.get("--map"), a.num_vertices(), &map);
+      if (!status.ok()) return fail(status.message());
+      std::vector<int32_t> to_a(map.size());
+      for (size_t i = 0; i < map.size(); ++i) to_a[static_cast<size_t>(map[i])] = static_cast<int32_t>(i);
+      b_in_a_order = renumber_vertices(b, to_a);
+      paired = &b_in_a_order;
+    }
+    if (oriented_triangle_set(a.triangles) != oriented_triangle_set(paired->triangles)) {
+      why_not = args.has("--map") ? "the triangles differ by vertex index under --map " + args.get("--map")
+                                  : "the triangles differ by vertex index: the numberings do not correspond (a "
+                                    "renumbered mesh, such as a --reorder decode; --map FILE pairs them)";
+    }
+  }
   const double diagonal = bounding_box_diagonal(a);
   VertexDistance vd;
-  const bool same_count = vertex_distance(a, b, &vd).ok();
+  const bool same_count = why_not.empty() && vertex_distance(a, *paired, &vd).ok();
+  // Why not: on stderr beside JSON, in the text's own line otherwise.
+  if (!why_not.empty() && json) std::fprintf(stderr, "gab diff: no per-vertex distances: %s\n", why_not.c_str());
   SurfaceDistanceOptions options;
   options.samples = samples;
   SurfaceDistance sd;
@@ -96,7 +173,7 @@ int run_diff(int argc, char** argv) {
     std::printf("vertex distance: max %.6g (%s of the diagonal), rms %.6g (%s)\n", vd.linf, rel(vd.linf).c_str(),
                 vd.rms, rel(vd.rms).c_str());
   } else {
-    std::printf("vertex distance: n/a (vertex counts differ)\n");
+    std::printf("vertex distance: n/a: %s\n", why_not.c_str());
   }
   std::printf("surface distance (%lld + %lld samples): mean %.6g (%s), rms %.6g (%s), Hausdorff %.6g (%s)\n",
               static_cast<long long>(sd.a_to_b.samples), static_cast<long long>(sd.b_to_a.samples), sd.mean,

@@ -10,14 +10,15 @@ const std::vector<Command>& commands() {
       {"compress", run_compress,
        {"-i IN -o OUT.gab [--anchors K | --error E | --linf E] [--bits Q] [--weight W]",
         "[--geometry-only | --reorder] [--detail auto|on|off] [--solver auto|global|iterative]",
-        "[--refine] [--threads T] [--json]",
+        "[--refine] [--order-out FILE] [--threads T] [--json]",
         "(tuning: --batch-fraction F --chunk-growth G --initial K --layout smaller|levels|selection",
         "         --ordering auto|amd|nd)"},
        "compress a mesh's geometry with geometry-aware anchors (default --error 0.001: relative\n"
        "vertex RMS over the bounding-box diagonal; q picked from the target, 12 for --anchors);\n"
        "the connectivity and the vertex numbering are kept, triangles as a set (their order is the\n"
        "coder's). --reorder drops the numbering for a smaller file: the decoded mesh is numbered in\n"
-       "the coder's traversal order, so per-vertex data kept outside the file no longer lines up.\n"
+       "the coder's traversal order, so per-vertex data kept outside the file no longer lines up\n"
+       "(--order-out FILE writes the decoded index of each input vertex, a line each).\n"
        "Below about 3e-4 the anchors stop early and a detail layer codes every vertex's residual;\n"
        "--detail auto keeps the smaller file, on/off force it (off may miss a target). --solver:\n"
        "the shape the anchors make, recorded in the file: iterative (linear-cost steps; the default)\n"
@@ -44,9 +45,11 @@ const std::vector<Command>& commands() {
        "of orderings studies each input under each; the growth of the touched entries with n\n"
        "is fitted per ordering (printed, and plotted log-log by --svg); nd also reports the\n"
        "separator bound on each update (JSON separator_bound_avg, null for the others)"},
-      {"diff", run_diff, {"A B [--samples N] [--json]"},
-       "distances between two meshes (.obj .off .ply): per vertex when the vertex counts\n"
-       "match, and the symmetric surface distance (mean, RMS, Hausdorff) from N samples"},
+      {"diff", run_diff, {"A B [--map FILE] [--samples N] [--json]"},
+       "distances between two meshes (.obj .off .ply): per vertex where the numberings\n"
+       "correspond (the same vertex count and triangles by index; --map FILE: line i the index in\n"
+       "B of A's vertex i, as compress --order-out writes), and the symmetric surface distance\n"
+       "(mean, RMS, Hausdorff) from N samples"},
       {"subdivide", run_subdivide, {"IN -o OUT [--levels K]"},
        "K levels (default 1) of 1:4 midpoint subdivision of a mesh, written to OUT (.obj .off .ply):\n"
        "the same shape at 4^K times the triangles, for scale studies"},

@@ -13,6 +13,7 @@
 namespace {
 
 using gab_test::CommandResult;
+using gab_test::json_null;
 using gab_test::json_number;
 using gab_test::run_gab;
 using gab_test::write_scratch_file;
@@ -143,6 +144,33 @@ TEST(CodecCliTest, ReorderDropsTheVertexOrderAndSaysSo) {
   const CommandResult both = run_gab("compress -i " + in + " -o " + kept + " --reorder --geometry-only");
   EXPECT_EQ(both.exit_code, 2);
   EXPECT_NE(both.err.find("--reorder codes the connectivity: it cannot go with --geometry-only"), std::string::npos);
+}
+
+TEST(CodecCliTest, OrderOutWritesTheNumberingThatDiffMapPairsBack) {
+  const std::string in = write_scratch_file("order-out.off", torus_off(40, 20));
+  const std::string file = write_scratch_file("order-out.gab", ""), map = write_scratch_file("order-out.map", "");
+  const std::string out = write_scratch_file("order-out-decoded.off", "");
+  const CommandResult c = run_gab("compress -i " + in + " -o " + file + " --reorder --order-out " + map + " --json");
+  ASSERT_EQ(c.exit_code, 0) << c.err;
+  ASSERT_EQ(run_gab("decompress -i " + file + " -o " + out).exit_code, 0);
+  // Numbered by the traversal, the decode pairs no vertex with its input
+  // one; the map pairs them back to the encoder's own error.
+  const CommandResult unpaired = run_gab("diff " + in + " " + out + " --json --samples 1000");
+  ASSERT_EQ(unpaired.exit_code, 0) << unpaired.err;
+  EXPECT_TRUE(json_null(unpaired.out, "rms_rel")) << unpaired.out;
+  const CommandResult paired = run_gab("diff " + in + " " + out + " --map " + map + " --json --samples 1000");
+  ASSERT_EQ(paired.exit_code, 0) << paired.err;
+  EXPECT_EQ(paired.err, "");
+  EXPECT_NEAR(json_number(paired.out, "rms_rel"), json_number(c.out, "rms_rel"), 1e-6);
+  EXPECT_NEAR(json_number(paired.out, "linf_rel"), json_number(c.out, "linf_rel"), 1e-6);
+  // Only with --reorder (the numbering is otherwise kept), never over -o.
+  const CommandResult kept = run_gab("compress -i " + in + " -o " + file + " --order-out " + map);
+  EXPECT_EQ(kept.exit_code, 2);
+  EXPECT_NE(kept.err.find("--order-out writes the numbering --reorder makes: without it the numbering is kept"),
+            std::string::npos)
+      << kept.err;
+  EXPECT_EQ(run_gab("compress -i " + in + " -o " + file + " --reorder --order-out " + file).exit_code, 2);
+  EXPECT_EQ(run_gab("compress -i " + in + " -o " + file + " --reorder --order-out " + in).exit_code, 2);
 }
 
 TEST(CodecCliTest, RefineAddsALeastSquaresChunkThatDecompressApplies) {

@@ -57,11 +57,66 @@ TEST(DiffCliTest, DifferentVertexCountsGiveNullVertexMetrics) {
   const CommandResult r = run_gab("diff " + a + " " + b + " --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* key : {"linf", "rms", "linf_rel", "rms_rel"}) EXPECT_TRUE(json_null(r.out, key)) << key;
+  EXPECT_EQ(r.err, "gab diff: no per-vertex distances: the vertex counts differ (4 and 5)\n");
   // Same surface, different tessellation: zero up to rounding.
   EXPECT_LT(json_number(r.out, "hausdorff_rel"), 1e-12);
   EXPECT_LT(json_number(r.out, "metro_mean_rel"), 1e-12);
   EXPECT_EQ(json_number(r.out, "n"), 4);
   EXPECT_EQ(json_number(r.out, "n_b"), 5);
+}
+
+TEST(DiffCliTest, ARenumberedMeshGetsVertexFiguresOnlyThroughAMap) {
+  const std::string a = write_scratch_file("a6.off", square_off(0));
+  // The square 0.25 above, its vertices numbered backwards (B's vertex 3 - i
+  // is A's i): the same counts, other triangles by index.
+  const std::string b = write_scratch_file(
+      "b6.off", "OFF\n4 2 0\n0 1 0.25\n1 1 0.25\n1 0 0.25\n0 0 0.25\n3 3 2 1\n3 3 1 0\n");
+  const CommandResult plain = run_gab("diff " + a + " " + b + " --json");
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  for (const char* key : {"linf", "rms", "linf_rel", "rms_rel"}) EXPECT_TRUE(json_null(plain.out, key)) << key;
+  EXPECT_EQ(plain.err,
+            "gab diff: no per-vertex distances: the triangles differ by vertex index: the numberings do not "
+            "correspond (a renumbered mesh, such as a --reorder decode; --map FILE pairs them)\n");
+  EXPECT_NEAR(json_number(plain.out, "metro_mean_rel"), 0.25 / std::sqrt(2.0), 1e-8);  // the surfaces still compare
+  const CommandResult text = run_gab("diff " + a + " " + b);
+  EXPECT_NE(text.out.find("vertex distance: n/a: the triangles differ by vertex index"), std::string::npos)
+      << text.out;
+  EXPECT_EQ(text.err, "");
+  const std::string map = write_scratch_file("b6.map", "3\n2\n 1 \n0\n\n");
+  const CommandResult mapped = run_gab("diff " + a + " " + b + " --map " + map + " --json");
+  ASSERT_EQ(mapped.exit_code, 0) << mapped.err;
+  EXPECT_DOUBLE_EQ(json_number(mapped.out, "rms"), 0.25);
+  EXPECT_DOUBLE_EQ(json_number(mapped.out, "linf"), 0.25);
+  EXPECT_EQ(mapped.err, "");
+  // A map that pairs the wrong vertices: the triangles tell.
+  const std::string wrong = write_scratch_file("b6-wrong.map", "0\n1\n2\n3\n");
+  const CommandResult w = run_gab("diff " + a + " " + b + " --map " + wrong + " --json");
+  ASSERT_EQ(w.exit_code, 0) << w.err;
+  EXPECT_TRUE(json_null(w.out, "rms"));
+  EXPECT_EQ(w.err, "gab diff: no per-vertex distances: the triangles differ by vertex index under --map " + wrong +
+                       "\n");
+}
+
+TEST(DiffCliTest, AMapThatIsNotAPermutationIsAnErrorNamingItsLine) {
+  const std::string a = write_scratch_file("a7.off", square_off(0));
+  const std::string b = write_scratch_file("b7.off", square_off(1));
+  struct Case {
+    const char* name;
+    const char* text;
+    std::string message;
+  };
+  for (const Case& c : {Case{"m1.map", "0\n1\nx\n3\n", ": line 3: 'x' is not a vertex index"},
+                        Case{"m2.map", "0\n1\n4\n3\n", ": line 3: index 4 is outside 0..3"},
+                        Case{"m3.map", "0\n1\n-1\n3\n", ": line 3: index -1 is outside 0..3"},
+                        Case{"m4.map", "0\n1\n1\n3\n", ": line 3: index 1 is given twice"},
+                        Case{"m5.map", "0\n1\n2\n3\n0\n", ": line 5: more indices than A's 4 vertices"},
+                        Case{"m6.map", "0\n1\n2\n", ": 3 indices for A's 4 vertices"}}) {
+    const std::string map = write_scratch_file(c.name, c.text);
+    const CommandResult r = run_gab("diff " + a + " " + b + " --map " + map);
+    EXPECT_EQ(r.exit_code, 1) << c.name;
+    EXPECT_EQ(r.err, "gab: error: " + map + c.message + "\n") << c.name;
+    EXPECT_EQ(r.out, "") << c.name;
+  }
 }
 
 TEST(DiffCliTest, NoSamplesLeavesOnlyTheVertexHausdorff) {
