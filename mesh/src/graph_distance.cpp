@@ -2,16 +2,19 @@
 // Farthest-point sampling is the greedy k-center heuristic (Gonzalez 1985)
 // with hop distance: after each pick a BFS from the new vertex lowers the
 // distance field only where it shrinks (unit edge lengths make a FIFO order
-// from one source exact), and a lazy max-heap finds the farthest vertex.
+// from one source exact), and a bucket per distance finds the farthest.
 #include "gab/mesh/graph_distance.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <string>
 #include <utility>
 
 namespace gab {
 
 namespace {
+
+constexpr int32_t kFar = INT32_MAX;  // not reachable from any chosen vertex
 
 Status check_vertices(const EdgeGraph& graph, const std::vector<int32_t>& vertices, const char* what, bool distinct) {
   const int32_t n = graph.num_vertices();
@@ -63,76 +66,109 @@ Status farthest_point_sampling(const EdgeGraph& graph, int32_t count, const std:
 
 Status farthest_point_sampling(const EdgeGraph& graph, int32_t count, const std::vector<int32_t>& seeds,
                                const std::vector<int32_t>* candidates, std::vector<int32_t>* picked) {
-  GAB_RETURN_IF_ERROR(check_vertices(graph, seeds, "seed", true));
-  if (candidates) GAB_RETURN_IF_ERROR(check_vertices(graph, *candidates, "candidate", true));
+  FarthestPointSampler sampler;
+  GAB_RETURN_IF_ERROR(sampler.start(graph, seeds, candidates));
   if (count < 0) return Status::Error(StatusCode::kInvalidArgument, "negative sample count " + std::to_string(count));
-  const int32_t n = graph.num_vertices();
-  const int32_t kFar = INT32_MAX;  // not reachable from any chosen vertex
-  std::vector<char> candidate(n, candidates ? 0 : 1);
-  if (candidates) {
-    for (int32_t v : *candidates) candidate[v] = 1;
-  }
-  std::vector<int32_t> dist(n, kFar), queue;
-  // A bucket per distance, and the unreached (every candidate at first, in
-  // increasing index: taken first), each taken in increasing vertex index
-  // once it is the farthest left: the farthest first, ties to the smaller
-  // index. Past the unreached a pick only brings vertices closer than the
-  // farthest, so a bucket being taken gets no new entries. An entry goes
-  // stale when its vertex comes closer (a fresh one is put in a lower
-  // bucket); stale ones are skipped. Sorting a bucket once costs far less
-  // than a heap's work per entry.
-  std::vector<std::vector<int32_t>> buckets;
   std::vector<int32_t> out;
-  out.reserve(std::min(count, n));
-
-  // Breadth-first from the queue's vertices (at distance 0), only where it
-  // brings a vertex closer; first-in first-out visits in order of distance,
-  // so each vertex settles at its new distance when first reached.
-  auto spread_from_queue = [&]() {
-    for (size_t q = 0; q < queue.size(); ++q) {
-      const int32_t v = queue[q];
-      for (int32_t p = graph.offsets[v]; p < graph.offsets[v + 1]; ++p) {
-        const int32_t u = graph.neighbors[p];
-        if (dist[v] + 1 < dist[u]) {
-          dist[u] = dist[v] + 1;
-          queue.push_back(u);
-          if (!candidate[u]) continue;
-          if (static_cast<size_t>(dist[u]) >= buckets.size()) buckets.resize(static_cast<size_t>(dist[u]) + 1);
-          buckets[dist[u]].push_back(u);
-        }
-      }
-    }
-  };
-  auto add = [&](int32_t s) {
-    out.push_back(s);
-    dist[s] = 0;
-    queue.assign(1, s);
-    spread_from_queue();
-  };
-  auto full = [&]() { return static_cast<int32_t>(out.size()) >= count; };
-
-  // The seeds (as many as count allows) at once: one search from all of them.
-  queue.clear();
-  for (size_t i = 0; i < seeds.size() && !full(); ++i) {
-    out.push_back(seeds[i]);
-    dist[seeds[i]] = 0;
-    queue.push_back(seeds[i]);
-  }
-  spread_from_queue();
-  for (int32_t v = 0; v < n && !full(); ++v) {
-    if (candidate[v] && dist[v] == kFar) add(v);  // the smallest of a component nothing reaches yet
-  }
-  // Distance 0 is a chosen vertex: every candidate is then chosen.
-  for (size_t d = buckets.size(); d-- > 1 && !full();) {
-    std::vector<int32_t>& bucket = buckets[d];
-    std::sort(bucket.begin(), bucket.end());
-    for (size_t i = 0; i < bucket.size() && !full(); ++i) {
-      if (dist[bucket[i]] == static_cast<int32_t>(d)) add(bucket[i]);  // puts go below d: no reallocation
-    }
-    std::vector<int32_t>().swap(bucket);
-  }
+  out.reserve(std::min(count, graph.num_vertices()));
+  sampler.next(count, &out);
   *picked = std::move(out);
   return Status::Ok();
+}
+
+// A bucket per distance, and the unreached (every candidate at first, in
+// increasing index: taken first), each taken in increasing vertex index
+// once it is the farthest left: the farthest first, ties to the smaller
+// index. Past the unreached a pick only brings vertices closer than the
+// farthest, so a bucket being taken gets no new entries. An entry goes
+// stale when its vertex comes closer (a fresh one is put in a lower
+// bucket); stale ones are skipped. Sorting a bucket once costs far less
+// than a heap's work per entry.
+Status FarthestPointSampler::start(const EdgeGraph& graph, const std::vector<int32_t>& seeds,
+                                   const std::vector<int32_t>* candidates) {
+  GAB_RETURN_IF_ERROR(check_vertices(graph, seeds, "seed", true));
+  if (candidates) GAB_RETURN_IF_ERROR(check_vertices(graph, *candidates, "candidate", true));
+  *this = FarthestPointSampler();
+  graph_ = &graph;
+  const int32_t n = graph.num_vertices();
+  candidate_.assign(n, candidates ? 0 : 1);
+  if (candidates) {
+    for (int32_t v : *candidates) candidate_[v] = 1;
+  }
+  dist_.assign(n, kFar);
+  // The seeds at once: one search from all of them.
+  seeds_ = seeds;
+  for (int32_t s : seeds) {
+    dist_[s] = 0;
+    queue_.push_back(s);
+  }
+  spread_from_queue();
+  return Status::Ok();
+}
+
+// First-in first-out visits in order of distance, so each vertex settles
+// at its new distance when first reached.
+void FarthestPointSampler::spread_from_queue() {
+  const EdgeGraph& graph = *graph_;
+  for (size_t q = 0; q < queue_.size(); ++q) {
+    const int32_t v = queue_[q];
+    for (int32_t p = graph.offsets[v]; p < graph.offsets[v + 1]; ++p) {
+      const int32_t u = graph.neighbors[p];
+      if (dist_[v] + 1 < dist_[u]) {
+        dist_[u] = dist_[v] + 1;
+        queue_.push_back(u);
+        if (!candidate_[u]) continue;
+        if (static_cast<size_t>(dist_[u]) >= buckets_.size()) buckets_.resize(static_cast<size_t>(dist_[u]) + 1);
+        buckets_[dist_[u]].push_back(u);
+      }
+    }
+  }
+}
+
+void FarthestPointSampler::add(int32_t s) {
+  dist_[s] = 0;
+  queue_.assign(1, s);
+  spread_from_queue();
+}
+
+int32_t FarthestPointSampler::next(int32_t count, std::vector<int32_t>* picked) {
+  const size_t before = picked->size();
+  auto taken = [&]() { return static_cast<int32_t>(picked->size() - before); };
+  while (seeds_out_ < seeds_.size() && taken() < count) picked->push_back(seeds_[seeds_out_++]);
+  // The smallest vertex of each component nothing reaches yet.
+  const int32_t n = static_cast<int32_t>(dist_.size());
+  for (; scan_ < n && taken() < count; ++scan_) {
+    if (candidate_[scan_] && dist_[scan_] == kFar) {
+      picked->push_back(scan_);
+      add(scan_);
+    }
+  }
+  if (scan_ < n) return taken();
+  if (!buckets_started_) {
+    buckets_started_ = true;
+    bucket_ = buckets_.size();
+  }
+  // Distance 0 is a chosen vertex: every candidate is then chosen.
+  while (taken() < count && bucket_ > 1) {
+    std::vector<int32_t>& bucket = buckets_[bucket_ - 1];
+    if (!bucket_sorted_) {
+      std::sort(bucket.begin(), bucket.end());
+      bucket_sorted_ = true;
+    }
+    for (; entry_ < bucket.size() && taken() < count; ++entry_) {
+      const int32_t v = bucket[entry_];
+      if (dist_[v] == static_cast<int32_t>(bucket_ - 1)) {  // puts go below: no reallocation
+        picked->push_back(v);
+        add(v);
+      }
+    }
+    if (entry_ < bucket.size()) break;
+    std::vector<int32_t>().swap(bucket);
+    --bucket_;
+    entry_ = 0;
+    bucket_sorted_ = false;
+  }
+  return taken();
 }
 
 }  // namespace gab

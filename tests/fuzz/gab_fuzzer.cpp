@@ -1,7 +1,8 @@
 // libFuzzer target: the .gab decoder on untrusted bytes. The first input
 // byte picks the decoder's options (bit 0: supply the connectivity a
 // geometry-only seed was made from; bit 1: decode only a prefix of the
-// anchors); the rest is the file. Checks beyond "no crash": a failure is a
+// anchors, bits 2-7 their count; else bit 2: decode on two threads too,
+// which must give the same outcome and the same bits); the rest is the file. Checks beyond "no crash": a failure is a
 // one-line message; a success is a mesh of the declared size with finite
 // coordinates and valid triangles; read_gab_info agrees on the counts (and, for a full decode, on validity);
 // find_gab_chunk_ends (the viewer's streaming cut points) lists increasing ends inside the input, no more
@@ -41,6 +42,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   } else {
     gab_fuzz::require(!frames_status.message().empty(), "empty error message");
     gab_fuzz::require(frames_status.message().find('\n') == std::string::npos, "error message spans lines");
+  }
+  if ((data[0] & 6) == 4) {
+    gab::DecodeOptions two = options;
+    two.threads = 2;
+    gab::Mesh other;
+    gab::DecodeStats other_stats;
+    const gab::Status other_status = gab::decode_mesh(data + 1, size - 1, two, &other, &other_stats);
+    gab_fuzz::require(other_status.code() == status.code(), "two threads end otherwise");
+    gab_fuzz::require(!status.ok() || other.positions == mesh.positions, "two threads decode other bits");
   }
   if (!status.ok()) {
     gab_fuzz::require(!status.message().empty(), "empty error message");

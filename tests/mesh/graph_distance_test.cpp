@@ -74,5 +74,34 @@ TEST(FarthestPointTest, GreedyPropertyAndSeeds) {
   EXPECT_EQ(farthest_point_sampling(g, 3, {-1}, &picked).message(), "seed -1 is not a vertex (n = 600)");
 }
 
+TEST(FarthestPointTest, TheSamplerTakenInPiecesMakesTheSamePicks) {
+  // Grid 0..29, a lone triangle 30..32 and an isolated vertex 33 (picked in
+  // the scan for unreached components), with and without candidates, in
+  // pieces of every size from 1: the one run's picks.
+  Mesh m = testing_util::grid(5, 4);
+  m.positions.insert(m.positions.end(), {20, 0, 0, 21, 0, 0, 20, 1, 0, 40, 40, 40});
+  m.triangles.insert(m.triangles.end(), {30, 31, 32});
+  const EdgeGraph g = build_edge_graph(m);
+  std::vector<int32_t> odd;
+  for (int32_t v = 1; v < g.num_vertices(); v += 2) odd.push_back(v);
+  const std::vector<int32_t>* none = nullptr;
+  for (const std::vector<int32_t>* candidates : {none, static_cast<const std::vector<int32_t>*>(&odd)}) {
+    std::vector<int32_t> whole;
+    ASSERT_TRUE(farthest_point_sampling(g, 1000, {7, 12}, candidates, &whole).ok());
+    EXPECT_EQ(whole.size(), candidates ? odd.size() + 1 : static_cast<size_t>(g.num_vertices()));  // 7 is odd
+    for (int32_t piece = 1; piece <= 7; ++piece) {
+      FarthestPointSampler sampler;
+      ASSERT_TRUE(sampler.start(g, {7, 12}, candidates).ok());
+      std::vector<int32_t> picked;
+      while (sampler.next(piece, &picked) == piece) {
+      }
+      EXPECT_EQ(picked, whole) << "pieces of " << piece;
+      EXPECT_EQ(sampler.next(5, &picked), 0);  // nothing left
+    }
+  }
+  FarthestPointSampler sampler;
+  EXPECT_EQ(sampler.start(g, {3, 3}, nullptr).message(), "seed 3 given twice");
+}
+
 }  // namespace
 }  // namespace gab

@@ -19,10 +19,15 @@
 // levels from the same connectivity. Internal to the codec.
 #pragma once
 
+#include <atomic>
+#include <condition_variable>
 #include <cstdint>
+#include <mutex>
+#include <thread>
 #include <vector>
 
 #include "gab/mesh/edge_graph.h"
+#include "gab/mesh/graph_distance.h"
 #include "gab/status.h"
 
 namespace gab {
@@ -60,6 +65,41 @@ uint32_t level_growth16(double growth);
 Status level_order(const EdgeGraph& graph, const std::vector<int32_t>& spread, const std::vector<int32_t>& rest,
                    int32_t count, std::vector<int32_t>* order);
 
+// level_order's picks made on a thread of their own, so that a decoder
+// works through the first levels while the later ones are picked (the
+// first picks, far apart, cost the most: each moves the distances of a
+// large region). The same picks as level_order, in the same order.
+class LevelPicks {
+ public:
+  LevelPicks() = default;
+  LevelPicks(const LevelPicks&) = delete;
+  LevelPicks& operator=(const LevelPicks&) = delete;
+  ~LevelPicks();  // stops the picking and joins its thread
+
+  // Checks as level_order does, then picks `count`: on a thread of its own
+  // when `background` (and a thread can be had), else here, all at once.
+  // `graph`, `spread` and `rest` must outlive this object.
+  Status start(const EdgeGraph& graph, const std::vector<int32_t>& spread, const std::vector<int32_t>& rest,
+               int32_t count, bool background);
+  // Sized `count`; its first entries are the picks wait() has seen made.
+  const std::vector<int32_t>& order() const { return order_; }
+  // Returns once the first `count` (<= start's) picks are in order():
+  // true, or false if the picking ended short of them (it cannot when
+  // start's checks passed).
+  bool wait(int32_t count);
+
+ private:
+  void pick_in_background();
+
+  FarthestPointSampler sampler_;
+  std::vector<int32_t> order_;
+  std::atomic<int32_t> made_{0};
+  std::atomic<bool> stopping_{false}, done_{false};
+  std::mutex mutex_;
+  std::condition_variable progress_;
+  std::thread thread_;
+};
+
 // The levels' members, level by level, from the farthest-point picks
 // (`order`, level_order's output) and the rest: level k < L - 1 is the next
 // sizes[k] picks, the last level every vertex of the rest not picked; each
@@ -67,9 +107,11 @@ Status level_order(const EdgeGraph& graph, const std::vector<int32_t>& spread, c
 // decoder split the anchors through this one rule.
 class LevelMembers {
  public:
-  // `order` and `rest` must outlive this object.
+  // `order` and `rest` must outlive this object; `order` needs its picks
+  // only as far as next() reads them (LevelPicks fills it as it goes).
   LevelMembers(const std::vector<int32_t>& order, const std::vector<int32_t>& rest, int32_t num_vertices);
-  // Level k's anchors; call for k = 0, 1, ... in turn.
+  // Level k's anchors; call for k = 0, 1, ... in turn. Reads order's next
+  // sizes[k] picks, or for the last level (every pick taken before it) none.
   std::vector<int32_t> next(const std::vector<int32_t>& sizes, size_t k);
 
  private:

@@ -226,14 +226,22 @@ Status decode_level_chunks(ByteReader* in, AnchorChunkCoder* coder, ChunkDecodin
   while (needed < sizes.size() && end < st->wanted) end += sizes[needed++];
   const int32_t last = sizes.empty() ? 0 : sizes.back();
   const int32_t picks = static_cast<int32_t>(std::min<int64_t>(end - plan.spread, plan.rest - last));
+  // With a second thread the picks are made beside chunk 0's set-up and the
+  // first levels' decoding.
+  LevelPicks level_picks;
+  GAB_RETURN_IF_ERROR(level_picks.start(st->graph, spread, rest, picks, st->options.threads > 1));
   GAB_RETURN_IF_ERROR(add_chunk(0, spread, grid, false, st));
-  std::vector<int32_t> order;
-  GAB_RETURN_IF_ERROR(level_order(st->graph, spread, rest, picks, &order));
-  LevelMembers members(order, rest, header.num_vertices);
+  LevelMembers members(level_picks.order(), rest, header.num_vertices);
+  int64_t picks_read = 0;
   for (size_t k = 0; k < needed; ++k) {
     const int32_t chunk = static_cast<int32_t>(k + 1);
     GAB_RETURN_IF_ERROR(read_chunk_frame(in, chunk, st, &payload, &payload_size));
     if (!payload) break;
+    // Level k reads the next sizes[k] picks, the last level all of them.
+    picks_read = k + 1 < sizes.size() ? picks_read + sizes[k] : picks;
+    if (!level_picks.wait(static_cast<int32_t>(std::min<int64_t>(picks_read, picks)))) {
+      return corrupt("chunk " + std::to_string(chunk) + ": the level's farthest-point picks fell short");
+    }
     std::vector<int32_t> level = members.next(sizes, k);
     if (static_cast<int32_t>(level.size()) > st->wanted - st->decoded) level.resize(st->wanted - st->decoded);
     const auto t_solve = std::chrono::steady_clock::now();

@@ -33,4 +33,35 @@ Status farthest_point_sampling(const EdgeGraph& graph, int32_t count, const std:
 Status farthest_point_sampling(const EdgeGraph& graph, int32_t count, const std::vector<int32_t>& seeds,
                                const std::vector<int32_t>* candidates, std::vector<int32_t>* picked);
 
+// farthest_point_sampling taken a few picks at a time: the same picks in
+// the same order, so a caller can use the first ones while the rest are
+// made (a decoder's first levels while a second thread picks on). One
+// object per run; next() from one thread at a time.
+class FarthestPointSampler {
+ public:
+  // Checks as farthest_point_sampling does and searches from the seeds;
+  // `graph` (and `candidates`, null: every vertex) must outlive the sampler.
+  Status start(const EdgeGraph& graph, const std::vector<int32_t>& seeds, const std::vector<int32_t>* candidates);
+  // Appends up to `count` more picks to *picked, the seeds first (fewer once
+  // every candidate is chosen); how many it appended.
+  int32_t next(int32_t count, std::vector<int32_t>* picked);
+
+ private:
+  void add(int32_t s);
+  // Breadth-first from queue_'s vertices, only where it brings a vertex closer.
+  void spread_from_queue();
+
+  const EdgeGraph* graph_ = nullptr;
+  std::vector<char> candidate_;
+  std::vector<int32_t> dist_, queue_;
+  std::vector<std::vector<int32_t>> buckets_;
+  std::vector<int32_t> seeds_;
+  size_t seeds_out_ = 0;
+  // Where the picks go on: the scan for unreached components (at vertex
+  // scan_), then the buckets from the farthest (bucket_, entry entry_).
+  int32_t scan_ = 0;
+  size_t bucket_ = 0, entry_ = 0;
+  bool buckets_started_ = false, bucket_sorted_ = false;
+};
+
 }  // namespace gab
