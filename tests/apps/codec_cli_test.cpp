@@ -357,7 +357,7 @@ TEST(CodecCliTest, SolverIsChosenRecordedAndChecked) {
     EXPECT_NE(r.out.find(solver[0] == 'g'
                              ? "w = 100, ordered by AMD; global reconstruction\n"
                              : "w = 100, iterative reconstruction (start sweeps 4 per prediction, 8 final; final "
-                               "steps 1 per anchor spacing, at most 32)\n"),
+                               "steps 2 per anchor spacing, at most 64)\n"),
               std::string::npos)
         << r.out;
     r = run_gab("info " + gab + " --json");

@@ -44,8 +44,9 @@ IterativeTuning default_iterative_tuning(int32_t n) {
   IterativeTuning t;
   t.prediction_sweeps = kTunedPredictionSweeps;
   t.final_sweeps = IterativeReconstruction::kStartSweeps;
-  t.final_steps16 = n > kFewerFinalStepsFrom ? 8 : 16;
-  t.final_most = 32;
+  const bool small = n <= kMoreFinalStepsUpTo;
+  t.final_steps16 = n > kFewerFinalStepsFrom ? 8 : small ? 32 : 16;
+  t.final_most = small ? 64 : 32;
   return t;
 }
 

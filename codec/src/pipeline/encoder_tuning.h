@@ -111,7 +111,10 @@ double default_level_growth(double flops, bool iterative, int32_t n);
 // The iterative operator's parameters (operator 3, docs/format.md 5.2.3)
 // for n vertices: prediction sweeps kTunedPredictionSweeps, final sweeps 8,
 // final steps one per anchor spacing (at most 32), half of that past
-// kFewerFinalStepsFrom vertices. Measured at 1e-3 --reorder against
+// kFewerFinalStepsFrom vertices, twice that (at most 64) up to
+// kMoreFinalStepsUpTo vertices, where a step costs a decode little
+// (camel-head 3,160 -> 2,985 bytes for ~5 ms; bunny-small +0.2%).
+// Measured at 1e-3 --reorder against
 // operator 2 (8, 8, 1 per spacing; bytes, and the decode's work modelled
 // as 13 ns a sweep and 19 ns a step per vertex), docs/tuning-codec.md:
 // 4 prediction sweeps, 1.000-1.022x bytes (1.014x over eight shared
@@ -120,6 +123,7 @@ double default_level_growth(double flops, bool iterative, int32_t n);
 // for 1-2 ms. At 10 Mbit/s a percent of igea's file is 0.3 ms.
 constexpr int32_t kTunedPredictionSweeps = 4;
 constexpr int32_t kFewerFinalStepsFrom = 1 << 16;
+constexpr int32_t kMoreFinalStepsUpTo = 1 << 14;
 IterativeTuning default_iterative_tuning(int32_t n);
 
 // Refinement with an RMS target: the greedy loop first aims the unrefined

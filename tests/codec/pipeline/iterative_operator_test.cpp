@@ -114,7 +114,7 @@ TEST(IterativeOperator, OptionErrors) {
 // whatever the encoder chose, the decoder computes its shapes exactly, and
 // `gab info` reads them back.
 TEST(IterativeOperator, TheFileCarriesItsParameters) {
-  const Mesh mesh = bumpy_torus(40, 24);  // 960 vertices: the default rule's 4, 8, 16, 32
+  const Mesh mesh = bumpy_torus(40, 24);  // 960 vertices: the default rule's 4, 8, 32, 64
   struct Tuning {
     int32_t prediction_sweeps, final_sweeps, final_steps16, final_most;
   };
@@ -139,8 +139,8 @@ TEST(IterativeOperator, TheFileCarriesItsParameters) {
       EXPECT_EQ(info.reconstruction, kGabReconstructionIterativeTuned);
       EXPECT_EQ(info.prediction_sweeps, t.prediction_sweeps < 0 ? 4 : t.prediction_sweeps);
       EXPECT_EQ(info.final_sweeps, t.final_sweeps < 0 ? 8 : t.final_sweeps);
-      EXPECT_EQ(info.final_steps16, t.final_steps16 < 0 ? 16 : t.final_steps16);
-      EXPECT_EQ(info.final_most_steps, t.final_most < 0 ? 32 : t.final_most);
+      EXPECT_EQ(info.final_steps16, t.final_steps16 < 0 ? 32 : t.final_steps16);
+      EXPECT_EQ(info.final_most_steps, t.final_most < 0 ? 64 : t.final_most);
     }
   }
 }
