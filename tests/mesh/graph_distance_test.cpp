@@ -28,12 +28,16 @@ TEST(BfsTest, GridDistancesAreManhattanLikeAndUnreachableIsMinusOne) {
   EXPECT_EQ(bfs_distances(g, {31}, &d).message(), "source 31 is not a vertex (n = 31)");
 }
 
-TEST(FarthestPointTest, CoversComponentsFirstThenSpreads) {
-  // Grid 0..29, a lone triangle 30..32, an isolated vertex 33.
+// Three components: the grid 0..29, a lone triangle 30..32, an isolated vertex 33.
+EdgeGraph grid_triangle_and_point() {
   Mesh m = testing_util::grid(5, 4);
   m.positions.insert(m.positions.end(), {20, 0, 0, 21, 0, 0, 20, 1, 0, 40, 40, 40});
   m.triangles.insert(m.triangles.end(), {30, 31, 32});
-  const EdgeGraph g = build_edge_graph(m);
+  return build_edge_graph(m);
+}
+
+TEST(FarthestPointTest, CoversComponentsFirstThenSpreads) {
+  const EdgeGraph g = grid_triangle_and_point();
   std::vector<int32_t> picked;
   ASSERT_TRUE(farthest_point_sampling(g, 6, {}, &picked).ok());
   // 0 first (nothing chosen: all infinitely far, smallest index), then the
@@ -75,13 +79,10 @@ TEST(FarthestPointTest, GreedyPropertyAndSeeds) {
 }
 
 TEST(FarthestPointTest, TheSamplerTakenInPiecesMakesTheSamePicks) {
-  // Grid 0..29, a lone triangle 30..32 and an isolated vertex 33 (picked in
-  // the scan for unreached components), with and without candidates, in
-  // pieces of every size from 1: the one run's picks.
-  Mesh m = testing_util::grid(5, 4);
-  m.positions.insert(m.positions.end(), {20, 0, 0, 21, 0, 0, 20, 1, 0, 40, 40, 40});
-  m.triangles.insert(m.triangles.end(), {30, 31, 32});
-  const EdgeGraph g = build_edge_graph(m);
+  // Three components (the later two picked in the scan for unreached
+  // ones), with and without candidates, in pieces of every size from 1:
+  // the one run's picks.
+  const EdgeGraph g = grid_triangle_and_point();
   std::vector<int32_t> odd;
   for (int32_t v = 1; v < g.num_vertices(); v += 2) odd.push_back(v);
   const std::vector<int32_t>* none = nullptr;

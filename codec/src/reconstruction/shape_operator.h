@@ -92,9 +92,9 @@ class ShapeOperator {
   // (fewer steps); operator 2's start, at a cost of the ring around `at`.
   Status prediction(const std::vector<int32_t>* at, std::vector<double>* positions);
   // A shape for the encoder's greedy loop, which only ranks vertices by
-  // error: global, shape's; iterative, shape's computation cut to at most
-  // `most_steps` steps (the same start: what the decoder's shape errs where
-  // the anchors leave it to the steps, for less).
+  // error: global, shape's; iterative, shape's computation (the same start
+  // and sweeps) cut to at most `most_steps` steps: where the decoder's shape
+  // errs most, for fewer passes over the mesh.
   Status greedy_shape(int32_t most_steps, std::vector<double>* positions);
 
   int32_t num_anchors() const;
