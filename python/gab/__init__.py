@@ -196,7 +196,7 @@ def decompress(data, anchors=None, max_memory=None, threads=1):
                                  ctypes.byref(n), ctypes.byref(triangles), ctypes.byref(t), message, len(message))
     if code == GAB_W_TRUNCATED:
         mesh = _take_mesh(positions, n, triangles, t)
-        text = message.value.decode(errors="replace").removeprefix("gab_decompress_ex: ")
+        text = message.value.decode(errors="replace").partition(": ")[2]
         warnings.warn(TruncatedWarning(text), stacklevel=2)
         return mesh
     check(code, message)

@@ -129,12 +129,34 @@ def _declare(lib):
 LIB = _declare(_load())
 
 
+# The Python name of each C function whose messages reach a GabError: the
+# library's message starts "gab_compress_ex: ", the error's with what the
+# caller called.
+PYTHON_NAMES = {
+    "gab_compress": "gab.compress",
+    "gab_compress_ex": "gab.compress",
+    "gab_decompress": "gab.decompress",
+    "gab_decompress_ex": "gab.decompress",
+    "gab_read_mesh": "gab.read_mesh",
+    "gab_cholesky_create": "Cholesky.analyze",
+    "gab_cholesky_factorize": "Cholesky.factorize",
+    "gab_cholesky_solve": "Cholesky.solve",
+    "gab_cholesky_add_anchor": "Cholesky.add_anchor",
+}
+
+
+def python_message(text):
+    """The library's message with its C function's name replaced by the Python one."""
+    function, colon, rest = text.partition(": ")
+    return PYTHON_NAMES[function] + colon + rest if colon and function in PYTHON_NAMES else text
+
+
 def check(code, message):
     """Raises GabError unless code is GAB_OK; `message` is the call's buffer
     (or the handle's message as bytes)."""
     if code != 0:
         text = message.value if hasattr(message, "value") else message
-        raise GabError(code, text.decode(errors="replace"))
+        raise GabError(code, python_message(text.decode(errors="replace")))
 
 
 def message_buffer():

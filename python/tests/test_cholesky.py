@@ -76,14 +76,14 @@ class CholeskyTest(unittest.TestCase):
         with self.assertRaises(gab.GabError) as e:
             gab.Cholesky((np.array([0, 2, 4]), np.array([0, 1, 0, 1]), np.array([2.0, -1, -1, 2])))
         self.assertEqual(str(e.exception),
-                         "gab_cholesky_create: column 1: row 0 is above the diagonal (give the lower triangle)")
+                         "Cholesky.analyze: column 1: row 0 is above the diagonal (give the lower triangle)")
         with self.assertRaises(gab.GabError) as e:
             gab.Cholesky((np.array([0, 2, 3]), np.array([0, 1, 1]), np.array([1.0, 2, 1])))
         self.assertEqual(e.exception.name, "GAB_E_NOT_POSITIVE_DEFINITE")
         chol = gab.Cholesky((np.array([0, 2, 3]), np.array([0, 1, 1]), np.array([2.0, -1, 2])))
         with self.assertRaises(gab.GabError) as e:
             chol.add_anchor(2, 1.0)
-        self.assertEqual(str(e.exception), "gab_cholesky_add_anchor: j = 2 is out of range [0, 2)")
+        self.assertEqual(str(e.exception), "Cholesky.add_anchor: j = 2 is out of range [0, 2)")
         with self.assertRaises(ValueError):
             chol.solve(np.ones(3))
         with self.assertRaises(ValueError):

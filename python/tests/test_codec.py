@@ -118,7 +118,7 @@ class CodecTest(unittest.TestCase):
         with self.assertRaises(gab.GabError) as e:
             gab.compress(V, bad)
         self.assertEqual(e.exception.name, "GAB_E_INVALID_ARGUMENT")
-        self.assertEqual(str(e.exception), f"gab_compress_ex: mesh: triangle 4: vertex index {len(V)} out of range [0, {len(V)})")
+        self.assertEqual(str(e.exception), f"gab.compress: mesh: triangle 4: vertex index {len(V)} out of range [0, {len(V)})")
         with self.assertRaises(ValueError):
             gab.compress(V[:, :2], F)
         with self.assertRaises(ValueError):
@@ -129,11 +129,11 @@ class CodecTest(unittest.TestCase):
             gab.compress(V, F, solver="cholmod")
         with self.assertRaises(gab.GabError) as e:
             gab.compress(V, F, bits=40)
-        self.assertEqual(str(e.exception), "gab_compress_ex: bits must be in 2..24")
+        self.assertEqual(str(e.exception), "gab.compress: bits must be in 2..24")
         with self.assertRaises(gab.GabError) as e:
             gab.decompress(b"not a gab file at all")
         self.assertEqual(e.exception.name, "GAB_E_PARSE")
-        self.assertTrue(str(e.exception).startswith("gab_decompress_ex: "))
+        self.assertTrue(str(e.exception).startswith("gab.decompress: "))
         data = bytearray(gab.compress(V, F))
         data[-1] ^= 0x55  # inside the last chunk's payload: its checksum fails
         with self.assertRaises(gab.GabError) as e:
