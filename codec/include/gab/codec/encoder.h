@@ -73,8 +73,9 @@ struct EncodeOptions {
   bool reorder = false;
   int32_t initial_anchors = 0;   // spread set size (at least one per component); 0: the encoder's
   // Greedy batch, a fraction (<= 1) of the anchors so far, fewer near an RMS target so the file does not
-  // overshoot; 0: one anchor per step (the paper's); negative: the encoder's (larger while the error is far
-  // above an RMS target, on meshes of 2^14 vertices and more).
+  // overshoot; 0: one anchor per step (the paper's); negative: the encoder's, by the reconstruction operator
+  // and the mesh's size, larger while the error is far above an RMS target (the iterative operator keeps a
+  // batch's picks apart and trims the last batch to what the target needs).
   double batch_fraction = -1;
   // A chunk closes when the anchor count has grown by this factor (> 1), and it sets the level growth of
   // the level layout too: fewer chunks or levels decode faster, more predict better. Non-positive: the encoder's.
