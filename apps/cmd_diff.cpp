@@ -45,7 +45,7 @@ Status read_vertex_map(const std::string& path, int32_t n, std::vector<int32_t>*
     const std::string where = path + ": line " + std::to_string(line) + ": ";
     char* stop = nullptr;
     const long long value = std::strtoll(field.c_str(), &stop, 10);
-    if (field.empty() || *stop != '\0' || field[0] == '+') {
+    if (*stop != '\0' || field[0] == '+') {
       return Status::Error(StatusCode::kParseError, where + "'" + field + "' is not a vertex index");
     }
     if (static_cast<int64_t>(map->size()) >= n) {
@@ -115,7 +115,7 @@ int run_diff(int argc, char** argv) {
   }
   const double diagonal = bounding_box_diagonal(a);
   VertexDistance vd;
-  const bool same_count = why_not.empty() && vertex_distance(a, *paired, &vd).ok();
+  const bool per_vertex = why_not.empty() && vertex_distance(a, *paired, &vd).ok();
   // Why not: on stderr beside JSON, in the text's own line otherwise.
   if (!why_not.empty() && json) std::fprintf(stderr, "gab diff: no per-vertex distances: %s\n", why_not.c_str());
   SurfaceDistanceOptions options;
@@ -127,7 +127,7 @@ int run_diff(int argc, char** argv) {
 
   JsonObject out;
   out.add("n", static_cast<int64_t>(a.num_vertices()));
-  if (same_count) {
+  if (per_vertex) {
     out.add("linf", vd.linf);
     out.add("rms", vd.rms);
     out.add("linf_rel", relative(vd.linf, diagonal));
@@ -169,7 +169,7 @@ int run_diff(int argc, char** argv) {
   std::printf("A %s: %d vertices, %d triangles, bounding-box diagonal %.6g%s\n", path_a.c_str(), a.num_vertices(),
               a.num_triangles(), diagonal, diagonal > 0 ? "" : " (no size: no relative distances)");
   std::printf("B %s: %d vertices, %d triangles\n", path_b.c_str(), b.num_vertices(), b.num_triangles());
-  if (same_count) {
+  if (per_vertex) {
     std::printf("vertex distance: max %.6g (%s of the diagonal), rms %.6g (%s)\n", vd.linf, rel(vd.linf).c_str(),
                 vd.rms, rel(vd.rms).c_str());
   } else {

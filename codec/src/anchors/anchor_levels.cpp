@@ -31,18 +31,9 @@ uint32_t level_growth16(double growth) {
 
 Status level_order(const EdgeGraph& graph, const std::vector<int32_t>& spread, const std::vector<int32_t>& rest,
                    int32_t count, std::vector<int32_t>* order) {
-  order->clear();
-  if (count <= 0) return Status::Ok();
-  if (static_cast<size_t>(count) > rest.size()) {
-    return Status::Error(StatusCode::kInvalidArgument, "level order: more picks than vertices to pick from");
-  }
-  std::vector<int32_t> picked;
-  const Status s = farthest_point_sampling(graph, static_cast<int32_t>(spread.size()) + count, spread, &rest, &picked);
-  if (!s.ok()) return Status::Error(StatusCode::kInvalidArgument, "level order: " + s.message());
-  if (picked.size() != spread.size() + static_cast<size_t>(count)) {  // a rest vertex in the spread set
-    return Status::Error(StatusCode::kInvalidArgument, "level order: the rest overlaps the spread set");
-  }
-  order->assign(picked.begin() + static_cast<std::ptrdiff_t>(spread.size()), picked.end());
+  LevelPicks picks;
+  GAB_RETURN_IF_ERROR(picks.start(graph, spread, rest, count, false));
+  *order = picks.order();
   return Status::Ok();
 }
 
@@ -53,42 +44,40 @@ LevelPicks::~LevelPicks() {
 
 Status LevelPicks::start(const EdgeGraph& graph, const std::vector<int32_t>& spread, const std::vector<int32_t>& rest,
                          int32_t count, bool background) {
-  if (!background || count <= 0) {
-    GAB_RETURN_IF_ERROR(level_order(graph, spread, rest, count, &order_));
-    made_ = static_cast<int32_t>(order_.size());
-    return Status::Ok();
-  }
+  order_.clear();
+  if (count <= 0) return Status::Ok();
   if (static_cast<size_t>(count) > rest.size()) {
     return Status::Error(StatusCode::kInvalidArgument, "level order: more picks than vertices to pick from");
   }
-  // level_order finds an overlap by the picks falling short; here, first.
-  std::vector<char> in_spread(static_cast<size_t>(graph.num_vertices()), 0);
-  for (int32_t v : spread) {
-    if (v >= 0 && v < graph.num_vertices()) in_spread[v] = 1;
-  }
-  for (int32_t v : rest) {
-    if (v >= 0 && v < graph.num_vertices() && in_spread[v]) {
-      return Status::Error(StatusCode::kInvalidArgument, "level order: the rest overlaps the spread set");
-    }
-  }
   const Status s = sampler_.start(graph, spread, &rest);
   if (!s.ok()) return Status::Error(StatusCode::kInvalidArgument, "level order: " + s.message());
+  // Both checked in range and distinct: a rest vertex in the spread set
+  // would leave the picks short.
+  std::vector<char> in_spread(static_cast<size_t>(graph.num_vertices()), 0);
+  for (int32_t v : spread) in_spread[v] = 1;
+  for (int32_t v : rest) {
+    if (in_spread[v]) return Status::Error(StatusCode::kInvalidArgument, "level order: the rest overlaps the spread set");
+  }
   std::vector<int32_t> seeds;
   sampler_.next(static_cast<int32_t>(spread.size()), &seeds);
   order_.assign(static_cast<size_t>(count), -1);
+  if (!background) {
+    pick_all();  // here, before returning
+    return Status::Ok();
+  }
 #if defined(__cpp_exceptions)
   try {
-    thread_ = std::thread([this] { pick_in_background(); });
+    thread_ = std::thread([this] { pick_all(); });
   } catch (const std::system_error&) {
-    pick_in_background();  // no thread to be had: all picks here
+    pick_all();  // no thread to be had: all picks here
   }
 #else
-  thread_ = std::thread([this] { pick_in_background(); });  // built without exceptions: a refusal ends the process
+  thread_ = std::thread([this] { pick_all(); });  // built without exceptions: a refusal ends the process
 #endif
   return Status::Ok();
 }
 
-void LevelPicks::pick_in_background() {
+void LevelPicks::pick_all() {
   const int32_t count = static_cast<int32_t>(order_.size());
   // Pieces small at first, where each pick costs the most and the first
   // level waits for them, larger later.

@@ -76,8 +76,9 @@ class LevelPicks {
   LevelPicks& operator=(const LevelPicks&) = delete;
   ~LevelPicks();  // stops the picking and joins its thread
 
-  // Checks as level_order does, then picks `count`: on a thread of its own
-  // when `background` (and a thread can be had), else here, all at once.
+  // Checks what level_order checks (it runs on this), then picks `count`:
+  // on a thread of its own when `background` (and a thread can be had),
+  // else here, all at once.
   // `graph`, `spread` and `rest` must outlive this object.
   Status start(const EdgeGraph& graph, const std::vector<int32_t>& spread, const std::vector<int32_t>& rest,
                int32_t count, bool background);
@@ -89,7 +90,8 @@ class LevelPicks {
   bool wait(int32_t count);
 
  private:
-  void pick_in_background();
+  // The picks start left, published as they come (on the thread, or here).
+  void pick_all();
 
   FarthestPointSampler sampler_;
   std::vector<int32_t> order_;

@@ -39,9 +39,11 @@ int32_t next_batch(double target_rms_rel, const GreedyBatches& batches, const st
 struct Targets {
   double rms = 0, linf = 0;
   double scale = 1;  // 1 / the diagonal
-  bool met(const VertexDistance& d) const {
-    return (rms > 0 && d.rms * scale <= rms) || (linf > 0 && d.linf * scale <= linf);
+  // Relative errors within `factor` times a target.
+  bool within(double factor, double rms_rel, double linf_rel) const {
+    return (rms > 0 && rms_rel <= factor * rms) || (linf > 0 && linf_rel <= factor * linf);
   }
+  bool met(const VertexDistance& d) const { return within(1.0, d.rms * scale, d.linf * scale); }
 };
 
 // A count of anchors and the relative RMS of the decoder's shape there
@@ -285,9 +287,8 @@ Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const AnchorRule
                               scale);
   const Targets targets{target_rms, target_linf, scale};
   const bool iterative = !rec->global();
-  auto near_a_target = [&](const GreedyStep& at) {
-    return (target_rms > 0 && at.rms_rel <= kDecoderCheckWithin * target_rms) ||
-           (target_linf > 0 && at.linf_rel <= kDecoderCheckWithin * target_linf);
+  auto near_a_target = [&](double rms_rel, double linf_rel) {
+    return targets.within(kDecoderCheckWithin, rms_rel, linf_rel);
   };
   std::vector<double> shape, error2(n);
   // Iterative: the most anchors whose decoder's shape missed the targets.
@@ -297,14 +298,14 @@ Status select_anchors(const Mesh& mesh, const EdgeGraph& graph, const AnchorRule
     const bool far =
         target_rms > 0 && (out->curve.empty() || out->curve.back().rms_rel > kFarErrorOverTarget * target_rms);
     // Iterative, once near a target: the decoder's shape alone.
-    const bool near = iterative && !out->curve.empty() && near_a_target(out->curve.back());
+    const bool near = iterative && !out->curve.empty() && near_a_target(out->curve.back().rms_rel, out->curve.back().linf_rel);
     VertexDistance distance;
     if (!near) {
       GAB_RETURN_IF_ERROR(rec->greedy_shape(greedy_steps(n, far), &shape));
       squared_vertex_errors(mesh, shape, &error2, &distance);
     }
     bool met = !iterative && targets.met(distance);
-    if (iterative && (near || near_a_target({k, distance.rms * scale, distance.linf * scale}) || k >= cap)) {
+    if (iterative && (near || near_a_target(distance.rms * scale, distance.linf * scale) || k >= cap)) {
       // The ranking shape is not the decoder's: where the loop may stop (the
       // file's error), the decoder's shape instead, which ranks the next
       // batch too.
