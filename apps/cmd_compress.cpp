@@ -120,6 +120,8 @@ int run_compress(int argc, char** argv) {
   status = write_output_file(out, std::string_view(reinterpret_cast<const char*>(file.data()), file.size()));
   if (!status.ok()) return fail(status.message());
   if (!order_out.empty()) {
+    // Again now that -o exists: another spelling of it is caught only now.
+    if (const int refused = check_output("compress", order_out, {in, out})) return refused;
     // Line i: the decoded index of input vertex i (gab diff --map reads it).
     std::string lines;
     lines.reserve(8 * stats.new_index.size());

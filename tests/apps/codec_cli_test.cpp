@@ -171,6 +171,16 @@ TEST(CodecCliTest, OrderOutWritesTheNumberingThatDiffMapPairsBack) {
       << kept.err;
   EXPECT_EQ(run_gab("compress -i " + in + " -o " + file + " --reorder --order-out " + file).exit_code, 2);
   EXPECT_EQ(run_gab("compress -i " + in + " -o " + file + " --reorder --order-out " + in).exit_code, 2);
+  // A file not made yet, named two ways: the map does not replace the .gab.
+  const std::string fresh = gab_test::scratch_path("order-out-fresh.gab");
+  std::remove(fresh.c_str());
+  const std::string dir = fresh.substr(0, fresh.find_last_of('/'));
+  const std::string other = dir + "/./order-out-fresh.gab";
+  const CommandResult twice = run_gab("compress -i " + in + " -o " + fresh + " --reorder --order-out " + other);
+  EXPECT_EQ(twice.exit_code, 2) << twice.err;
+  EXPECT_NE(twice.err.find("is the input"), std::string::npos) << twice.err;
+  const CommandResult info = run_gab("info " + fresh);
+  EXPECT_EQ(info.exit_code, 0) << info.err;
 }
 
 TEST(CodecCliTest, RefineAddsALeastSquaresChunkThatDecompressApplies) {
