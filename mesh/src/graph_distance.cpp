@@ -14,7 +14,9 @@ namespace gab {
 
 namespace {
 
-constexpr int32_t kFar = INT32_MAX;  // not reachable from any chosen vertex
+// Keys: (hops << 32) | the nearest chosen vertex (graph_distance.h).
+constexpr uint64_t kUnreached = FarthestPointSampler::kUnreached;
+constexpr uint64_t kOneHop = uint64_t{1} << 32;
 
 Status check_vertices(const EdgeGraph& graph, const std::vector<int32_t>& vertices, const char* what, bool distinct) {
   const int32_t n = graph.num_vertices();
@@ -95,38 +97,50 @@ Status FarthestPointSampler::start(const EdgeGraph& graph, const std::vector<int
   if (candidates) {
     for (int32_t v : *candidates) candidate_[v] = 1;
   }
-  dist_.assign(n, kFar);
+  nearest_.assign(n, kUnreached);
   // The seeds at once: one search from all of them.
   seeds_ = seeds;
   for (int32_t s : seeds) {
-    dist_[s] = 0;
+    nearest_[s] = static_cast<uint64_t>(s);
     queue_.push_back(s);
   }
   spread_from_queue();
   return Status::Ok();
 }
 
-// First-in first-out visits in order of distance, so each vertex settles
-// at its new distance when first reached.
+// First-in first-out visits in order of hops, so a vertex's key is final
+// when it is taken from the queue: only vertices of the layer before can
+// lower it. A vertex lowered again in its layer (by a lower chosen vertex
+// at the same hops, only when searching from several at once) is queued
+// again; taken the second time it offers what it offered the first, and
+// nothing changes. A vertex the search does not lower passes nothing on:
+// its key plus one hop is at most what the search would offer its
+// neighbours. A candidate enters a bucket when its hops fall, not when
+// only its nearest chosen vertex does.
 void FarthestPointSampler::spread_from_queue() {
   const EdgeGraph& graph = *graph_;
+  const int32_t* offsets = graph.offsets.data();
+  const int32_t* neighbors = graph.neighbors.data();
+  uint64_t* nearest = nearest_.data();
   for (size_t q = 0; q < queue_.size(); ++q) {
     const int32_t v = queue_[q];
-    for (int32_t p = graph.offsets[v]; p < graph.offsets[v + 1]; ++p) {
-      const int32_t u = graph.neighbors[p];
-      if (dist_[v] + 1 < dist_[u]) {
-        dist_[u] = dist_[v] + 1;
-        queue_.push_back(u);
-        if (!candidate_[u]) continue;
-        if (static_cast<size_t>(dist_[u]) >= buckets_.size()) buckets_.resize(static_cast<size_t>(dist_[u]) + 1);
-        buckets_[dist_[u]].push_back(u);
-      }
+    const uint64_t offer = nearest[v] + kOneHop;
+    for (int32_t p = offsets[v]; p < offsets[v + 1]; ++p) {
+      const int32_t u = neighbors[p];
+      const uint64_t old = nearest[u];
+      if (offer >= old) continue;
+      nearest[u] = offer;
+      queue_.push_back(u);
+      const uint32_t hops = static_cast<uint32_t>(offer >> 32);
+      if (hops == static_cast<uint32_t>(old >> 32) || !candidate_[u]) continue;
+      if (hops >= buckets_.size()) buckets_.resize(static_cast<size_t>(hops) + 1);
+      buckets_[hops].push_back(u);
     }
   }
 }
 
 void FarthestPointSampler::add(int32_t s) {
-  dist_[s] = 0;
+  nearest_[s] = static_cast<uint64_t>(s);
   queue_.assign(1, s);
   spread_from_queue();
 }
@@ -136,9 +150,9 @@ int32_t FarthestPointSampler::next(int32_t count, std::vector<int32_t>* picked) 
   auto taken = [&]() { return static_cast<int32_t>(picked->size() - before); };
   while (seeds_out_ < seeds_.size() && taken() < count) picked->push_back(seeds_[seeds_out_++]);
   // The smallest vertex of each component nothing reaches yet.
-  const int32_t n = static_cast<int32_t>(dist_.size());
+  const int32_t n = static_cast<int32_t>(nearest_.size());
   for (; scan_ < n && taken() < count; ++scan_) {
-    if (candidate_[scan_] && dist_[scan_] == kFar) {
+    if (candidate_[scan_] && nearest_[scan_] == kUnreached) {
       picked->push_back(scan_);
       add(scan_);
     }
@@ -157,7 +171,7 @@ int32_t FarthestPointSampler::next(int32_t count, std::vector<int32_t>* picked) 
     }
     for (; entry_ < bucket.size() && taken() < count; ++entry_) {
       const int32_t v = bucket[entry_];
-      if (dist_[v] == static_cast<int32_t>(bucket_ - 1)) {  // puts go below: no reallocation
+      if ((nearest_[v] >> 32) == bucket_ - 1) {  // puts go below: no reallocation
         picked->push_back(v);
         add(v);
       }

@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "anchor_checks.h"
+#include "degree_runs.h"
 
 namespace gab {
 
@@ -63,17 +64,21 @@ inline v4f load4(const float* p) {
 // from the values `from` (4 per vertex), in single precision: its
 // neighbours summed in two chains (even and odd places in adjacency order,
 // each from 0: half the wait on the additions), (even + odd) times the
-// reciprocal of its degree.
+// reciprocal of its degree. D: v's degree when known here (DegreeRuns), 0
+// when not.
+template <int32_t D = 0>
 inline void harmonic_row_float(const EdgeGraph& g, const float* from, int32_t v, float* to) {
-  const int32_t first = g.offsets[v], last = g.offsets[v + 1];
+  const int32_t first = g.offsets[v];
+  const int32_t degree = D > 0 ? D : g.offsets[v + 1] - first;
+  const int32_t* neighbors = g.neighbors.data() + first;
   v4f even = {0.0f, 0.0f, 0.0f, 0.0f}, odd = even;
-  int32_t e = first;
-  for (; e + 1 < last; e += 2) {
-    even += load4(from + 4 * static_cast<size_t>(g.neighbors[e]));
-    odd += load4(from + 4 * static_cast<size_t>(g.neighbors[e + 1]));
+  int32_t e = 0;
+  for (; e + 1 < degree; e += 2) {
+    even += load4(from + 4 * static_cast<size_t>(neighbors[e]));
+    odd += load4(from + 4 * static_cast<size_t>(neighbors[e + 1]));
   }
-  if (e < last) even += load4(from + 4 * static_cast<size_t>(g.neighbors[e]));
-  const v4f out = (even + odd) * kReciprocal(last - first);
+  if (e < degree) even += load4(from + 4 * static_cast<size_t>(neighbors[e]));
+  const v4f out = (even + odd) * kReciprocal(degree);
   std::memcpy(to, &out, sizeof out);
 }
 
@@ -213,6 +218,20 @@ void IterativeReconstruction::record(const std::vector<int32_t>& anchors, const 
 
 Status IterativeReconstruction::init(const EdgeGraph& graph, double weight, const std::vector<int32_t>& anchors,
                                      const std::vector<double>& coefficients) {
+  return init_with(graph, weight, anchors, coefficients, nullptr);
+}
+
+Status IterativeReconstruction::init(const EdgeGraph& graph, double weight, const std::vector<int32_t>& anchors,
+                                     const std::vector<double>& coefficients, const std::vector<uint64_t>& nearest) {
+  if (rule_ != NearestRule::kFewestHopsLowest) {
+    return Status::Error(StatusCode::kInvalidArgument, "a nearest map needs the fewest-hops nearest rule");
+  }
+  return init_with(graph, weight, anchors, coefficients, &nearest);
+}
+
+Status IterativeReconstruction::init_with(const EdgeGraph& graph, double weight, const std::vector<int32_t>& anchors,
+                                          const std::vector<double>& coefficients,
+                                          const std::vector<uint64_t>* nearest) {
   if (!(weight > 0.0) || !std::isfinite(weight)) {
     return Status::Error(StatusCode::kInvalidArgument, "anchor weight must be positive and finite");
   }
@@ -233,8 +252,15 @@ Status IterativeReconstruction::init(const EdgeGraph& graph, double weight, cons
   // component: the first one it misses names the component without one (as
   // check_components_anchored would), with no pass of its own.
   record(anchors, coefficients);
-  nearest_.assign(n_, std::numeric_limits<uint64_t>::max());
-  update_nearest(anchors);
+  const Status taken = nearest ? take_nearest(*nearest) : Status::Ok();
+  if (!taken.ok()) {
+    graph_ = nullptr;
+    return taken;
+  }
+  if (!nearest) {
+    nearest_.assign(n_, std::numeric_limits<uint64_t>::max());
+    update_nearest(anchors);
+  }
   for (int32_t v = 0; v < n_; ++v) {
     if (nearest_[v] == std::numeric_limits<uint64_t>::max()) {
       graph_ = nullptr;
@@ -242,6 +268,22 @@ Status IterativeReconstruction::init(const EdgeGraph& graph, double weight, cons
                                                              " has no anchor (every component needs one)");
     }
   }
+  return Status::Ok();
+}
+
+Status IterativeReconstruction::take_nearest(const std::vector<uint64_t>& nearest) {
+  if (nearest.size() != static_cast<size_t>(n_)) {
+    return Status::Error(StatusCode::kInvalidArgument, "a nearest map needs one entry per vertex");
+  }
+  // Each entry must name an anchor (or none: an unanchored component, which
+  // init reports); the hops are the caller's word.
+  for (uint64_t key : nearest) {
+    const uint64_t a = key & 0xffffffffu;
+    if (key != std::numeric_limits<uint64_t>::max() && (a >= static_cast<uint64_t>(n_) || anchor_of_[a] < 0)) {
+      return Status::Error(StatusCode::kInvalidArgument, "the nearest map names a vertex that is not an anchor");
+    }
+  }
+  nearest_ = nearest;
   return Status::Ok();
 }
 
@@ -262,6 +304,25 @@ Status IterativeReconstruction::add_anchors(const std::vector<int32_t>& anchors,
   record(anchors, coefficients);
   update_nearest(anchors);
   return Status::Ok();
+}
+
+Status IterativeReconstruction::add_anchors(const std::vector<int32_t>& anchors,
+                                            const std::vector<double>& coefficients,
+                                            const std::vector<uint64_t>& nearest) {
+  if (graph_ == nullptr) return Status::Error(StatusCode::kInvalidArgument, "add_anchors before init");
+  if (rule_ != NearestRule::kFewestHopsLowest) {
+    return Status::Error(StatusCode::kInvalidArgument, "a nearest map needs the fewest-hops nearest rule");
+  }
+  GAB_RETURN_IF_ERROR(check_new(anchors, coefficients));
+  const size_t before = anchors_.size();
+  record(anchors, coefficients);
+  const Status taken = take_nearest(nearest);
+  if (!taken.ok()) {  // as before the call
+    for (int32_t a : anchors) anchor_of_[a] = -1;
+    anchors_.resize(before);
+    coefficients_.resize(3 * before);
+  }
+  return taken;
 }
 
 void IterativeReconstruction::update_nearest(const std::vector<int32_t>& anchors) {
@@ -427,13 +488,17 @@ Status IterativeReconstruction::start_values(const std::vector<int32_t>* at_or_a
     for (size_t a = 0; a < anchors_.size(); ++a) {
       for (int k = 0; k < 3; ++k) anchor_start[4 * a + k] = to_float((coefficients_[3 * a + k] - origin[k]) * scale[k]);
     }
+    // The free vertices grouped by degree, block by block (DegreeRuns).
     StepTeam team(threads_, n_);
-    team.run([&](int32_t begin, int32_t end, int32_t) {
+    DegreeRuns free_runs;
+    free_runs.resize(n_, kBlock);
+    team.run([&](int32_t begin, int32_t end, int32_t b) {
       for (int32_t v = begin; v < end; ++v) {
         const float* value = &anchor_start[4 * static_cast<size_t>(anchor_of[nearest_anchor(v)])];
         std::copy(value, value + 4, from + 4 * static_cast<size_t>(v));
         if (fixed(v)) std::copy(value, value + 4, to + 4 * static_cast<size_t>(v));
       }
+      free_runs.fill(g, b, begin, end, [&](int32_t v) { return !fixed(v); });
     });
     for (int sweep = 1; sweep <= sweeps; ++sweep) {
       if (sweep == sweeps && at_or_all) {
@@ -442,10 +507,10 @@ Status IterativeReconstruction::start_values(const std::vector<int32_t>* at_or_a
           if (!fixed(v)) harmonic_row_float(g, from, v, to + 4 * static_cast<size_t>(v));
         }
       } else {
-        team.run([&](int32_t begin, int32_t end, int32_t) {
-          for (int32_t v = begin; v < end; ++v) {
-            if (!fixed(v)) harmonic_row_float(g, from, v, to + 4 * static_cast<size_t>(v));
-          }
+        team.run([&](int32_t, int32_t, int32_t b) {
+          free_runs.visit(b, [&](auto degree, int32_t v) {
+            harmonic_row_float<decltype(degree)::value>(g, from, v, to + 4 * static_cast<size_t>(v));
+          });
         });
       }
       std::swap(from, to);
@@ -537,6 +602,7 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
     // beside the steps' own (the decode's peak).
     std::vector<float>().swap(from_);
     std::vector<float>().swap(to_);
+
   } else if (fresh) {
     shape_ = nearest_anchor_shape();
   }
@@ -678,28 +744,39 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
   v4d rz = total();
   // (L in)_v: the neighbours summed in two chains (even and odd places),
   // which halves the wait on the additions.
-  auto laplacian_row = [offsets, neighbors](const v4f* in, int32_t v) {
-    const int32_t first = offsets[v], last = offsets[v + 1];
+  // Degree: v's when known here (DegreeRuns), 0 when not.
+  auto laplacian_row = [offsets, neighbors](const v4f* in, int32_t v, auto degree_known) {
+    constexpr int32_t kDegree = decltype(degree_known)::value;
+    const int32_t first = offsets[v];
+    const int32_t degree = kDegree > 0 ? kDegree : offsets[v + 1] - first;
+    const int32_t* around = neighbors + first;
     v4f even = {0.0f, 0.0f, 0.0f, 0.0f}, odd = even;
-    int32_t e = first;
-    for (; e + 1 < last; e += 2) {
-      even += in[neighbors[e]];
-      odd += in[neighbors[e + 1]];
+    int32_t e = 0;
+    for (; e + 1 < degree; e += 2) {
+      even += in[around[e]];
+      odd += in[around[e + 1]];
     }
-    if (e < last) even += in[neighbors[e]];
-    return static_cast<float>(last - first) * in[v] - (even + odd);
+    if (e < degree) even += in[around[e]];
+    return static_cast<float>(degree) * in[v] - (even + odd);
   };
+  // The products by L row by row in groups of one degree (DegreeRuns).
+  DegreeRuns runs;
+  if (steps > 0) {
+    runs.resize(n_, kBlock);
+    team.run([&](int32_t begin, int32_t end, int32_t b) { runs.fill(*graph_, b, begin, end, [](int32_t) { return true; }); });
+  }
   // The correction the steps add to the shape, single precision like them;
   // x + correction / scale at the end, in double.
   std::vector<v4f> correction(n, v4f{0.0f, 0.0f, 0.0f, 0.0f});
   for (int32_t step = 0; step < steps; ++step) {
     // q = L (L p) + w^2 S p (t = L p first); per block the sums of p q.
-    team.run([&](int32_t begin, int32_t end, int32_t) {
-      for (int32_t v = begin; v < end; ++v) t[v] = laplacian_row(p.data(), v);
+    team.run([&](int32_t, int32_t, int32_t b) {
+      runs.visit(b, [&](auto degree, int32_t v) { t[v] = laplacian_row(p.data(), v, degree); });
     });
     team.run([&](int32_t begin, int32_t end, int32_t b) {
+      runs.visit(b, [&](auto degree, int32_t v) { q[v] = laplacian_row(t.data(), v, degree); });
       block_sum(begin, end, [&](int32_t v) {
-        v4f qv = laplacian_row(t.data(), v);
+        v4f qv = q[v];
         // At an anchor, w^2 p in double: w^2 may be past single precision's
         // range (the format allows w up to 1e100), where p is then 0.
         if (anchor_of[v] >= 0) {

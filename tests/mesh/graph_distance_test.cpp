@@ -104,5 +104,53 @@ TEST(FarthestPointTest, TheSamplerTakenInPiecesMakesTheSamePicks) {
   EXPECT_EQ(sampler.start(g, {3, 3}, nullptr).message(), "seed 3 given twice");
 }
 
+// (hops << 32) | nearest of `chosen`, the fewest hops then the lowest
+// index, by a search from each; kUnreached where none reaches.
+std::vector<uint64_t> nearest_by_brute_force(const EdgeGraph& g, const std::vector<int32_t>& chosen) {
+  std::vector<uint64_t> nearest(g.num_vertices(), FarthestPointSampler::kUnreached);
+  for (int32_t c : chosen) {
+    std::vector<int32_t> d;
+    EXPECT_TRUE(bfs_distances(g, {c}, &d).ok());
+    for (int32_t v = 0; v < g.num_vertices(); ++v) {
+      if (d[v] >= 0) nearest[v] = std::min(nearest[v], (static_cast<uint64_t>(d[v]) << 32) | static_cast<uint64_t>(c));
+    }
+  }
+  return nearest;
+}
+
+TEST(FarthestPointTest, TheSamplersNearestMapIsTheFewestHopsThenTheLowestChosen) {
+  // A torus whose seeds tie often (many at once, spread evenly, so a
+  // vertex is reached at the same hops from several: the lower wins even
+  // when the higher reaches it first), then picks one by one; and the
+  // three components, two of them unreached until their scan picks.
+  const EdgeGraph torus = build_edge_graph(testing_util::torus(30, 20));
+  std::vector<int32_t> seeds;
+  for (int32_t v = 599; v >= 0; v -= 37) seeds.push_back(v);
+  const EdgeGraph parts = grid_triangle_and_point();
+  for (const auto& [g, start] : {std::make_pair(&torus, seeds), std::make_pair(&parts, std::vector<int32_t>{7})}) {
+    FarthestPointSampler sampler;
+    ASSERT_TRUE(sampler.start(*g, start, nullptr).ok());
+    std::vector<int32_t> chosen;
+    ASSERT_EQ(sampler.next(static_cast<int32_t>(start.size()), &chosen), static_cast<int32_t>(start.size()));
+    EXPECT_EQ(sampler.nearest(), nearest_by_brute_force(*g, chosen));
+    for (int pick = 0; pick < 30; ++pick) {
+      ASSERT_EQ(sampler.next(1, &chosen), 1);
+      ASSERT_EQ(sampler.nearest(), nearest_by_brute_force(*g, chosen)) << chosen.size() << " chosen";
+    }
+    // The lowest index decided often: vertices with another chosen vertex
+    // as few hops away as their nearest.
+    const std::vector<uint64_t>& nearest = sampler.nearest();
+    int32_t ties = 0;
+    for (int32_t c : chosen) {
+      std::vector<int32_t> d;
+      ASSERT_TRUE(bfs_distances(*g, {c}, &d).ok());
+      for (int32_t v = 0; v < g->num_vertices(); ++v) {
+        ties += d[v] >= 0 && static_cast<uint64_t>(d[v]) == nearest[v] >> 32 && (nearest[v] & 0xffffffffu) < static_cast<uint64_t>(c);
+      }
+    }
+    EXPECT_GT(ties, g == &torus ? 100 : 0);
+  }
+}
+
 }  // namespace
 }  // namespace gab

@@ -8,6 +8,7 @@
 
 #include "common/test_meshes.h"
 #include "gab/mesh/edge_graph.h"
+#include "gab/mesh/graph_distance.h"
 #include "gab/mesh/iterative_reconstruction.h"
 #include "gab/mesh/relaxed_reconstruction.h"
 
@@ -144,6 +145,57 @@ TEST(IterativeReconstructionTest, TheFewestHopsRuleTakesTheNearestThenTheLowestA
                     .ok());
     EXPECT_EQ(batches.nearest_anchor_shape(), expected(last)) << last;
   }
+}
+
+TEST(IterativeReconstructionTest, AGivenNearestMapGivesTheSearchedOnesShapes) {
+  // init and add_anchors with a farthest-point sampler's nearest map (its
+  // chosen vertices the anchors): the same starts and shapes as the
+  // reconstruction's own search. A map that names a vertex that is no
+  // anchor is refused and leaves everything as it was.
+  const Mesh m = testing_util::bumpy_torus(16, 10);
+  const EdgeGraph g = build_edge_graph(m);
+  FarthestPointSampler sampler;
+  ASSERT_TRUE(sampler.start(g, {97, 3}, nullptr).ok());
+  std::vector<int32_t> chosen;
+  sampler.next(2, &chosen);
+  std::vector<double> c(3 * 40);
+  for (size_t i = 0; i < c.size(); ++i) c[i] = std::sin(static_cast<double>(i));
+  auto coefficients_of = [&](size_t first, size_t last) {
+    return std::vector<double>(c.begin() + 3 * first, c.begin() + 3 * last);
+  };
+  IterativeReconstruction given, searched;
+  for (IterativeReconstruction* rec : {&given, &searched}) {
+    rec->set_nearest_rule(IterativeReconstruction::NearestRule::kFewestHopsLowest);
+  }
+  ASSERT_TRUE(given.init(g, 100, chosen, coefficients_of(0, 2), sampler.nearest()).ok());
+  ASSERT_TRUE(searched.init(g, 100, chosen, coefficients_of(0, 2)).ok());
+  std::vector<double> a(3 * static_cast<size_t>(m.num_vertices())), b = a;
+  for (size_t done = 2; done < 40; done += 9) {
+    const size_t last = std::min<size_t>(40, done + 9);
+    sampler.next(static_cast<int32_t>(last - done), &chosen);
+    const std::vector<int32_t> batch(chosen.begin() + static_cast<std::ptrdiff_t>(done), chosen.end());
+    // A map the batch does not match: refused, nothing changed.
+    std::vector<uint64_t> wrong = sampler.nearest();
+    wrong[5] = (wrong[5] & ~uint64_t{0xffffffffu}) | 6;  // vertex 6 is no anchor
+    ASSERT_FALSE(given.is_anchor(6));
+    EXPECT_EQ(given.add_anchors(batch, coefficients_of(done, last), wrong).message(),
+              "the nearest map names a vertex that is not an anchor");
+    EXPECT_EQ(given.num_anchors(), static_cast<int32_t>(done));
+    ASSERT_TRUE(given.add_anchors(batch, coefficients_of(done, last), sampler.nearest()).ok());
+    ASSERT_TRUE(searched.add_anchors(batch, coefficients_of(done, last)).ok());
+    EXPECT_EQ(given.nearest_anchor_shape(), searched.nearest_anchor_shape()) << last;
+    ASSERT_TRUE(given.start(&a).ok());
+    ASSERT_TRUE(searched.start(&b).ok());
+    EXPECT_EQ(a, b) << last;
+  }
+  ASSERT_TRUE(given.solve(5, &a).ok());
+  ASSERT_TRUE(searched.solve(5, &b).ok());
+  EXPECT_EQ(a, b);
+  EXPECT_EQ(given.add_anchors({6}, {0, 0, 0}, std::vector<uint64_t>(3, 0)).message(),
+            "a nearest map needs one entry per vertex");
+  IterativeReconstruction discovery;  // operator 1 keeps no map
+  EXPECT_EQ(discovery.init(g, 100, {97, 3}, coefficients_of(0, 2), sampler.nearest()).message(),
+            "a nearest map needs the fewest-hops nearest rule");
 }
 
 TEST(IterativeReconstructionTest, StartAtIsTheStartAtThoseVertices) {

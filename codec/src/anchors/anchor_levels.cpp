@@ -32,22 +32,36 @@ uint32_t level_growth16(double growth) {
 Status level_order(const EdgeGraph& graph, const std::vector<int32_t>& spread, const std::vector<int32_t>& rest,
                    int32_t count, std::vector<int32_t>* order) {
   LevelPicks picks;
-  GAB_RETURN_IF_ERROR(picks.start(graph, spread, rest, count, false));
+  GAB_RETURN_IF_ERROR(picks.start(graph, spread, rest, {std::max(count, 0)}, false));
+  if (count > 0) picks.wait(0);
   *order = picks.order();
   return Status::Ok();
 }
 
 LevelPicks::~LevelPicks() {
-  stopping_ = true;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopping_ = true;
+  }
+  room_.notify_all();
   if (thread_.joinable()) thread_.join();
 }
 
 Status LevelPicks::start(const EdgeGraph& graph, const std::vector<int32_t>& spread, const std::vector<int32_t>& rest,
-                         int32_t count, bool background) {
+                         const std::vector<int32_t>& levels, bool background) {
   order_.clear();
-  if (count <= 0) return Status::Ok();
-  if (static_cast<size_t>(count) > rest.size()) {
-    return Status::Error(StatusCode::kInvalidArgument, "level order: more picks than vertices to pick from");
+  levels_.clear();
+  ends_.clear();
+  size_t count = 0;
+  for (int32_t size : levels) {
+    if (size < 0) return Status::Error(StatusCode::kInvalidArgument, "level order: a level of negative size");
+    if (size == 0) continue;
+    count += static_cast<size_t>(size);
+    if (count > rest.size()) {
+      return Status::Error(StatusCode::kInvalidArgument, "level order: more picks than vertices to pick from");
+    }
+    levels_.push_back(size);
+    ends_.push_back(count);
   }
   const Status s = sampler_.start(graph, spread, &rest);
   if (!s.ok()) return Status::Error(StatusCode::kInvalidArgument, "level order: " + s.message());
@@ -60,16 +74,19 @@ Status LevelPicks::start(const EdgeGraph& graph, const std::vector<int32_t>& spr
   }
   std::vector<int32_t> seeds;
   sampler_.next(static_cast<int32_t>(spread.size()), &seeds);
-  order_.assign(static_cast<size_t>(count), -1);
-  if (!background) {
-    pick_all();  // here, before returning
-    return Status::Ok();
-  }
+  order_.assign(count, -1);
+  if (!background || levels_.empty()) return Status::Ok();
+  maps_.assign(levels_.size() + 1, {});
+  maps_[0] = sampler_.nearest();  // before the thread: no lock needed
+  maps_made_ = 1;
+  background_ = true;
 #if defined(__cpp_exceptions)
   try {
     thread_ = std::thread([this] { pick_all(); });
   } catch (const std::system_error&) {
-    pick_all();  // no thread to be had: all picks here
+    background_ = false;  // no thread to be had: picks here as asked
+    maps_.clear();
+    maps_made_ = 0;
   }
 #else
   thread_ = std::thread([this] { pick_all(); });  // built without exceptions: a refusal ends the process
@@ -77,24 +94,47 @@ Status LevelPicks::start(const EdgeGraph& graph, const std::vector<int32_t>& spr
   return Status::Ok();
 }
 
-void LevelPicks::pick_all() {
-  const int32_t count = static_cast<int32_t>(order_.size());
-  // Pieces small at first, where each pick costs the most and the first
-  // level waits for them, larger later.
-  const int32_t piece = std::max<int32_t>(16, count / 64);
+bool LevelPicks::pick_level(size_t level) {
+  const size_t begin = level == 0 ? 0 : ends_[level - 1];
   std::vector<int32_t> picks;
-  int32_t made = 0;
-  while (made < count && !stopping_) {
-    picks.clear();
-    sampler_.next(std::min(piece, count - made), &picks);
-    std::copy(picks.begin(), picks.end(), order_.begin() + made);
-    made += static_cast<int32_t>(picks.size());
+  picks.reserve(static_cast<size_t>(levels_[level]));
+  // Pieces, so that a stop is seen within one.
+  while (begin + picks.size() < ends_[level] && !stopping_) {
+    const size_t before = picks.size();
+    const size_t piece = std::min<size_t>(1024, ends_[level] - begin - picks.size());
+    if (sampler_.next(static_cast<int32_t>(piece), &picks) == 0) break;  // start() checked the candidates suffice
+    if (picks.size() == before) break;
+  }
+  std::copy(picks.begin(), picks.end(), order_.begin() + static_cast<std::ptrdiff_t>(begin));
+  return begin + picks.size() == ends_[level];
+}
+
+void LevelPicks::pick_all() {
+  for (size_t level = 0; level < levels_.size(); ++level) {
+    if (!pick_level(level)) break;
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      levels_made_ = level + 1;
+      progress_.notify_all();
+      if (maps_off_) continue;
+      // The map after this level waits for room, unless the decoder asks
+      // for later picks without taking the maps: then no more maps (it
+      // searches for them), the picks go on.
+      room_.wait(lock, [&] { return stopping_ || maps_made_ - maps_given_ < kPendingMaps || waiting_for_ > level; });
+      if (stopping_) break;
+      if (maps_made_ - maps_given_ >= kPendingMaps) {
+        maps_off_ = true;
+        progress_.notify_all();
+        continue;
+      }
+    }
+    std::vector<uint64_t> map = sampler_.nearest();
     {
       std::lock_guard<std::mutex> lock(mutex_);
-      made_ = made;
+      maps_[level + 1] = std::move(map);
+      maps_made_ = level + 2;
     }
     progress_.notify_all();
-    if (picks.empty()) break;  // start() checked the candidates suffice
   }
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -103,11 +143,40 @@ void LevelPicks::pick_all() {
   progress_.notify_all();
 }
 
-bool LevelPicks::wait(int32_t count) {
-  if (made_ >= count) return true;
+bool LevelPicks::wait(size_t level) {
+  if (level >= levels_.size()) return false;
+  if (!background_) {
+    while (levels_made_ <= level) {
+      if (!pick_level(levels_made_)) return false;
+      ++levels_made_;
+    }
+    return true;
+  }
+  if (levels_made_ > level) return true;
   std::unique_lock<std::mutex> lock(mutex_);
-  progress_.wait(lock, [&] { return made_ >= count || done_; });
-  return made_ >= count;
+  waiting_for_ = std::max(waiting_for_, level);
+  room_.notify_all();
+  progress_.wait(lock, [&] { return levels_made_ > level || done_; });
+  return levels_made_ > level;
+}
+
+bool LevelPicks::nearest_before(size_t level, std::vector<uint64_t>* nearest) {
+  if (level != maps_given_ || level > levels_.size()) return false;
+  if (!background_) {
+    if (levels_made_ != level) return false;  // the sampler stands elsewhere
+    *nearest = sampler_.nearest();
+    ++maps_given_;
+    return true;
+  }
+  {
+    std::unique_lock<std::mutex> lock(mutex_);
+    progress_.wait(lock, [&] { return maps_made_ > level || maps_off_ || done_; });
+    if (maps_made_ <= level) return false;
+    *nearest = std::move(maps_[level]);
+    ++maps_given_;
+  }
+  room_.notify_all();
+  return true;
 }
 
 LevelMembers::LevelMembers(const std::vector<int32_t>& order, const std::vector<int32_t>& rest, int32_t num_vertices)

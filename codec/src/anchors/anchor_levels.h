@@ -65,10 +65,14 @@ uint32_t level_growth16(double growth);
 Status level_order(const EdgeGraph& graph, const std::vector<int32_t>& spread, const std::vector<int32_t>& rest,
                    int32_t count, std::vector<int32_t>* order);
 
-// level_order's picks made on a thread of their own, so that a decoder
-// works through the first levels while the later ones are picked (the
-// first picks, far apart, cost the most: each moves the distances of a
-// large region). The same picks as level_order, in the same order.
+// level_order's picks, level by level, with the nearest-anchor map the
+// reconstruction needs at each level (IterativeReconstruction's
+// kFewestHopsLowest rule: the farthest-point search keeps it as it goes, so
+// the decoder need not search again). With `background` the picks are made
+// on a thread of their own, so that a decoder works through the first
+// levels while the later ones are picked (the first picks, far apart, cost
+// the most: each moves the distances of a large region); without, here as
+// wait() asks for them. The same picks as level_order, in the same order.
 class LevelPicks {
  public:
   LevelPicks() = default;
@@ -76,29 +80,51 @@ class LevelPicks {
   LevelPicks& operator=(const LevelPicks&) = delete;
   ~LevelPicks();  // stops the picking and joins its thread
 
-  // Checks what level_order checks (it runs on this), then picks `count`:
-  // on a thread of its own when `background` (and a thread can be had),
-  // else here, all at once.
-  // `graph`, `spread` and `rest` must outlive this object.
+  // Checks what level_order checks (it runs on this) for picks of levels
+  // sized `levels` (each positive; their sum at most rest.size()), then
+  // starts picking. `graph`, `spread` and `rest` must outlive this object.
   Status start(const EdgeGraph& graph, const std::vector<int32_t>& spread, const std::vector<int32_t>& rest,
-               int32_t count, bool background);
-  // Sized `count`; its first entries are the picks wait() has seen made.
+               const std::vector<int32_t>& levels, bool background);
+  // Sized the levels' sum; the picks of the levels wait() has returned
+  // true for are in place.
   const std::vector<int32_t>& order() const { return order_; }
-  // Returns once the first `count` (<= start's) picks are in order():
+  // Returns once level `level`'s picks (and those before) are in order():
   // true, or false if the picking ended short of them (it cannot when
   // start's checks passed).
-  bool wait(int32_t count);
+  bool wait(size_t level);
+  // The nearest chosen vertex of every vertex (FarthestPointSampler::
+  // nearest()) once the spread set and levels 0 .. level - 1 are chosen,
+  // for level = 0 .. levels.size(): each once, in increasing order, after
+  // wait(level - 1) and before wait(level). False, and *nearest untouched,
+  // when asked out of that order (then search for it instead).
+  bool nearest_before(size_t level, std::vector<uint64_t>* nearest);
 
  private:
-  // The picks start left, published as they come (on the thread, or here).
+  // The picks of level `level` (the sampler stands after the level before).
+  bool pick_level(size_t level);
+  // The thread's work: every level's picks, a copy of the nearest map
+  // after each (the first, before them, start() makes), at most
+  // kPendingMaps of them waiting.
   void pick_all();
+  // Without a thread, copies of the nearest map are made when asked for;
+  // with one, the thread makes them and holds at most this many at once
+  // (memory: 8 bytes a vertex each).
+  static constexpr size_t kPendingMaps = 2;
 
   FarthestPointSampler sampler_;
-  std::vector<int32_t> order_;
-  std::atomic<int32_t> made_{0};
+  std::vector<int32_t> order_, levels_;
+  std::vector<size_t> ends_;  // ends_[k]: picks in levels 0..k
+  std::vector<std::vector<uint64_t>> maps_;  // the thread's copies, by level
+  size_t maps_given_ = 0;                    // nearest_before calls answered
+  std::atomic<size_t> levels_made_{0};
+  // Under mutex_: the maps made; the highest level wait() has waited for;
+  // maps given up (the decoder did not take them).
+  size_t maps_made_ = 0, waiting_for_ = 0;
+  bool maps_off_ = false;
+  bool background_ = false;
   std::atomic<bool> stopping_{false}, done_{false};
   std::mutex mutex_;
-  std::condition_variable progress_;
+  std::condition_variable progress_, room_;
   std::thread thread_;
 };
 

@@ -136,9 +136,10 @@ Status read_operator_tuning(ChunkDecoding* st, const uint8_t** payload, size_t* 
 // the reconstruction (chunk 0 factors it); then, if `predict` (the
 // selection layout, another chunk following), the prediction at every
 // vertex (that chunk's are not known before it is decoded; the level layout
-// predicts each level at its own vertices).
+// predicts each level at its own vertices). `nearest`, when given, is the
+// nearest-anchor map after these anchors (ShapeOperator::init).
 Status add_chunk(int32_t chunk, const std::vector<int32_t>& anchors, const std::vector<int32_t>& grid, bool predict,
-                 ChunkDecoding* st) {
+                 ChunkDecoding* st, const std::vector<uint64_t>* nearest = nullptr) {
   const Quantizer& q = st->quantizer;
   std::vector<double> coefficients(grid.size());
   for (size_t i = 0; i < anchors.size(); ++i) {
@@ -146,7 +147,7 @@ Status add_chunk(int32_t chunk, const std::vector<int32_t>& anchors, const std::
   }
   const auto t = std::chrono::steady_clock::now();
   if (chunk == 0) {
-    const Status s = st->rec.init(st->graph, st->header.weight, anchors, coefficients);
+    const Status s = st->rec.init(st->graph, st->header.weight, anchors, coefficients, nearest);
     // The factor is over max_factor_entries (kResourceExhausted), or its
     // memory cannot be had (kOutOfMemory): the caller's limits, not the
     // file's fault, so the code goes through unchanged.
@@ -156,7 +157,7 @@ Status add_chunk(int32_t chunk, const std::vector<int32_t>& anchors, const std::
     if (st->rec.relaxed()) st->stats->factor_entries = st->rec.relaxed()->cholesky().symbolic().stored_L;
   } else {
     bool refactor = false;
-    const Status s = st->rec.add_anchors(anchors, coefficients, &refactor);
+    const Status s = st->rec.add_anchors(anchors, coefficients, &refactor, nearest);
     if (!s.ok()) return corrupt("chunk " + std::to_string(chunk) + ": " + s.message());
     (refactor ? st->stats->factor_s : st->stats->update_s) += seconds_since(t);
     st->stats->refactorizations += refactor ? 1 : 0;
@@ -219,37 +220,38 @@ Status decode_level_chunks(ByteReader* in, AnchorChunkCoder* coder, ChunkDecodin
                                &rest);
   if (!s.ok()) return corrupt("chunk 0: " + s.message());
   const std::vector<int32_t> sizes = plan.level_sizes();
-  // The levels a level of detail reaches, and the farthest-point picks they
-  // need (the last level is what the picks leave).
+  // The levels a level of detail reaches, and those of them that need
+  // farthest-point picks (the last level is what the picks leave).
   size_t needed = 0;
   int64_t end = plan.spread;
   while (needed < sizes.size() && end < st->wanted) end += sizes[needed++];
-  const int32_t last = sizes.empty() ? 0 : sizes.back();
-  const int32_t picks = static_cast<int32_t>(std::min<int64_t>(end - plan.spread, plan.rest - last));
+  const size_t picked = std::min(needed, sizes.empty() ? 0 : sizes.size() - 1);
   // With a second thread the picks are made beside chunk 0's set-up and the
-  // first levels' decoding.
+  // first levels' decoding. Either way the picks' search hands the
+  // reconstruction its nearest anchors (no search of its own).
   LevelPicks level_picks;
-  GAB_RETURN_IF_ERROR(level_picks.start(st->graph, spread, rest, picks, st->options.threads > 1));
-  GAB_RETURN_IF_ERROR(add_chunk(0, spread, grid, false, st));
+  const std::vector<int32_t> picked_sizes(sizes.begin(), sizes.begin() + static_cast<std::ptrdiff_t>(picked));
+  GAB_RETURN_IF_ERROR(level_picks.start(st->graph, spread, rest, picked_sizes, st->options.threads > 1));
+  std::vector<uint64_t> nearest;
+  GAB_RETURN_IF_ERROR(add_chunk(0, spread, grid, false, st, level_picks.nearest_before(0, &nearest) ? &nearest : nullptr));
   LevelMembers members(level_picks.order(), rest, header.num_vertices);
-  int64_t picks_read = 0;
   for (size_t k = 0; k < needed; ++k) {
     const int32_t chunk = static_cast<int32_t>(k + 1);
     GAB_RETURN_IF_ERROR(read_chunk_frame(in, chunk, st, &payload, &payload_size));
     if (!payload) break;
-    // Level k reads the next sizes[k] picks, the last level all of them.
-    picks_read = k + 1 < sizes.size() ? picks_read + sizes[k] : picks;
-    if (!level_picks.wait(static_cast<int32_t>(std::min<int64_t>(picks_read, picks)))) {
+    if (k < picked && !level_picks.wait(k)) {
       return corrupt("chunk " + std::to_string(chunk) + ": the level's farthest-point picks fell short");
     }
     std::vector<int32_t> level = members.next(sizes, k);
-    if (static_cast<int32_t>(level.size()) > st->wanted - st->decoded) level.resize(st->wanted - st->decoded);
+    const bool whole = static_cast<int32_t>(level.size()) <= st->wanted - st->decoded;
+    if (!whole) level.resize(st->wanted - st->decoded);
     const auto t_solve = std::chrono::steady_clock::now();
     GAB_RETURN_IF_ERROR(st->rec.prediction(&level, &st->shape));
     st->stats->solve_s += seconds_since(t_solve);
     s = coder->decode_level(payload, payload_size, level, st->shape.data(), st->graph, &grid);
     if (!s.ok()) return corrupt("chunk " + std::to_string(chunk) + ": " + s.message());
-    GAB_RETURN_IF_ERROR(add_chunk(chunk, level, grid, false, st));
+    const bool map = k < picked && whole && level_picks.nearest_before(k + 1, &nearest);
+    GAB_RETURN_IF_ERROR(add_chunk(chunk, level, grid, false, st, map ? &nearest : nullptr));
   }
   return Status::Ok();
 }

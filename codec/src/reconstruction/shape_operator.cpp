@@ -55,16 +55,18 @@ void ShapeOperator::set_max_factor_entries(int64_t entries) {
 }
 
 Status ShapeOperator::init(const EdgeGraph& graph, double weight, const std::vector<int32_t>& anchors,
-                           const std::vector<double>& coefficients) {
-  return global_ ? global_->init(graph, weight, anchors, coefficients)
-                 : iterative_->init(graph, weight, anchors, coefficients);
+                           const std::vector<double>& coefficients, const std::vector<uint64_t>* nearest) {
+  if (global_) return global_->init(graph, weight, anchors, coefficients);
+  return nearest && local() ? iterative_->init(graph, weight, anchors, coefficients, *nearest)
+                            : iterative_->init(graph, weight, anchors, coefficients);
 }
 
 Status ShapeOperator::add_anchors(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients,
-                                  bool* refactored) {
+                                  bool* refactored, const std::vector<uint64_t>* nearest) {
   if (refactored) *refactored = false;
-  return global_ ? global_->add_anchors_cheapest(anchors, coefficients, refactored)
-                 : iterative_->add_anchors(anchors, coefficients);
+  if (global_) return global_->add_anchors_cheapest(anchors, coefficients, refactored);
+  return nearest && local() ? iterative_->add_anchors(anchors, coefficients, *nearest)
+                            : iterative_->add_anchors(anchors, coefficients);
 }
 
 Status ShapeOperator::set_coefficients(int32_t first, const std::vector<double>& coefficients) {

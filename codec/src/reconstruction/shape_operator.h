@@ -76,12 +76,16 @@ class ShapeOperator {
   void apply(const OrderingPlan& ordering);
   void set_max_factor_entries(int64_t entries);
 
+  // `nearest` (optional): the nearest-anchor map after these anchors, as a
+  // FarthestPointSampler whose chosen vertices are the anchors keeps it;
+  // the operators that start from nearest anchors (2 and 3) take it instead
+  // of searching, the others ignore it.
   Status init(const EdgeGraph& graph, double weight, const std::vector<int32_t>& anchors,
-              const std::vector<double>& coefficients);
+              const std::vector<double>& coefficients, const std::vector<uint64_t>* nearest = nullptr);
   // Anchors joining (global: update or refactorization, the cheaper by the
-  // cost model; *refactored says which).
+  // cost model; *refactored says which); `nearest` as for init.
   Status add_anchors(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients,
-                     bool* refactored = nullptr);
+                     bool* refactored = nullptr, const std::vector<uint64_t>* nearest = nullptr);
   Status set_coefficients(int32_t first, const std::vector<double>& coefficients);
   // The shape of the anchors so far, 3 per vertex: the operator's, which
   // the decoder computes.

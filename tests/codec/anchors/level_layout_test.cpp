@@ -20,6 +20,7 @@
 #include "gab/codec/encoder.h"
 #include "gab/codec/gab_format.h"
 #include "gab/mesh/edge_graph.h"
+#include "gab/mesh/graph_distance.h"
 #include "gab/mesh/mesh_io.h"
 #include "gab/mesh/relaxed_reconstruction.h"
 
@@ -116,6 +117,54 @@ TEST(LevelLayout, LevelOrderAgreesWithABruteForceFarthestPointSearch) {
     ASSERT_TRUE(level_order(graph, spread, rest, count, &order).ok());
     EXPECT_EQ(order, expected) << "spread every " << stride << " vertices";
   }
+}
+
+TEST(LevelLayout, LevelPicksHandOverTheNearestMapBeforeEachLevel) {
+  // The picks level by level, here or on a thread: level_order's picks,
+  // and before each level (and after the last) the nearest-anchor map of
+  // the spread set and the levels so far, as one sampler run gives it. A
+  // map asked for out of turn is refused; a caller that takes no maps
+  // still gets every pick (the thread gives the maps up, not the picks).
+  const Mesh mesh = rough_torus(40, 20, 0.02);
+  const EdgeGraph graph = build_edge_graph(mesh);
+  std::vector<int32_t> spread, rest;
+  for (int32_t v = 0; v < mesh.num_vertices(); ++v) (v % 97 == 5 ? spread : rest).push_back(v);
+  const std::vector<int32_t> levels = {8, 24, 70, 200};
+  std::vector<int32_t> expected_order;
+  ASSERT_TRUE(level_order(graph, spread, rest, 302, &expected_order).ok());
+  std::vector<std::vector<uint64_t>> expected_maps;
+  FarthestPointSampler sampler;
+  ASSERT_TRUE(sampler.start(graph, spread, &rest).ok());
+  std::vector<int32_t> chosen;
+  sampler.next(static_cast<int32_t>(spread.size()), &chosen);
+  expected_maps.push_back(sampler.nearest());
+  for (int32_t size : levels) {
+    sampler.next(size, &chosen);
+    expected_maps.push_back(sampler.nearest());
+  }
+  for (bool background : {false, true}) {
+    LevelPicks picks;
+    ASSERT_TRUE(picks.start(graph, spread, rest, levels, background).ok());
+    std::vector<uint64_t> map;
+    EXPECT_FALSE(picks.nearest_before(1, &map)) << background;  // out of turn
+    EXPECT_TRUE(map.empty());
+    for (size_t k = 0; k <= levels.size(); ++k) {
+      ASSERT_TRUE(picks.nearest_before(k, &map)) << background << " " << k;
+      EXPECT_EQ(map, expected_maps[k]) << background << " " << k;
+      if (k < levels.size()) {
+        ASSERT_TRUE(picks.wait(k));
+      }
+    }
+    EXPECT_FALSE(picks.wait(levels.size()));  // no such level
+    EXPECT_EQ(picks.order(), expected_order) << background;
+    LevelPicks no_maps;
+    ASSERT_TRUE(no_maps.start(graph, spread, rest, levels, background).ok());
+    ASSERT_TRUE(no_maps.wait(levels.size() - 1));
+    EXPECT_EQ(no_maps.order(), expected_order) << background;
+  }
+  LevelPicks picks;
+  EXPECT_EQ(picks.start(graph, spread, rest, {2000, 2000}, false).message(),
+            "level order: more picks than vertices to pick from");
 }
 
 TEST(LevelLayout, DecodesToTheEncodersAnchorsAndSavesTheSelectionOrder) {

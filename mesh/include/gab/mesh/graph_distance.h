@@ -46,6 +46,13 @@ class FarthestPointSampler {
   // every candidate is chosen); how many it appended.
   int32_t next(int32_t count, std::vector<int32_t>* picked);
 
+  // Per vertex, its nearest chosen vertex so far (seeds and picks): the
+  // fewest hops, ties to the lowest vertex index, as (hops << 32) | vertex
+  // (kUnreached where none reaches): IterativeReconstruction's
+  // kFewestHopsLowest rule, which it can take from here (its add_anchors).
+  static constexpr uint64_t kUnreached = UINT64_MAX;
+  const std::vector<uint64_t>& nearest() const { return nearest_; }
+
  private:
   void add(int32_t s);
   // Breadth-first from queue_'s vertices, only where it brings a vertex closer.
@@ -53,7 +60,8 @@ class FarthestPointSampler {
 
   const EdgeGraph* graph_ = nullptr;
   std::vector<char> candidate_;
-  std::vector<int32_t> dist_, queue_;
+  std::vector<uint64_t> nearest_;
+  std::vector<int32_t> queue_;
   std::vector<std::vector<int32_t>> buckets_;
   std::vector<int32_t> seeds_;
   size_t seeds_out_ = 0;

@@ -72,8 +72,20 @@ class IterativeReconstruction {
               const std::vector<double>& coefficients);
 
   // Adds anchors (distinct, not anchored yet) with their coefficients; the
-  // shape so far stays the next solve's start. O(anchors).
+  // shape so far stays the next solve's start. O(anchors), and with
+  // kFewestHopsLowest the search for the vertices they are nearest to.
   Status add_anchors(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
+
+  // init and add_anchors with the nearest anchors after them given instead
+  // of searched (kFewestHopsLowest only): `nearest` as a
+  // FarthestPointSampler's nearest() gives it when the vertices it has
+  // chosen are exactly the anchors (graph_distance.h). Each entry is
+  // checked to name an anchor; on a failed check add_anchors leaves
+  // everything as it was. O(n).
+  Status init(const EdgeGraph& graph, double weight, const std::vector<int32_t>& anchors,
+              const std::vector<double>& coefficients, const std::vector<uint64_t>& nearest);
+  Status add_anchors(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients,
+                     const std::vector<uint64_t>& nearest);
 
   // Replaces the coefficients of anchors first.. (in anchors() order). O(k).
   Status set_coefficients(int32_t first, const std::vector<double>& coefficients);
@@ -113,6 +125,11 @@ class IterativeReconstruction {
 
  private:
   Status check_new(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
+  // init with the nearest map given (nearest) or searched (null).
+  Status init_with(const EdgeGraph& graph, double weight, const std::vector<int32_t>& anchors,
+                   const std::vector<double>& coefficients, const std::vector<uint64_t>* nearest);
+  // The nearest map `nearest` checked and kept.
+  Status take_nearest(const std::vector<uint64_t>& nearest);
   void record(const std::vector<int32_t>& anchors, const std::vector<double>& coefficients);
   // kFewestHopsLowest: lowers nearest_ breadth-first from `anchors`
   // (just recorded) where they are nearer, by the rule's order.
