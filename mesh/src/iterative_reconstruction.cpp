@@ -672,6 +672,10 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
   // and per block its largest |entry| (a maximum is the same in any order).
   // Each vertex's four doubles in two halves of two (x y, z 0): in
   // registers on every x86-64, each lane rounding as with one vector of four.
+  // The products by L row by row in groups of one degree (DegreeRuns).
+  DegreeRuns runs;
+  runs.resize(n_, kBlock);
+  team.run([&](int32_t begin, int32_t end, int32_t b) { runs.fill(*graph_, b, begin, end, [](int32_t) { return true; }); });
   std::vector<v4d> residual(n);
   {
     std::vector<v4d> lx(n);
@@ -679,44 +683,55 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
     double* residual_at = reinterpret_cast<double*>(residual.data());
     auto xy_of = [x](int32_t v) { return load2(x + 3 * static_cast<size_t>(v)); };
     auto z0_of = [x](int32_t v) { return v2d{x[3 * static_cast<size_t>(v) + 2], 0.0}; };
-    team.run([&](int32_t begin, int32_t end, int32_t) {
-      for (int32_t v = begin; v < end; ++v) {
-        const double d = static_cast<double>(offsets[v + 1] - offsets[v]);
-        v2d xy = d * xy_of(v), z0 = d * z0_of(v);
-        for (int32_t e = offsets[v]; e < offsets[v + 1]; ++e) {
-          xy -= xy_of(neighbors[e]);
-          z0 -= z0_of(neighbors[e]);
-        }
-        store2(lx_at + 4 * static_cast<size_t>(v), xy);
-        store2(lx_at + 4 * static_cast<size_t>(v) + 2, z0);
+    // Degree: v's when known here, 0 when not.
+    auto lx_row = [&](auto degree_known, int32_t v) {
+      constexpr int32_t kDegree = decltype(degree_known)::value;
+      const int32_t first = offsets[v];
+      const int32_t degree = kDegree > 0 ? kDegree : offsets[v + 1] - first;
+      const double d = static_cast<double>(degree);
+      v2d xy = d * xy_of(v), z0 = d * z0_of(v);
+      for (int32_t e = first; e < first + degree; ++e) {
+        xy -= xy_of(neighbors[e]);
+        z0 -= z0_of(neighbors[e]);
       }
-    });
-    team.run([&](int32_t begin, int32_t end, int32_t b) {
-      double largest = 0.0;
-      for (int32_t v = begin; v < end; ++v) {
-        const double d = static_cast<double>(offsets[v + 1] - offsets[v]);
-        const double* own = lx_at + 4 * static_cast<size_t>(v);
-        v2d xy = d * load2(own), z0 = d * load2(own + 2);
-        for (int32_t e = offsets[v]; e < offsets[v + 1]; ++e) {
-          const double* u = lx_at + 4 * static_cast<size_t>(neighbors[e]);
-          xy -= load2(u);
-          z0 -= load2(u + 2);
-        }
-        xy = -xy;
-        z0 = -z0;
-        const int32_t a = anchor_of[v];
-        if (a >= 0) {
-          const double* c = &coefficients_[3 * static_cast<size_t>(a)];
-          xy += w2 * (load2(c) - xy_of(v));
-          z0 += w2 * (v2d{c[2], 0.0} - z0_of(v));
-        }
-        store2(residual_at + 4 * static_cast<size_t>(v), xy);
-        store2(residual_at + 4 * static_cast<size_t>(v) + 2, z0);
-        largest = std::max({largest, std::fabs(xy[0]), std::fabs(xy[1]), std::fabs(z0[0])});
+      store2(lx_at + 4 * static_cast<size_t>(v), xy);
+      store2(lx_at + 4 * static_cast<size_t>(v) + 2, z0);
+    };
+    // -L (L x), the anchors' term after (the same operations in the same
+    // order at each vertex).
+    auto residual_row = [&](auto degree_known, int32_t v) {
+      constexpr int32_t kDegree = decltype(degree_known)::value;
+      const int32_t first = offsets[v];
+      const int32_t degree = kDegree > 0 ? kDegree : offsets[v + 1] - first;
+      const double d = static_cast<double>(degree);
+      const double* own = lx_at + 4 * static_cast<size_t>(v);
+      v2d xy = d * load2(own), z0 = d * load2(own + 2);
+      for (int32_t e = first; e < first + degree; ++e) {
+        const double* u = lx_at + 4 * static_cast<size_t>(neighbors[e]);
+        xy -= load2(u);
+        z0 -= load2(u + 2);
       }
-      partial[b] = v4d{largest, 0.0, 0.0, 0.0};
-    });
+      store2(residual_at + 4 * static_cast<size_t>(v), -xy);
+      store2(residual_at + 4 * static_cast<size_t>(v) + 2, -z0);
+    };
+    team.run([&](int32_t, int32_t, int32_t b) { runs.visit(b, lx_row); });
+    team.run([&](int32_t, int32_t, int32_t b) { runs.visit(b, residual_row); });
   }
+  for (size_t i = 0; i < anchors_.size(); ++i) {
+    const int32_t v = anchors_[i];
+    double* at = reinterpret_cast<double*>(residual.data()) + 4 * static_cast<size_t>(v);
+    const double* c = &coefficients_[3 * i];
+    store2(at, load2(at) + w2 * (load2(c) - load2(x + 3 * static_cast<size_t>(v))));
+    store2(at + 2, load2(at + 2) + w2 * (v2d{c[2], 0.0} - v2d{x[3 * static_cast<size_t>(v) + 2], 0.0}));
+  }
+  team.run([&](int32_t begin, int32_t end, int32_t b) {
+    double largest = 0.0;
+    for (int32_t v = begin; v < end; ++v) {
+      const v4d& rv = residual[v];
+      largest = std::max({largest, std::fabs(rv[0]), std::fabs(rv[1]), std::fabs(rv[2])});
+    }
+    partial[b] = v4d{largest, 0.0, 0.0, 0.0};
+  });
   double largest = 0.0;
   for (int32_t b = 0; b < blocks; ++b) largest = std::max(largest, partial[b][0]);
   if (largest > 0.0 && std::isfinite(largest)) {
@@ -762,12 +777,7 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
     if (e < degree) even += in[around[e]];
     return static_cast<float>(degree) * in[v] - (even + odd);
   };
-  // The products by L row by row in groups of one degree (DegreeRuns).
-  DegreeRuns runs;
-  if (steps > 0) {
-    runs.resize(n_, kBlock);
-    team.run([&](int32_t begin, int32_t end, int32_t b) { runs.fill(*graph_, b, begin, end, [](int32_t) { return true; }); });
-  }
+
   // The correction the steps add to the shape, single precision like them;
   // x + correction / scale at the end, in double.
   std::vector<v4f> correction(n, v4f{0.0f, 0.0f, 0.0f, 0.0f});
