@@ -186,8 +186,22 @@ std::vector<int32_t> LevelMembers::next(const std::vector<int32_t>& sizes, size_
   std::vector<int32_t> level;
   if (k + 1 < sizes.size()) {
     level.assign(order_.begin() + start_, order_.begin() + start_ + sizes[k]);
-    for (int32_t v : level) picked_[v] = 1;
-    std::sort(level.begin(), level.end());
+    // In vertex order: a large level read off the rest (in vertex order)
+    // costs less than sorting it; a small one is sorted (a scan per level
+    // would cost a file of many small levels the rest's size each).
+    const size_t size = level.size();
+    if (size * 16 < rest_.size()) {
+      for (int32_t v : level) picked_[v] = 1;
+      std::sort(level.begin(), level.end());
+    } else {
+      for (int32_t v : level) picked_[v] = 2;
+      level.clear();
+      for (int32_t v : rest_) {
+        if (picked_[v] != 2) continue;
+        picked_[v] = 1;
+        level.push_back(v);
+      }
+    }
   } else {
     for (int32_t v : rest_) {
       if (!picked_[v]) level.push_back(v);

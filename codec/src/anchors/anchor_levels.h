@@ -135,8 +135,9 @@ class LevelPicks {
 // decoder split the anchors through this one rule.
 class LevelMembers {
  public:
-  // `order` and `rest` must outlive this object; `order` needs its picks
-  // only as far as next() reads them (LevelPicks fills it as it goes).
+  // `order` and `rest` (in increasing vertex order) must outlive this
+  // object; `order` needs its picks only as far as next() reads them
+  // (LevelPicks fills it as it goes).
   LevelMembers(const std::vector<int32_t>& order, const std::vector<int32_t>& rest, int32_t num_vertices);
   // Level k's anchors; call for k = 0, 1, ... in turn. Reads order's next
   // sizes[k] picks, or for the last level (every pick taken before it) none.
