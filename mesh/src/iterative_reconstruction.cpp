@@ -605,7 +605,6 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
     // beside the steps' own (the decode's peak).
     std::vector<float>().swap(from_);
     std::vector<float>().swap(to_);
-
   } else if (fresh) {
     shape_ = nearest_anchor_shape();
   }
@@ -668,14 +667,14 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
   // overflows nor underflows whatever the coordinates' magnitude, and the
   // scaling itself rounds nothing. The correction is divided by it at the end.
   double scale = 1.0;
-  // r = w^2 S c - (L^T L + w^2 S) x, in double (L x first, freed after),
-  // and per block its largest |entry| (a maximum is the same in any order).
-  // Each vertex's four doubles in two halves of two (x y, z 0): in
-  // registers on every x86-64, each lane rounding as with one vector of four.
   // The products by L row by row in groups of one degree (DegreeRuns).
   DegreeRuns runs;
   runs.resize(n_, kBlock);
   team.run([&](int32_t begin, int32_t end, int32_t b) { runs.fill(*graph_, b, begin, end, [](int32_t) { return true; }); });
+  // r = w^2 S c - (L^T L + w^2 S) x, in double (L x first, freed after),
+  // and per block its largest |entry| (a maximum is the same in any order).
+  // Each vertex's four doubles in two halves of two (x y, z 0): in
+  // registers on every x86-64, each lane rounding as with one vector of four.
   std::vector<v4d> residual(n);
   {
     std::vector<v4d> lx(n);
@@ -717,6 +716,7 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
     team.run([&](int32_t, int32_t, int32_t b) { runs.visit(b, lx_row); });
     team.run([&](int32_t, int32_t, int32_t b) { runs.visit(b, residual_row); });
   }
+  // + w^2 (c - x) at the anchors.
   for (size_t i = 0; i < anchors_.size(); ++i) {
     const int32_t v = anchors_[i];
     double* at = reinterpret_cast<double*>(residual.data()) + 4 * static_cast<size_t>(v);

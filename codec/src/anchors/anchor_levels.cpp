@@ -33,7 +33,7 @@ Status level_order(const EdgeGraph& graph, const std::vector<int32_t>& spread, c
                    int32_t count, std::vector<int32_t>* order) {
   LevelPicks picks;
   GAB_RETURN_IF_ERROR(picks.start(graph, spread, rest, {std::max(count, 0)}, false));
-  if (count > 0) picks.wait(0);
+  if (count > 0) picks.wait(0);  // all `count`: start() checked the rest suffices
   *order = picks.order();
   return Status::Ok();
 }
@@ -100,10 +100,8 @@ bool LevelPicks::pick_level(size_t level) {
   picks.reserve(static_cast<size_t>(levels_[level]));
   // Pieces, so that a stop is seen within one.
   while (begin + picks.size() < ends_[level] && !stopping_) {
-    const size_t before = picks.size();
     const size_t piece = std::min<size_t>(1024, ends_[level] - begin - picks.size());
     if (sampler_.next(static_cast<int32_t>(piece), &picks) == 0) break;  // start() checked the candidates suffice
-    if (picks.size() == before) break;
   }
   std::copy(picks.begin(), picks.end(), order_.begin() + static_cast<std::ptrdiff_t>(begin));
   return begin + picks.size() == ends_[level];
