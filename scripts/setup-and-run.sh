@@ -29,8 +29,14 @@ fi
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DGAB_BUILD_TESTS=ON
 cmake --build build -j2
 # The doors: libgab + gab.h for C, the gab module for python3 (README).
-cmake --install build --prefix "${GAB_PREFIX:-$HOME/.local}"
+prefix="${GAB_PREFIX:-$HOME/.local}"
+cmake --install build --prefix "$prefix"
 
 # The main job: compress the camel at several anchor counts, decode every
 # file again, print the table, write the meshes to gab-demo/.
 ./build/apps/gab demo
+
+# Last, where the user reads it: what to add to the shell so `gab` and
+# `import gab` find the install (nothing when they already do).
+site_dir="$(grep -m1 '^GAB_PYTHON_INSTALL_DIR:' build/CMakeCache.txt | cut -d= -f2 || true)"
+bash scripts/install-hints.sh "$prefix" "${site_dir:+$prefix/$site_dir}"

@@ -1,7 +1,8 @@
 /* A C99 program written against gab.h alone, as a product embeds gab: it
-   builds with find_package(gab) + gab::gab (tests/consumer/CMakeLists.txt)
-   and with a plain `cc -std=c99 main.c -lgab` against the installed prefix
-   (.ci/run). Round-trips a grid with a bump through the codec, solves a 1-D
+   builds with find_package(gab) + gab::gab (tests/consumer/CMakeLists.txt,
+   and tests/consumer_c from a C-only project), with a plain
+   `cc -std=c99 main.c -lgab` and with pkg-config against the installed
+   prefix (.ci/run). Round-trips a grid with a bump through the codec, solves a 1-D
    Laplacian and updates it; exits 0 only if all is right. */
 #include <math.h>
 #include <stdio.h>
