@@ -8,6 +8,7 @@
 
 #include "cli.h"
 #include "commands.h"
+#include "progress_line.h"
 #include "gab/codec/encoder.h"
 #include "gab/codec/gab_format.h"
 #include "gab/mesh/file_io.h"
@@ -26,7 +27,7 @@ int run_compress(int argc, char** argv) {
   Args args;
   if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--error", "--linf", "--bits", "--weight", "--batch-fraction", "--batch", "--chunk-growth",
                    "--initial", "--threads", "--layout", "--detail", "--ordering", "--solver", "--order-out"},
-                  {"--json", "--geometry-only", "--refine", "--reorder"})) {
+                  {"--json", "--geometry-only", "--refine", "--reorder", "--quiet"})) {
     return usage_error("compress", args.error());
   }
   if (!args.positionals().empty()) return usage_error("compress", "unexpected argument " + args.positionals()[0]);
@@ -106,16 +107,19 @@ int run_compress(int argc, char** argv) {
   Mesh mesh;
   Status status = read_mesh(in, &mesh);
   if (!status.ok()) return fail(status.message());
-  const bool tty = isatty(fileno(stderr)) != 0;
-  if (tty) {
-    options.progress = [](int32_t k, double rms) {
-      std::fprintf(stderr, "\rgab compress: %d anchors, rms %.3g of the diagonal   ", k, rms);
-    };
-  }
   std::vector<uint8_t> file;
   EncodeStats stats;
-  status = encode_mesh(std::move(mesh), options, &file, &stats);  // not read again here
-  if (tty) std::fprintf(stderr, "\n");
+  {
+    ProgressLine progress(args.has("--quiet"));
+    if (progress.on()) {
+      options.progress = [&progress](int32_t k, double rms) {
+        char text[96];
+        std::snprintf(text, sizeof text, "gab compress: %d anchors, rms %.3g of the diagonal", k, rms);
+        progress.show(text);
+      };
+    }
+    status = encode_mesh(std::move(mesh), options, &file, &stats);  // not read again here
+  }
   if (!status.ok()) return fail(in + ": " + status.message());
   status = write_output_file(out, std::string_view(reinterpret_cast<const char*>(file.data()), file.size()));
   if (!status.ok()) return fail(status.message());

@@ -1,8 +1,6 @@
 // gab decompress (its options: commands.cpp)
 // Decodes a .gab file (or its first K anchors: a coarser level of detail)
 // and writes the mesh (.obj .off .ply by extension), vertex order kept.
-#include <unistd.h>
-
 #include <cctype>
 #include <cstdint>
 #include <cstdio>
@@ -10,6 +8,7 @@
 
 #include "cli.h"
 #include "commands.h"
+#include "progress_line.h"
 #include "gab/codec/decoder.h"
 #include "gab/mesh/file_io.h"
 #include "gab/mesh/mesh_io.h"
@@ -47,7 +46,7 @@ bool parse_memory(const std::string& text, int64_t* bytes) {
 int run_decompress(int argc, char** argv) {
   Args args;
   if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--connectivity", "--threads", "--ordering", "--max-memory"},
-                  {"--json"})) {
+                  {"--json", "--quiet"})) {
     return usage_error("decompress", args.error());
   }
   if (!args.positionals().empty()) {
@@ -89,16 +88,17 @@ int run_decompress(int argc, char** argv) {
     if (!status.ok()) return fail(status.message());
     options.connectivity = &connectivity;
   }
-  const bool tty = isatty(fileno(stderr)) != 0;
-  if (tty) {
-    options.progress = [](int32_t chunk, int32_t chunks) {
-      std::fprintf(stderr, "\rgab decompress: chunk %d of %d   ", chunk + 1, chunks);
-    };
-  }
   Mesh mesh;
   DecodeStats stats;
-  status = decode_mesh(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size(), options, &mesh, &stats);
-  if (tty) std::fprintf(stderr, "\n");
+  {
+    ProgressLine progress(args.has("--quiet"));
+    if (progress.on()) {
+      options.progress = [&progress](int32_t chunk, int32_t chunks) {
+        progress.show("gab decompress: chunk " + std::to_string(chunk + 1) + " of " + std::to_string(chunks));
+      };
+    }
+    status = decode_mesh(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size(), options, &mesh, &stats);
+  }
   if (!status.ok()) return fail(in + ": " + status.message());
   status = write_mesh(out, mesh);
   if (!status.ok()) return fail(status.message());

@@ -10,7 +10,7 @@ const std::vector<Command>& commands() {
       {"compress", run_compress,
        {"-i IN -o OUT.gab [--anchors K | --error E | --linf E] [--bits Q] [--weight W]",
         "[--geometry-only | --reorder] [--detail auto|on|off] [--solver auto|global|iterative]",
-        "[--refine] [--order-out FILE] [--threads T] [--json]",
+        "[--refine] [--order-out FILE] [--threads T] [--json] [--quiet]",
         "(tuning: --batch-fraction F --chunk-growth G --initial K --layout smaller|levels|selection",
         "         --ordering auto|amd|nd)"},
        "compress a mesh's geometry with geometry-aware anchors (default --error 0.001: relative\n"
@@ -28,7 +28,7 @@ const std::vector<Command>& commands() {
        "nested dissection from 100k vertices)"},
       {"decompress", run_decompress,
        {"-i IN.gab -o OUT [--anchors K] [--connectivity MESH] [--threads T] [--ordering auto|amd|nd]",
-        "[--max-memory SIZE] [--json]"},
+        "[--max-memory SIZE] [--json] [--quiet]"},
        "decode a .gab file (its first K anchors only: a coarser level of detail); --ordering auto\n"
        "uses the file's; --max-memory bounds the decode's memory (bytes, or with K, M, G; 'none';\n"
        "default: 32 KiB per byte of the file, at least 64 MiB)"},

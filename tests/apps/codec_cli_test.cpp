@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -113,6 +114,53 @@ TEST(CodecCliTest, CompressDecompressInfoRoundTrip) {
   EXPECT_EQ(json_number(i.out, "reconstruction"), 3);  // the iterative operator, the default
   EXPECT_NE(i.out.find("\"solver\": \"iterative\""), std::string::npos) << i.out;
   EXPECT_EQ(json_number(i.out, "sections"), 0);
+}
+
+// `gab ARGS` on a pseudo-terminal (util-linux's script): what the terminal
+// shows, stdout and stderr together.
+std::string on_terminal(const std::string& args, int delay_ms) {
+  const std::string cmd = "GAB_PROGRESS_DELAY_MS=" + std::to_string(delay_ms) + " script -qec '" +
+                          std::string(GAB_BINARY) + " " + args + "' /dev/null";
+  std::string shown;
+  FILE* p = popen(cmd.c_str(), "r");
+  if (p == nullptr) return shown;
+  char buf[4096];
+  size_t got;
+  while ((got = fread(buf, 1, sizeof(buf), p)) > 0) shown.append(buf, got);
+  pclose(p);
+  return shown;
+}
+
+TEST(CodecCliTest, ProgressLineOnATerminalOnceTheWorkRunsLongAndQuietSilencesIt) {
+  if (std::system("command -v script >/dev/null 2>&1") != 0) {
+    GTEST_SKIP() << "util-linux's script (a pseudo-terminal) is not installed";
+  }
+  const std::string in = write_scratch_file("progress.off", torus_off(40, 20));
+  const std::string gab = write_scratch_file("progress.gab", "");
+  const std::string out = write_scratch_file("progress.ply", "");
+  // No delay: the line shows (rewritten in place, ended by a newline).
+  const std::string compress = "compress -i " + in + " -o " + gab;
+  std::string shown = on_terminal(compress, 0);
+  EXPECT_NE(shown.find("\rgab compress: "), std::string::npos) << shown;
+  EXPECT_NE(shown.find(" of the diagonal"), std::string::npos) << shown;
+  shown = on_terminal("decompress -i " + gab + " -o " + out, 0);
+  EXPECT_NE(shown.find("\rgab decompress: chunk 1 of "), std::string::npos) << shown;
+  // Work shorter than the delay, --quiet, or stderr not a terminal: none
+  // (the terminal ends lines with \r\n: the progress texts are looked for).
+  auto has_progress = [](const std::string& text) {
+    return text.find("anchors, rms") != std::string::npos || text.find("decompress: chunk") != std::string::npos;
+  };
+  for (const std::string& args : {compress, "decompress -i " + gab + " -o " + out}) {
+    shown = on_terminal(args, 600000);
+    EXPECT_FALSE(has_progress(shown)) << shown;
+    EXPECT_NE(shown.find(" -> "), std::string::npos) << shown;  // the result shows
+    shown = on_terminal(args + " --quiet", 0);
+    EXPECT_FALSE(has_progress(shown)) << shown;
+    EXPECT_NE(shown.find(" -> "), std::string::npos) << shown;
+    const CommandResult r = run_gab(args, "GAB_PROGRESS_DELAY_MS=0");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_FALSE(has_progress(r.err)) << r.err;
+  }
 }
 
 TEST(CodecCliTest, ReorderDropsTheVertexOrderAndSaysSo) {
