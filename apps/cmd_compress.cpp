@@ -119,6 +119,7 @@ int run_compress(int argc, char** argv) {
       };
     }
     status = encode_mesh(std::move(mesh), options, &file, &stats);  // not read again here
+    options.progress = nullptr;  // it refers to `progress`, which ends here
   }
   if (!status.ok()) return fail(in + ": " + status.message());
   status = write_output_file(out, std::string_view(reinterpret_cast<const char*>(file.data()), file.size()));

@@ -98,6 +98,7 @@ int run_decompress(int argc, char** argv) {
       };
     }
     status = decode_mesh(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size(), options, &mesh, &stats);
+    options.progress = nullptr;  // it refers to `progress`, which ends here
   }
   if (!status.ok()) return fail(in + ": " + status.message());
   status = write_mesh(out, mesh);
