@@ -51,6 +51,14 @@ class DegreeRuns {
     }
   }
 
+  // Vertex v's degree (offsets: the graph's), a constant when `known`
+  // (visit's first argument) carries it, read when it is 0.
+  template <class Known>
+  static int32_t degree(Known known, const int32_t* offsets, int32_t v) {
+    constexpr int32_t kKnown = decltype(known)::value;
+    return kKnown > 0 ? kKnown : offsets[v + 1] - offsets[v];
+  }
+
   // row(std::integral_constant<int32_t, D>(), v) for block b's vertices of
   // degree D = kLowest..kHighest, then row(std::integral_constant<int32_t,
   // 0>(), v) for the others.

@@ -684,9 +684,8 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
     auto z0_of = [x](int32_t v) { return v2d{x[3 * static_cast<size_t>(v) + 2], 0.0}; };
     // Degree: v's when known here, 0 when not.
     auto lx_row = [&](auto degree_known, int32_t v) {
-      constexpr int32_t kDegree = decltype(degree_known)::value;
       const int32_t first = offsets[v];
-      const int32_t degree = kDegree > 0 ? kDegree : offsets[v + 1] - first;
+      const int32_t degree = DegreeRuns::degree(degree_known, offsets, v);
       const double d = static_cast<double>(degree);
       v2d xy = d * xy_of(v), z0 = d * z0_of(v);
       for (int32_t e = first; e < first + degree; ++e) {
@@ -699,9 +698,8 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
     // -L (L x), the anchors' term after (the same operations in the same
     // order at each vertex).
     auto residual_row = [&](auto degree_known, int32_t v) {
-      constexpr int32_t kDegree = decltype(degree_known)::value;
       const int32_t first = offsets[v];
-      const int32_t degree = kDegree > 0 ? kDegree : offsets[v + 1] - first;
+      const int32_t degree = DegreeRuns::degree(degree_known, offsets, v);
       const double d = static_cast<double>(degree);
       const double* own = lx_at + 4 * static_cast<size_t>(v);
       v2d xy = d * load2(own), z0 = d * load2(own + 2);
@@ -764,9 +762,8 @@ Status IterativeReconstruction::solve(int32_t steps, std::vector<double>* positi
   // which halves the wait on the additions.
   // Degree: v's when known here (DegreeRuns), 0 when not.
   auto laplacian_row = [offsets, neighbors](const v4f* in, int32_t v, auto degree_known) {
-    constexpr int32_t kDegree = decltype(degree_known)::value;
     const int32_t first = offsets[v];
-    const int32_t degree = kDegree > 0 ? kDegree : offsets[v + 1] - first;
+    const int32_t degree = DegreeRuns::degree(degree_known, offsets, v);
     const int32_t* around = neighbors + first;
     v4f even = {0.0f, 0.0f, 0.0f, 0.0f}, odd = even;
     int32_t e = 0;
