@@ -7,11 +7,14 @@
 //   level=L         stop at level L (the first L + 1 chunks), as if the
 //                   file ended there
 //   compact=1       a one-line panel (level, anchors, bytes), for pictures
+//   up=AXIS         the file's axis shown up: x, y, z, -x, -y or -z (default
+//                   +Y, or +Z when the view is along Y; the U key cycles)
 //
 // For scripts: once the last level is shown, document.title is
 // "gab: done n=<vertices> anchors=<anchors>"; on a bad file (decoder or HTTP
 // error) it is "gab: error: <message>". Every level shown is a list item
-// with data-level, data-anchors, data-bytes, data-total and data-decode-ms.
+// with data-level, data-anchors, data-bytes, data-total and data-decode-ms;
+// the canvas's data-view is the first view, {"toCamera": [x, y, z], "up": AXIS}.
 'use strict';
 
 (function () {
@@ -302,6 +305,8 @@
       if (positions.length === 0) { lo.fill(0); hi.fill(1); }
       center = [0, 1, 2].map((c) => 0.5 * (lo[c] + hi[c]));
       radius = 0.5 * Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) || 1;
+      axes = principalAxes(positions, indices);
+      homeView();
       fitted = true;
     }
     gl.bindBuffer(gl.ARRAY_BUFFER, positionBuffer);
@@ -345,7 +350,122 @@
   let orientation = multiply(rotation([1, 0, 0], 0.25), rotation([0, 1, 0], -0.45));
   let zoom = 1;  // distance over the fitting distance
 
-  function fitView() { zoom = 1; draw(); }
+  // ---- the first view: from the principal axes ---------------------------
+  //
+  // The camera looks along the surface's axis of least spread (the smallest
+  // eigenvalue's eigenvector of its area-weighted covariance), so it sees
+  // the widest silhouette: a horse from the side, a face from the front,
+  // never a flat or long shape edge-on or from above. A file says nothing of
+  // which way is up: the file's +Y is (OBJ's and glTF's convention), or +Z
+  // where +Y is within 45 degrees of the view; `up=AXIS` in the URL (x, y, z,
+  // -x, -y, -z) or the U key (the next axis) chooses another.
+
+  // The surface's principal axes, the largest spread first: eigenvectors of
+  // its covariance, each triangle's second moment taken exactly (area / 12 *
+  // (aa' + bb' + cc' + ss'), s = a + b + c), so uneven sampling does not pull
+  // them. Cyclic Jacobi rotations on the 3 x 3 matrix.
+  function principalAxes(positions, indices) {
+    let area = 0;
+    const mean = [0, 0, 0], second = [0, 0, 0, 0, 0, 0];  // xx yy zz xy xz yz
+    const a = [0, 0, 0], b = [0, 0, 0], c = [0, 0, 0], sum = [0, 0, 0];
+    for (let k = 0; k + 2 < indices.length; k += 3) {
+      for (let d = 0; d < 3; ++d) {
+        a[d] = positions[3 * indices[k] + d] - center[d];
+        b[d] = positions[3 * indices[k + 1] + d] - center[d];
+        c[d] = positions[3 * indices[k + 2] + d] - center[d];
+        sum[d] = a[d] + b[d] + c[d];
+      }
+      const ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
+      const vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
+      const w = 0.5 * Math.hypot(uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx);
+      area += w;
+      for (let d = 0; d < 3; ++d) mean[d] += w * sum[d] / 3;
+      for (const p of [a, b, c, sum]) {
+        second[0] += w / 12 * p[0] * p[0];
+        second[1] += w / 12 * p[1] * p[1];
+        second[2] += w / 12 * p[2] * p[2];
+        second[3] += w / 12 * p[0] * p[1];
+        second[4] += w / 12 * p[0] * p[2];
+        second[5] += w / 12 * p[1] * p[2];
+      }
+    }
+    if (!(area > 0)) return [[1, 0, 0], [0, 1, 0], [0, 0, 1]];
+    const m = mean.map((v) => v / area);
+    const A = [
+      [second[0] / area - m[0] * m[0], second[3] / area - m[0] * m[1], second[4] / area - m[0] * m[2]],
+      [second[3] / area - m[0] * m[1], second[1] / area - m[1] * m[1], second[5] / area - m[1] * m[2]],
+      [second[4] / area - m[0] * m[2], second[5] / area - m[1] * m[2], second[2] / area - m[2] * m[2]]];
+    const V = [[1, 0, 0], [0, 1, 0], [0, 0, 1]];  // columns: the eigenvectors
+    for (let sweep = 0; sweep < 50; ++sweep) {
+      const off = Math.abs(A[0][1]) + Math.abs(A[0][2]) + Math.abs(A[1][2]);
+      if (off <= 1e-15 * (Math.abs(A[0][0]) + Math.abs(A[1][1]) + Math.abs(A[2][2]))) break;
+      for (const [p, q] of [[0, 1], [0, 2], [1, 2]]) {
+        if (A[p][q] === 0) continue;
+        // The rotation that zeroes A[p][q] (Golub & Van Loan, the symmetric Schur decomposition).
+        const theta = (A[q][q] - A[p][p]) / (2 * A[p][q]);
+        const t = Math.sign(theta || 1) / (Math.abs(theta) + Math.sqrt(theta * theta + 1));
+        const cs = 1 / Math.sqrt(t * t + 1), sn = t * cs;
+        for (let k = 0; k < 3; ++k) {  // A J
+          const akp = A[k][p], akq = A[k][q];
+          A[k][p] = cs * akp - sn * akq;
+          A[k][q] = sn * akp + cs * akq;
+        }
+        for (let k = 0; k < 3; ++k) {  // J' A
+          const apk = A[p][k], aqk = A[q][k];
+          A[p][k] = cs * apk - sn * aqk;
+          A[q][k] = sn * apk + cs * aqk;
+        }
+        for (let k = 0; k < 3; ++k) {
+          const vkp = V[k][p], vkq = V[k][q];
+          V[k][p] = cs * vkp - sn * vkq;
+          V[k][q] = sn * vkp + cs * vkq;
+        }
+      }
+    }
+    return [0, 1, 2].sort((i, j) => A[j][j] - A[i][i]).map((i) => [V[0][i], V[1][i], V[2][i]]);
+  }
+
+  const upAxes = ['y', 'z', 'x', '-y', '-z', '-x'];
+  function axisVector(name) {
+    const v = [0, 0, 0];
+    v['xyz'.indexOf(name[name.length - 1])] = name[0] === '-' ? -1 : 1;
+    return v;
+  }
+  const dot = (u, v) => u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+  const cross = (u, v) => [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
+  const unit = (v) => { const l = Math.hypot(v[0], v[1], v[2]) || 1; return v.map((x) => x / l); };
+
+  let axes = [[1, 0, 0], [0, 1, 0], [0, 0, 1]];  // principal, the largest spread first
+  let upAxis = params.get('up');
+  if (upAxis !== null && !upAxes.includes(upAxis)) {
+    errorEl.textContent = 'up=' + upAxis + ' is not one of ' + upAxes.join(', ') + ': the default up is used';
+    upAxis = null;
+  }
+
+  // The view along the thinnest axis with upAxis (or the default) up; zoom
+  // fits the bounding sphere. The camera sits on the side of the axis that
+  // faces the file's +X, +Y or +Z (whichever it is nearest), as an
+  // unrotated view faces +Z. An up along the thinnest axis itself takes the
+  // middle axis as the view instead.
+  function homeView() {
+    const up = upAxis !== null ? upAxis : Math.abs(axes[2][1]) > Math.SQRT1_2 ? 'z' : 'y';
+    const upWorld = axisVector(up);
+    let toCamera = Math.abs(dot(upWorld, axes[2])) > 0.99 ? axes[1].slice() : axes[2].slice();
+    const size = toCamera.map(Math.abs);
+    if (toCamera[size.indexOf(Math.max(...size))] < 0) toCamera = toCamera.map((x) => -x);
+    const upVector = unit(upWorld.map((x, k) => x - dot(upWorld, toCamera) * toCamera[k]));
+    const right = unit(cross(upVector, toCamera));
+    // Rows right, up, toCamera: world to camera (which looks down its -Z).
+    orientation = new Float32Array([
+      right[0], upVector[0], toCamera[0], 0,
+      right[1], upVector[1], toCamera[1], 0,
+      right[2], upVector[2], toCamera[2], 0,
+      0, 0, 0, 1]);
+    zoom = 1;
+    canvas.dataset.view = JSON.stringify({ toCamera: toCamera.map((x) => +x.toFixed(4)), up: up });
+  }
+
+  function fitView() { homeView(); draw(); }
 
   function resize() {
     const ratio = window.devicePixelRatio || 1;
@@ -436,6 +556,12 @@
     redraw();
   }, { passive: false });
   canvas.addEventListener('dblclick', fitView);
+  window.addEventListener('keydown', (e) => {
+    if ((e.key !== 'u' && e.key !== 'U') || e.ctrlKey || e.metaKey || e.altKey) return;
+    const current = upAxis !== null ? upAxis : JSON.parse(canvas.dataset.view || '{"up":"y"}').up;
+    upAxis = upAxes[(upAxes.indexOf(current) + 1) % upAxes.length];
+    fitView();
+  });
   window.addEventListener('resize', redraw);
 
   // ---- start -------------------------------------------------------------

@@ -8,6 +8,9 @@ Checks, each by the title the page sets (web/viewer.js) and its level list:
   * served one frame at a time (a throttled stream), the first level is
     shown before the whole file has arrived, and later levels refine it;
   * ?level=0 stops at the coarsest level;
+  * the first view looks along the decoded surface's axis of least spread
+    (the viewer's principal axes against the test's own), +Y up; ?up=z
+    turns +Z up;
   * a file with a corrupted chunk, one with a corrupted header and a
     missing file end at "gab: error: ..." with the decoder's (or HTTP's) message.
 
@@ -239,6 +242,56 @@ class Browser:
             f.write(base64.b64decode(data))
 
 
+def read_off(path):
+    """Vertices and triangles of an OFF file as gab writes it."""
+    with open(path) as f:
+        words = f.read().split()
+    at = 1 if words[0] == "OFF" else 0
+    n, t = int(words[at]), int(words[at + 1])
+    at += 3
+    vertices = [tuple(float(w) for w in words[at + 3 * i:at + 3 * i + 3]) for i in range(n)]
+    at += 3 * n
+    triangles = []
+    for _ in range(t):
+        count = int(words[at])
+        triangles.append(tuple(int(w) for w in words[at + 1:at + 1 + count][:3]))
+        at += 1 + count
+    return vertices, triangles
+
+
+def thinnest_axis(vertices, triangles):
+    """The unit eigenvector of the smallest eigenvalue of the surface's
+    covariance (each triangle by its area at its centroid: an oracle
+    independent of the viewer's exact second moments and Jacobi rotations),
+    by power iteration on trace(C) I - C."""
+    area, mean, cov = 0.0, [0.0] * 3, [[0.0] * 3 for _ in range(3)]
+    cents = []
+    for a, b, c in triangles:
+        p, q, r = vertices[a], vertices[b], vertices[c]
+        u = [q[k] - p[k] for k in range(3)]
+        v = [r[k] - p[k] for k in range(3)]
+        w = 0.5 * sum(x * x for x in (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                                       u[0] * v[1] - u[1] * v[0])) ** 0.5
+        g = [(p[k] + q[k] + r[k]) / 3 for k in range(3)]
+        cents.append((w, g))
+        area += w
+        for k in range(3):
+            mean[k] += w * g[k]
+    mean = [m / area for m in mean]
+    for w, g in cents:
+        d = [g[k] - mean[k] for k in range(3)]
+        for i in range(3):
+            for j in range(3):
+                cov[i][j] += w * d[i] * d[j] / area
+    trace = cov[0][0] + cov[1][1] + cov[2][2]
+    x = [0.3, 0.5, 0.8]
+    for _ in range(500):
+        y = [trace * x[i] - sum(cov[i][j] * x[j] for j in range(3)) for i in range(3)]
+        norm = sum(v * v for v in y) ** 0.5
+        x = [v / norm for v in y]
+    return x
+
+
 def corrupt_copy(data, offset):
     out = bytearray(data)
     out[offset] ^= 0x5A
@@ -313,6 +366,13 @@ def main():
             if levels:
                 log("browser decode of the whole file: %s ms (native, one thread: %.1f ms)" %
                     (levels[-1]["decodeMs"], 1e3 * decode["decode_s"]))
+            view = json.loads(browser.evaluate("document.getElementById('view').dataset.view || '{}'") or "{}")
+            axis = thinnest_axis(*read_off(os.path.join(work, "decoded.off")))
+            to_camera = view.get("toCamera", [0, 0, 0])
+            along = abs(sum(a * b for a, b in zip(axis, to_camera)))
+            check("first view: along the axis of least spread, +Y up (%s; the oracle's axis %s)" %
+                  (view, [round(a, 3) for a in axis]), along > 0.98 and view.get("up") == "y",
+                  "|cos| = %.3f between the view and the axis" % along)
             shot = os.path.join(work, "viewer.png")
             browser.screenshot(shot)
             log("screenshot: %s (%d bytes)" % (shot, os.path.getsize(shot)))
@@ -326,6 +386,14 @@ def main():
             log("throttled stream: %d levels shown, at %s of %d bytes, decoded in %s ms" %
                 (len(levels), ", ".join(level["bytes"] for level in levels), len(data),
                  ", ".join(level["decodeMs"] for level in levels)))
+
+            title, _ = browser.load(base + "mesh.gab&up=z")
+            view = json.loads(browser.evaluate("document.getElementById('view').dataset.view || '{}'") or "{}")
+            to_camera = view.get("toCamera", [0, 0, 1])
+            check("up=z: +Z up, the view across it (%s)" % view,
+                  view.get("up") == "z" and abs(to_camera[2]) < 0.5, "expected up z and a view across Z")
+            shot_up = os.path.join(work, "viewer-up-z.png")
+            browser.screenshot(shot_up)
 
             title, levels = browser.load(base + "mesh.gab&level=0")
             level0 = levels[-1]["anchors"] if levels else "?"
