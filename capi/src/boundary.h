@@ -98,5 +98,8 @@ Status export_mesh(const Mesh& mesh, double** positions, int32_t* n, int32_t** t
 // Bytes into a malloc'd array the caller frees with gab_free.
 Status export_bytes(const std::vector<uint8_t>& bytes, unsigned char** out, size_t* out_size);
 
+// Indices into a malloc'd array the caller frees with gab_free.
+Status export_indices(const std::vector<int32_t>& indices, int32_t** out);
+
 }  // namespace capi
 }  // namespace gab

@@ -1,6 +1,8 @@
-// gab_compress, gab_compress_ex, gab_compress_options_init: the encoder
-// (gab/codec/encoder.h) behind the C door.
+// gab_compress, gab_compress_ex, gab_compress_with_report and the options'
+// and report's init: the encoder (gab/codec/encoder.h) behind the C door.
+#include <algorithm>
 #include <cstddef>
+#include <cstdlib>
 #include <cstring>
 
 #include "boundary.h"
@@ -62,14 +64,62 @@ Status read_options(const gab_compress_options* in, EncodeOptions* out) {
   return Status::Ok();
 }
 
+// The report of an encode, as gab.h describes it; `order` still to set.
+gab_compress_report report_of(const EncodeStats& stats, double weight) {
+  gab_compress_report r;
+  std::memset(&r, 0, sizeof r);
+  r.size = sizeof r;
+  r.n = stats.num_vertices;
+  r.faces = stats.num_triangles;
+  r.anchors = stats.anchors;
+  r.chunks = stats.chunks;
+  r.bits = stats.bits;
+  r.solver = code_of_solver(stats.solver);
+  r.ordering = code_of_ordering(stats.ordering);
+  r.target_met = stats.target_met;
+  r.reordered = stats.reordered;
+  r.detail = stats.detail;
+  r.refined = stats.refined;
+  r.levels = stats.levels;
+  r.bytes = stats.bytes;
+  r.geometry_bytes = stats.geometry_bytes;
+  r.connectivity_bytes = stats.connectivity_bytes;
+  r.order_bytes = stats.order_bytes;
+  r.detail_bytes = stats.detail_bytes;
+  r.refinement_bytes = stats.refinement_bytes;
+  r.rms_rel = stats.rms_rel;
+  r.linf_rel = stats.linf_rel;
+  r.anchor_rms_rel = stats.detail ? stats.anchor_rms_rel : stats.rms_rel;
+  r.unrefined_rms_rel = stats.unrefined_rms_rel;
+  r.detail_step_rel = stats.detail_step_rel;
+  r.bpv_geometry = 8.0 * static_cast<double>(stats.geometry_bytes) / stats.num_vertices;
+  r.weight = weight;
+  r.encode_s = stats.encode_s;
+  return r;
+}
+
+// The bytes of the caller's report this library writes: its size, at most
+// what this library knows (gab.h's rule for an out struct).
+size_t report_bytes(const gab_compress_report* report) { return std::min(report->size, sizeof(gab_compress_report)); }
+
+// Zeroes what the library writes of the caller's report but its size field.
+void clear_report(gab_compress_report* report) {
+  if (report == nullptr || report->size < sizeof(size_t)) return;
+  std::memset(reinterpret_cast<unsigned char*>(report) + sizeof(size_t), 0, report_bytes(report) - sizeof(size_t));
+}
+
 int compress(const char* function, const double* positions, int32_t n, const int32_t* triangles, int32_t t,
              const EncodeOptions* fixed, const gab_compress_options* options, unsigned char** out,
-             size_t* out_size, char* message, size_t message_size) {
+             size_t* out_size, gab_compress_report* report, char* message, size_t message_size) {
+  clear_report(report);
   return guarded(function, message, message_size, [&]() -> Status {
     if (out != nullptr) *out = nullptr;
     if (out_size != nullptr) *out_size = 0;
     GAB_RETURN_IF_ERROR(require(out != nullptr, "out is NULL"));
     GAB_RETURN_IF_ERROR(require(out_size != nullptr, "out_size is NULL"));
+    GAB_RETURN_IF_ERROR(require(report == nullptr || report->size >= sizeof(size_t),
+                                "report->size is " + std::to_string(report != nullptr ? report->size : 0) +
+                                    ": set it with gab_compress_report_init"));
     Mesh mesh;
     GAB_RETURN_IF_ERROR(import_mesh(positions, n, triangles, t, &mesh));
     EncodeOptions encode_options;
@@ -81,7 +131,19 @@ int compress(const char* function, const double* positions, int32_t n, const int
     std::vector<uint8_t> file;
     EncodeStats stats;
     GAB_RETURN_IF_ERROR(encode_mesh(mesh, encode_options, &file, &stats));
-    return export_bytes(file, out, out_size);
+    if (report == nullptr) return export_bytes(file, out, out_size);
+    gab_compress_report r = report_of(stats, encode_options.weight);
+    const size_t written = report_bytes(report);
+    const bool has_order = offsetof(gab_compress_report, order) + sizeof r.order <= written;
+    if (stats.reordered && has_order) GAB_RETURN_IF_ERROR(export_indices(stats.new_index, &r.order));
+    const Status exported = export_bytes(file, out, out_size);
+    if (!exported.ok()) {
+      std::free(r.order);
+      return exported;
+    }
+    r.size = written;
+    std::memcpy(static_cast<void*>(report), &r, written);
+    return Status::Ok();
   });
 }
 
@@ -99,11 +161,24 @@ extern "C" void gab_compress_options_init(gab_compress_options* options, size_t 
   gab::capi::init_options(o, options, size);
 }
 
+extern "C" void gab_compress_report_init(gab_compress_report* report, size_t size) {
+  gab_compress_report r;
+  std::memset(&r, 0, sizeof r);
+  gab::capi::init_options(r, report, size);
+}
+
 extern "C" int gab_compress_ex(const double* positions, int32_t n, const int32_t* triangles, int32_t t,
                                const gab_compress_options* options, unsigned char** out, size_t* out_size,
                                char* message, size_t message_size) {
-  return gab::capi::compress("gab_compress_ex", positions, n, triangles, t, nullptr, options, out, out_size, message,
-                             message_size);
+  return gab::capi::compress("gab_compress_ex", positions, n, triangles, t, nullptr, options, out, out_size, nullptr,
+                             message, message_size);
+}
+
+extern "C" int gab_compress_with_report(const double* positions, int32_t n, const int32_t* triangles, int32_t t,
+                                        const gab_compress_options* options, unsigned char** out, size_t* out_size,
+                                        gab_compress_report* report, char* message, size_t message_size) {
+  return gab::capi::compress("gab_compress_with_report", positions, n, triangles, t, nullptr, options, out, out_size,
+                             report, message, message_size);
 }
 
 extern "C" int gab_compress(const double* positions, int32_t n, const int32_t* triangles, int32_t t,
@@ -112,6 +187,6 @@ extern "C" int gab_compress(const double* positions, int32_t n, const int32_t* t
   // The target as given: 0 is not "the default" here but a missing rule (the encoder says so).
   gab::EncodeOptions options;
   options.target_rms_rel = target_rms_rel;
-  return gab::capi::compress("gab_compress", positions, n, triangles, t, &options, nullptr, out, out_size, message,
-                             message_size);
+  return gab::capi::compress("gab_compress", positions, n, triangles, t, &options, nullptr, out, out_size, nullptr,
+                             message, message_size);
 }

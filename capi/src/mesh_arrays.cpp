@@ -66,5 +66,9 @@ Status export_bytes(const std::vector<uint8_t>& bytes, unsigned char** out, size
   return Status::Ok();
 }
 
+Status export_indices(const std::vector<int32_t>& indices, int32_t** out) {
+  return malloc_copy(indices.data(), indices.size(), out);
+}
+
 }  // namespace capi
 }  // namespace gab

@@ -51,23 +51,31 @@ bool ordering_of_code(int32_t code, Ordering* ordering) {
   return false;
 }
 
+int32_t code_of_ordering(Ordering ordering) {
+  for (const OrderingCode& row : kCodes) {
+    if (row.ordering == ordering) return row.code;
+  }
+  return -1;
+}
+
+int32_t code_of_solver(Solver solver) {
+  for (const SolverCode& row : kSolverCodes) {
+    if (row.solver == solver) return row.code;
+  }
+  return -1;
+}
+
 }  // namespace capi
 }  // namespace gab
 
 extern "C" int gab_ordering_from_name(const char* name) {
   gab::Ordering ordering;
   if (name == nullptr || !gab::parse_ordering(name, &ordering) || !gab::codec_takes_ordering(ordering)) return -1;
-  for (const gab::capi::OrderingCode& row : gab::capi::kCodes) {
-    if (row.ordering == ordering) return row.code;
-  }
-  return -1;
+  return gab::capi::code_of_ordering(ordering);
 }
 
 extern "C" int gab_solver_from_name(const char* name) {
   gab::Solver solver;
   if (name == nullptr || !gab::parse_solver(name, &solver)) return -1;
-  for (const gab::capi::SolverCode& row : gab::capi::kSolverCodes) {
-    if (row.solver == solver) return row.code;
-  }
-  return -1;
+  return gab::capi::code_of_solver(solver);
 }

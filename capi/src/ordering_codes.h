@@ -14,6 +14,10 @@ namespace capi {
 bool ordering_of_code(int32_t code, Ordering* ordering);
 // The Solver a GAB_SOLVER_* code stands for; false for any other value.
 bool solver_of_code(int32_t code, Solver* solver);
+// The GAB_ORDERING_* code of an ordering the codec takes, the GAB_SOLVER_*
+// code of a solver; -1 for one the C door has no code for.
+int32_t code_of_ordering(Ordering ordering);
+int32_t code_of_solver(Solver solver);
 
 }  // namespace capi
 }  // namespace gab

@@ -4,6 +4,7 @@
 #include "capi/capi_scenarios.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "gab/gab.h"
@@ -82,6 +83,46 @@ int capi_compress_anchors(const double* positions, int32_t n, const int32_t* tri
   options.threads = threads;
   options.detail = GAB_DETAIL_OFF;
   return gab_compress_ex(positions, n, triangles, t, &options, file, size, message, message_size);
+}
+
+int capi_compress_reordered(const double* positions, int32_t n, const int32_t* triangles, int32_t t, double target,
+                            double* mapped_rms_rel, double* reported_rms_rel, char* message, size_t message_size) {
+  gab_compress_options options;
+  gab_compress_report report;
+  unsigned char* file = NULL;
+  size_t size = 0;
+  double* decoded = NULL;
+  double* mapped = NULL;
+  int32_t* decoded_triangles = NULL;
+  int32_t decoded_n = 0, decoded_t = 0, v;
+  int c, code;
+  gab_compress_options_init(&options, sizeof options);
+  options.target_rms_rel = target;
+  options.reorder = 1;
+  gab_compress_report_init(&report, sizeof report);
+  code = gab_compress_with_report(positions, n, triangles, t, &options, &file, &size, &report, message, message_size);
+  if (code != GAB_OK) return code;
+  *reported_rms_rel = report.rms_rel;
+  if (report.size != sizeof report || report.order == NULL || report.bytes != size || report.n != n) {
+    code = GAB_E_INTERNAL;
+  } else {
+    code = gab_decompress(file, size, -1, &decoded, &decoded_n, &decoded_triangles, &decoded_t, message,
+                          message_size);
+  }
+  if (code == GAB_OK && decoded_n == n && (mapped = (double*)malloc(3 * (size_t)n * sizeof *mapped)) != NULL) {
+    for (v = 0; v < n; ++v) {
+      for (c = 0; c < 3; ++c) mapped[3 * (size_t)v + c] = decoded[3 * (size_t)report.order[v] + c];
+    }
+    *mapped_rms_rel = relative_rms(positions, mapped, n);
+  } else if (code == GAB_OK) {
+    code = GAB_E_INTERNAL;
+  }
+  free(mapped);
+  gab_free(decoded);
+  gab_free(decoded_triangles);
+  gab_free(report.order);
+  gab_free(file);
+  return code;
 }
 
 int capi_read_mesh(const char* path, capi_mesh* mesh, char* message, size_t message_size) {

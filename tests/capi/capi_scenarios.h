@@ -45,6 +45,15 @@ int capi_compress_anchors(const double* positions, int32_t n, const int32_t* tri
                           int32_t anchors, int32_t bits, int32_t threads, unsigned char** file, size_t* size,
                           char* message, size_t message_size);
 
+/* gab_compress_with_report with `reorder` set at `target`, then
+   gab_decompress, the decoded mesh read through the report's map (decoded
+   vertex order[i] for input vertex i): its vertex RMS over the input's
+   diagonal in *mapped_rms_rel, the report's in *reported_rms_rel. The
+   first failing call's code (GAB_E_INTERNAL when the report's size or map
+   is not as gab.h says). */
+int capi_compress_reordered(const double* positions, int32_t n, const int32_t* triangles, int32_t t, double target,
+                            double* mapped_rms_rel, double* reported_rms_rel, char* message, size_t message_size);
+
 /* gab_read_mesh of `path`. */
 int capi_read_mesh(const char* path, capi_mesh* mesh, char* message, size_t message_size);
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <random>
@@ -286,6 +287,162 @@ TEST(CapiTest, OptionsStructIsReadUpToItsSize) {
   gab_compress_options_init(&o, 4);  // not even the size field: nothing written
   o.size = 4;
   EXPECT_EQ(compress(&o, nullptr).message, "gab_compress_ex: options->size is 4: set it with gab_compress_options_init");
+}
+
+// gab_compress_with_report: the CLI's compress figures (EncodeStats, as
+// `gab compress --json` prints them) and, with reorder, the map onto the
+// decoded mesh's numbering.
+TEST(CapiTest, CompressReportCarriesTheCliFiguresAndTheMap) {
+  const Mesh mesh = bumpy_torus(40, 30);
+  const int32_t n = mesh.num_vertices(), t = mesh.num_triangles();
+  char message[256];
+  auto compress = [&](const gab_compress_options* o, gab_compress_report* r, std::vector<uint8_t>* bytes) {
+    unsigned char* file = nullptr;
+    size_t size = 0;
+    const int code = gab_compress_with_report(mesh.positions.data(), n, mesh.triangles.data(), t, o, &file, &size, r,
+                                              message, sizeof message);
+    if (bytes) bytes->assign(file, file + size);
+    gab_free(file);
+    return Outcome{code, message};
+  };
+  gab_compress_options o;
+  gab_compress_options_init(&o, sizeof o);
+  o.reorder = 1;
+  gab_compress_report r;
+  gab_compress_report_init(&r, sizeof r);
+  EXPECT_EQ(r.size, sizeof r);
+  EXPECT_EQ(r.order, nullptr);
+  std::vector<uint8_t> file;
+  ASSERT_EQ(compress(&o, &r, &file).code, GAB_OK) << message;
+  // The C++ API's file and figures for the same options.
+  gab::EncodeOptions options;
+  options.target_rms_rel = 1e-3;
+  options.reorder = true;
+  gab::EncodeStats stats;
+  EXPECT_EQ(gab::testing_util::encode_or_die(mesh, options, &stats), file);
+  EXPECT_EQ(r.size, sizeof r);
+  EXPECT_EQ(r.n, n);
+  EXPECT_EQ(r.faces, t);
+  EXPECT_EQ(r.anchors, stats.anchors);
+  EXPECT_EQ(r.chunks, stats.chunks);
+  EXPECT_EQ(r.bits, stats.bits);
+  EXPECT_EQ(r.solver, GAB_SOLVER_ITERATIVE);
+  EXPECT_EQ(r.ordering, GAB_ORDERING_AMD);
+  EXPECT_EQ(r.target_met, 1);
+  EXPECT_EQ(r.reordered, 1);
+  EXPECT_EQ(r.levels, stats.levels ? 1 : 0);
+  EXPECT_EQ(r.bytes, file.size());
+  EXPECT_EQ(r.geometry_bytes, stats.geometry_bytes);
+  EXPECT_EQ(r.connectivity_bytes, stats.connectivity_bytes);
+  EXPECT_EQ(r.order_bytes, 0u);
+  EXPECT_EQ(r.bytes, r.geometry_bytes + r.connectivity_bytes + r.order_bytes);
+  EXPECT_EQ(r.rms_rel, stats.rms_rel);
+  EXPECT_EQ(r.linf_rel, stats.linf_rel);
+  EXPECT_EQ(r.anchor_rms_rel, stats.rms_rel);  // no detail layer at 1e-3 here
+  EXPECT_EQ(r.detail, 0);
+  EXPECT_EQ(r.detail_bytes, 0u);
+  EXPECT_EQ(r.bpv_geometry, 8.0 * static_cast<double>(r.geometry_bytes) / n);
+  EXPECT_EQ(r.weight, 100.0);
+  EXPECT_GT(r.encode_s, 0.0);
+  EXPECT_GT(r.rms_rel, 0.0);
+  EXPECT_LE(r.rms_rel, 1e-3);
+  // The map is --order-out's: order[i] is input vertex i's decoded index.
+  ASSERT_NE(r.order, nullptr);
+  ASSERT_EQ(std::vector<int32_t>(r.order, r.order + n), stats.new_index);
+  gab::DecodeStats decoded_stats;
+  const Mesh decoded = gab::testing_util::decode_or_die(file, gab::DecodeOptions(), &decoded_stats);
+  Mesh mapped = decoded;
+  for (int32_t v = 0; v < n; ++v) {
+    for (int c = 0; c < 3; ++c) mapped.positions[3 * v + c] = decoded.positions[3 * r.order[v] + c];
+  }
+  EXPECT_NEAR(gab::testing_util::relative_rms(mesh, mapped), r.rms_rel, 1e-12);
+  EXPECT_GT(gab::testing_util::relative_rms(mesh, decoded), 100 * r.rms_rel);  // unmapped: another numbering
+  gab_free(r.order);
+  // From C alone (capi_scenarios.c): the same map read by a C99 program.
+  double mapped_rms = -1, reported_rms = -2;
+  ASSERT_EQ(capi_compress_reordered(mesh.positions.data(), n, mesh.triangles.data(), t, 1e-3, &mapped_rms,
+                                    &reported_rms, message, sizeof message),
+            GAB_OK)
+      << message;
+  EXPECT_NEAR(mapped_rms, reported_rms, 1e-12);
+
+  // Without reorder: the numbering is kept, no map, the order block priced.
+  gab_compress_options_init(&o, sizeof o);
+  gab_compress_report_init(&r, sizeof r);
+  std::vector<uint8_t> kept, plain;
+  ASSERT_EQ(compress(&o, &r, &kept).code, GAB_OK) << message;
+  ASSERT_EQ(compress(&o, nullptr, &plain).code, GAB_OK) << message;  // no report: the same file
+  EXPECT_EQ(kept, plain);
+  EXPECT_EQ(r.reordered, 0);
+  EXPECT_EQ(r.order, nullptr);
+  EXPECT_GT(r.order_bytes, 0u);
+  EXPECT_EQ(r.bytes, r.geometry_bytes + r.connectivity_bytes + r.order_bytes);
+  // A detail layer and the global solver, as the JSON names them.
+  gab_compress_options_init(&o, sizeof o);
+  o.target_rms_rel = 1e-4;
+  o.detail = GAB_DETAIL_ON;
+  o.solver = GAB_SOLVER_GLOBAL;
+  o.ordering = GAB_ORDERING_ND;
+  o.weight = 50;
+  ASSERT_EQ(compress(&o, &r, nullptr).code, GAB_OK) << message;
+  EXPECT_EQ(r.detail, 1);
+  EXPECT_GT(r.detail_bytes, 0u);
+  EXPECT_LT(r.detail_bytes, r.geometry_bytes);
+  EXPECT_GT(r.detail_step_rel, 0.0);
+  EXPECT_GT(r.anchor_rms_rel, r.rms_rel);
+  EXPECT_LE(r.rms_rel, 1e-4);
+  EXPECT_EQ(r.solver, GAB_SOLVER_GLOBAL);
+  EXPECT_EQ(r.ordering, GAB_ORDERING_ND);
+  EXPECT_EQ(r.weight, 50.0);
+
+  // An older caller's smaller report: only its bytes are written.
+  struct {
+    gab_compress_report r;
+    unsigned char guard[8];
+  } older;
+  std::memset(&older, 0xAB, sizeof older);
+  const size_t older_size = offsetof(gab_compress_report, bytes);
+  gab_compress_report_init(&older.r, older_size);
+  EXPECT_EQ(older.r.size, older_size);
+  gab_compress_options_init(&o, sizeof o);
+  o.reorder = 1;
+  ASSERT_EQ(compress(&o, &older.r, nullptr).code, GAB_OK) << message;
+  EXPECT_EQ(older.r.size, older_size);
+  EXPECT_EQ(older.r.anchors, stats.anchors);
+  EXPECT_EQ(reinterpret_cast<unsigned char*>(&older.r)[older_size], 0xAB);  // not written, and no map made
+  EXPECT_EQ(older.guard[0], 0xAB);
+  // A newer caller's larger report: this library's part written, `size` says how much.
+  struct {
+    gab_compress_report r;
+    int64_t future[2];
+  } newer;
+  std::memset(&newer, 0, sizeof newer);
+  gab_compress_report_init(&newer.r, sizeof newer);
+  EXPECT_EQ(newer.r.size, sizeof newer.r);
+  newer.r.size = sizeof newer;
+  newer.future[1] = 7;
+  ASSERT_EQ(compress(&o, &newer.r, nullptr).code, GAB_OK) << message;
+  EXPECT_EQ(newer.r.size, sizeof newer.r);
+  EXPECT_EQ(newer.future[1], 7);
+  ASSERT_NE(newer.r.order, nullptr);
+  gab_free(newer.r.order);
+
+  // A failure leaves the report zero, its map NULL.
+  gab_compress_report_init(&r, sizeof r);
+  r.anchors = 99;
+  r.order = reinterpret_cast<int32_t*>(&r);
+  gab_compress_options_init(&o, sizeof o);
+  o.bits = 30;
+  const Outcome bits = compress(&o, &r, nullptr);
+  EXPECT_EQ(bits.code, GAB_E_INVALID_ARGUMENT);
+  EXPECT_EQ(bits.message, "gab_compress_with_report: bits must be in 2..24");
+  EXPECT_EQ(r.anchors, 0);
+  EXPECT_EQ(r.order, nullptr);
+  EXPECT_EQ(r.size, sizeof r);
+  r.size = 4;
+  const Outcome unset = compress(nullptr, &r, nullptr);
+  EXPECT_EQ(unset.code, GAB_E_INVALID_ARGUMENT);
+  EXPECT_EQ(unset.message, "gab_compress_with_report: report->size is 4: set it with gab_compress_report_init");
 }
 
 TEST(CapiTest, DecompressOptionsBoundTheMemoryAndPickTheLevel) {

@@ -11,8 +11,9 @@
    - Nothing is thrown across it and nothing aborts: bad arguments (NULL
      pointers, negative counts, indices out of range) are reported, and so is
      memory that cannot be had.
-   - Memory the library returns (*out, *positions, *triangles) is malloc'd and
-     released with gab_free; on failure the out pointers are set to NULL / 0.
+   - Memory the library returns (*out, *positions, *triangles, a report's
+     order) is malloc'd and released with gab_free; on failure the out
+     pointers are set to NULL / 0.
    - Calls on different handles and different buffers may run in several
      threads at once; one handle is used by one thread at a time.
    - Indices are 0-based int32 (counts below 2^31); coordinates are doubles,
@@ -140,6 +141,59 @@ int gab_compress(const double* positions, int32_t n, const int32_t* triangles, i
 int gab_compress_ex(const double* positions, int32_t n, const int32_t* triangles, int32_t t,
                     const gab_compress_options* options, unsigned char** out, size_t* out_size,
                     char* message, size_t message_size);
+
+/* What a compress made (gab_compress_with_report): the figures of the CLI's
+   `gab compress --json`, under its key names and in its units (docs/cli.md),
+   and the map of a renumbered decode. ABI-stable as the options, for an out
+   struct: fill it with gab_compress_report_init, then pass it; the library
+   writes the fields it knows within `size` and sets `size` to the bytes it
+   wrote, so a caller compiled against a newer gab.h reads a newer field only
+   when its offset is below `size`. Errors are relative to the input's
+   bounding-box diagonal; byte counts include each part's framing, and
+   bytes = geometry_bytes + connectivity_bytes + order_bytes. */
+typedef struct gab_compress_report {
+  size_t size;                /* sizeof(gab_compress_report) as the caller compiled it; after a call: bytes written */
+  int32_t n;                  /* vertices */
+  int32_t faces;              /* triangles */
+  int32_t anchors;            /* anchors in the file */
+  int32_t chunks;             /* chunks in the file, a refinement or detail chunk included */
+  int32_t bits;               /* q, the anchors' bits per coordinate */
+  int32_t solver;             /* the file's reconstruction operator: GAB_SOLVER_GLOBAL or GAB_SOLVER_ITERATIVE */
+  int32_t ordering;           /* the factorizations' ordering: GAB_ORDERING_AMD or GAB_ORDERING_ND */
+  int32_t target_met;         /* nonzero: every error target was met (else out of reach at these bits) */
+  int32_t reordered;          /* nonzero: the decoded mesh is numbered in the coder's order; `order` maps it */
+  int32_t detail;             /* nonzero: the file ends with a detail chunk */
+  int32_t refined;            /* nonzero: the file ends with a least-squares refinement chunk */
+  int32_t levels;             /* nonzero: the file is in the level layout */
+  size_t bytes;               /* the whole file */
+  size_t geometry_bytes;      /* header and chunks (the detail and refinement chunks among them) */
+  size_t connectivity_bytes;  /* the triangles */
+  size_t order_bytes;         /* the vertex order block (0 when reordered) */
+  size_t detail_bytes;        /* the detail chunk (0 without one) */
+  size_t refinement_bytes;    /* the refinement chunk (0 without one) */
+  double rms_rel;             /* vertex RMS of the decoded shape against the input */
+  double linf_rel;            /* max vertex distance of the decoded shape */
+  double anchor_rms_rel;      /* the anchors' shape alone (a decode stopping before the detail chunk); else rms_rel */
+  double unrefined_rms_rel;   /* the shape before the refinement chunk (0 without one) */
+  double detail_step_rel;     /* the detail layer's quantization step (0 without one) */
+  double bpv_geometry;        /* geometry bits per vertex: 8 geometry_bytes / n */
+  double weight;              /* the anchor weight w used */
+  double encode_s;            /* the compress's time, seconds */
+  int32_t* order;             /* reordered: n entries, order[i] the decoded mesh's index of input vertex i (what
+                                 `gab compress --order-out` writes, line i), malloc'd: release with gab_free;
+                                 otherwise NULL */
+} gab_compress_report;
+
+/* Sets report->size = min(size, sizeof(gab_compress_report)) and the rest of
+   `size` bytes to zero. Call as gab_compress_report_init(&r, sizeof r). */
+void gab_compress_report_init(gab_compress_report* report, size_t size);
+
+/* gab_compress_ex that also fills *report (NULL: none), on success only; on
+   failure the report's fields are zero and its order NULL. The same file as
+   gab_compress_ex with the same options; the map costs n int32 more. */
+int gab_compress_with_report(const double* positions, int32_t n, const int32_t* triangles, int32_t t,
+                             const gab_compress_options* options, unsigned char** out, size_t* out_size,
+                             gab_compress_report* report, char* message, size_t message_size);
 
 /* max_anchors < 0: the whole file, else the first max_anchors anchors (a
    coarser level). A file cut short decodes to its complete chunks and
