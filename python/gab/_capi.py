@@ -3,6 +3,7 @@ turning an error code and message into a GabError."""
 
 import ctypes
 import os
+import sys
 from ctypes import POINTER, c_char_p, c_double, c_int, c_int32, c_int64, c_size_t, c_ubyte, c_void_p
 
 MESSAGE_SIZE = 1024
@@ -58,33 +59,51 @@ class DecompressOptions(ctypes.Structure):
     ]
 
 
+class CompressReport(ctypes.Structure):
+    """gab_compress_report, field for field (gab.h)."""
+
+    _fields_ = [("size", c_size_t)]
+    _fields_ += [(name, c_int32) for name in ("n", "faces", "anchors", "chunks", "bits", "solver", "ordering",
+                                              "target_met", "reordered", "detail", "refined", "levels")]
+    _fields_ += [(name, c_size_t) for name in ("bytes", "geometry_bytes", "connectivity_bytes", "order_bytes",
+                                               "detail_bytes", "refinement_bytes")]
+    _fields_ += [(name, c_double) for name in ("rms_rel", "linf_rel", "anchor_rms_rel", "unrefined_rms_rel",
+                                               "detail_step_rel", "bpv_geometry", "weight", "encode_s")]
+    _fields_ += [("order", POINTER(c_int32))]
+
+
 def _candidates():
-    """Where libgab may be, in order: $GAB_LIBRARY, the copy the package was
-    installed with (_location.py, written by cmake --install), then the
-    dynamic loader's search path."""
+    """Where libgab may be, in order, each with what it is: $GAB_LIBRARY
+    alone when it is set; else the copy the package was installed with
+    (_location.py, written by cmake --install), then the dynamic loader's
+    search path."""
     explicit = os.environ.get("GAB_LIBRARY")
     if explicit:
-        return [explicit]
+        return [(explicit, "$GAB_LIBRARY")]
     found = []
     try:
         from . import _location
 
-        found.append(os.path.normpath(os.path.join(os.path.dirname(__file__), _location.LIBRARY)))
+        path = os.path.normpath(os.path.join(os.path.dirname(__file__), _location.LIBRARY))
+        found.append((path, "the library installed with this package"))
     except ImportError:
         pass
-    return found + ["libgab.so"]
+    return found + [("libgab.so", "the dynamic loader's search path (LD_LIBRARY_PATH, ldconfig's cache, /usr/lib)")]
 
 
 def _load():
-    errors = []
-    for path in _candidates():
+    tried = []
+    for path, where in _candidates():
         try:
             return ctypes.CDLL(path)
         except OSError as e:
-            errors.append(str(e))
+            reason = str(e)
+            if reason.startswith(path + ": "):  # the loader's message names the path: once is enough
+                reason = reason[len(path) + 2:]
+            tried.append(f"{where} ({path}): {reason}")
     raise ImportError(
-        "gab: cannot load libgab (set GAB_LIBRARY to the path of libgab.so, or install gab with cmake --install): "
-        + "; ".join(errors)
+        f"gab: cannot load libgab for {sys.executable}; looked at " + "; ".join(tried)
+        + ". Set GAB_LIBRARY to the path of libgab.so, or install gab with cmake --install"
     )
 
 
@@ -102,6 +121,12 @@ def _declare(lib):
             c_int,
             [P(c_double), c_int32, P(c_int32), c_int32, P(CompressOptions), P(P(c_ubyte)), P(c_size_t), c_char_p,
              c_size_t],
+        ),
+        "gab_compress_report_init": (None, [P(CompressReport), c_size_t]),
+        "gab_compress_with_report": (
+            c_int,
+            [P(c_double), c_int32, P(c_int32), c_int32, P(CompressOptions), P(P(c_ubyte)), P(c_size_t),
+             P(CompressReport), c_char_p, c_size_t],
         ),
         "gab_decompress_options_init": (None, [P(DecompressOptions), c_size_t]),
         "gab_decompress_ex": (
@@ -135,6 +160,7 @@ LIB = _declare(_load())
 PYTHON_NAMES = {
     "gab_compress": "gab.compress",
     "gab_compress_ex": "gab.compress",
+    "gab_compress_with_report": "gab.compress",
     "gab_decompress": "gab.decompress",
     "gab_decompress_ex": "gab.decompress",
     "gab_read_mesh": "gab.read_mesh",

@@ -8,13 +8,62 @@ import gab
 
 
 class CscLike:
-    """What scipy.sparse's CSC matrices offer and gab reads."""
+    """What scipy.sparse's CSC matrices offer and gab reads (scipy may be
+    absent: gab reads them by duck typing, and so do these tests)."""
 
     format = "csc"
 
     def __init__(self, n, indptr, indices, data):
         self.shape = (n, n)
         self.indptr, self.indices, self.data = indptr, indices, data
+
+
+class CooLike:
+    """A scipy.sparse COO matrix's part gab uses: its format and tocsc()."""
+
+    format = "coo"
+
+    def __init__(self, dense):
+        self.shape = dense.shape
+        self.dense = dense
+        self.converted = 0
+
+    def tocsc(self):
+        self.converted += 1
+        return csc_of(self.dense)
+
+
+class UnsortedCscLike(CscLike):
+    """A CSC matrix whose rows are not sorted within a column and hold a
+    duplicate (scipy allows both; has_canonical_format says so)."""
+
+    has_canonical_format = False
+
+    def copy(self):
+        return UnsortedCscLike(self.shape[0], self.indptr.copy(), self.indices.copy(), self.data.copy())
+
+    def sum_duplicates(self):
+        """scipy's: rows sorted within each column, duplicates summed (on this copy)."""
+        n = self.shape[0]
+        columns = np.repeat(np.arange(n), np.diff(self.indptr))
+        keys = columns * n + self.indices
+        unique, which = np.unique(keys, return_inverse=True)
+        self.data = np.bincount(which, weights=self.data)
+        self.indices = unique % n
+        self.indptr = np.concatenate([[0], np.cumsum(np.bincount(unique // n, minlength=n))])
+        self.has_canonical_format = True
+
+
+def csc_of(dense):
+    """Every nonzero of a dense matrix, as a CscLike."""
+    n = dense.shape[0]
+    indptr, indices, data = [0], [], []
+    for j in range(n):
+        rows = np.nonzero(dense[:, j])[0]
+        indices += rows.tolist()
+        data += dense[rows, j].tolist()
+        indptr.append(len(indices))
+    return CscLike(n, np.array(indptr), np.array(indices), np.array(data))
 
 
 def grid_laplacian(k, shift):
@@ -72,11 +121,10 @@ class CholeskyTest(unittest.TestCase):
         self.assertTrue(np.allclose(dense @ chol.solve(np.ones(36)), 1))
 
     def test_errors_raise_with_the_library_message(self):
-        # Entries above the diagonal (the full matrix instead of its lower triangle).
+        # Rows out of order within a column (the library reads the lower triangle as given).
         with self.assertRaises(gab.GabError) as e:
-            gab.Cholesky((np.array([0, 2, 4]), np.array([0, 1, 0, 1]), np.array([2.0, -1, -1, 2])))
-        self.assertEqual(str(e.exception),
-                         "Cholesky.analyze: column 1: row 0 is above the diagonal (give the lower triangle)")
+            gab.Cholesky((np.array([0, 2, 3]), np.array([1, 0, 1]), np.array([-1.0, 2, 2])))
+        self.assertEqual(str(e.exception), "Cholesky.analyze: column 0 has an out-of-range or unsorted row index")
         with self.assertRaises(gab.GabError) as e:
             gab.Cholesky((np.array([0, 2, 3]), np.array([0, 1, 1]), np.array([1.0, 2, 1])))
         self.assertEqual(e.exception.name, "GAB_E_NOT_POSITIVE_DEFINITE")
@@ -103,6 +151,85 @@ class CholeskyTest(unittest.TestCase):
             gab.Cholesky((np.array([0, 2, 3]), np.array([0, 1, 1]), np.array([2.0, -1, 2 + 1j])))
         with self.assertRaisesRegex(TypeError, "b must hold real numbers"):
             chol.solve(np.array([1.0, 1j]))
+
+
+    def test_the_whole_symmetric_matrix_in_any_form(self):
+        """As scikit-sparse's cholesky(A): the whole symmetric matrix, any
+        sparse format, or a dense array; the lower triangle is what counts."""
+        lower, dense = grid_laplacian(7, 0.2)
+        b = np.cos(np.arange(dense.shape[0]))
+        expected = gab.Cholesky(lower).solve(b)
+        whole = csc_of(dense)
+        self.assertGreater(len(whole.data), len(lower.data))
+        for name, A in [("csc", whole), ("tuple", (whole.indptr, whole.indices, whole.data)), ("dense", dense),
+                        ("coo", CooLike(dense))]:
+            with self.subTest(form=name):
+                chol = gab.Cholesky(A)
+                self.assertTrue(np.array_equal(chol.solve(b), expected))
+                self.assertTrue(np.array_equal(chol(b), expected))  # a factor is called as scikit-sparse's
+                chol.add_anchor(5, 2.0).factorize(A)  # refactored from the same form
+                self.assertTrue(np.array_equal(chol.solve(b), expected))
+        coo = CooLike(dense)
+        gab.Cholesky(coo)
+        self.assertEqual(coo.converted, 1)  # converted once, analyzed and factorized from it
+        # Unsorted rows and a duplicate entry (allowed by scipy): summed on a copy, the caller's left alone.
+        unsorted = UnsortedCscLike(2, np.array([0, 3, 5]), np.array([1, 0, 0, 1, 0]), np.array([-1, 1.5, 0.5, 2, -1]))
+        self.assertTrue(np.allclose(gab.Cholesky(unsorted).solve(np.array([1.0, 1.0])), [1, 1]))
+        self.assertFalse(unsorted.has_canonical_format)
+        # A pattern alone, then the values.
+        chol = gab.Cholesky().analyze((whole.indptr, whole.indices, None)).factorize(dense)
+        self.assertTrue(np.array_equal(chol.solve(b), expected))
+        chol.factorize(lower.data)  # the lower triangle's values, in its CSC order
+        with self.assertRaisesRegex(ValueError, r"^Cholesky.factorize: values has \d+ entries, the analyzed lower "
+                                                r"triangle \d+ \(give the matrix itself"):
+            chol.factorize(whole.data)
+
+    def test_a_matrix_that_is_not_symmetric_is_refused_clearly(self):
+        hint = r" \(give the whole symmetric matrix or its lower triangle\)$"
+        with self.assertRaisesRegex(ValueError, r"^Cholesky.analyze: A is not symmetric: A\[1, 0\] = -1.0 but "
+                                                r"A\[0, 1\] = -0.5" + hint):
+            gab.Cholesky(np.array([[2.0, -0.5], [-1, 2]]))
+        with self.assertRaisesRegex(ValueError, r"^Cholesky.analyze: A is not symmetric: A\[1, 0\] = 0.0 but "
+                                                r"A\[0, 1\] = 1.0" + hint):
+            gab.Cholesky((np.array([0, 1, 3]), np.array([0, 0, 1]), np.array([2.0, 1, 2])))  # an upper triangle
+        with self.assertRaisesRegex(ValueError, r"^Cholesky.analyze: A is not symmetric: it has entry \(0, 1\) "
+                                                r"and not \(1, 0\)" + hint):
+            gab.Cholesky().analyze((np.array([0, 1, 3]), np.array([0, 0, 1]), None))
+        # An explicit zero without its mirror is no asymmetry.
+        zero = (np.array([0, 2, 4, 6]), np.array([0, 1, 0, 1, 0, 2]), np.array([2.0, -1, -1, 2, 0, 2]))
+        self.assertTrue(np.allclose(gab.Cholesky(zero).solve(np.array([1.0, 1, 2])), [1, 1, 1]))
+        # Rounding is not asymmetry: 1e-10 of the largest entry is allowed.
+        near = np.array([[4.0, 1.0], [1.0 + 1e-15, 3.0]])
+        self.assertTrue(np.allclose(gab.Cholesky(near).solve(near @ np.ones(2)), 1))
+        with self.assertRaisesRegex(ValueError, r"^Cholesky.analyze: a dense matrix must be square and 2-D, got "
+                                                r"shape \(2, 3\)$"):
+            gab.Cholesky(np.ones((2, 3)))
+        with self.assertRaisesRegex(TypeError, r"^Cholesky.analyze: A must be a scipy.sparse matrix, a dense 2-D "
+                                               r"numpy array or a tuple \(indptr, indices, data\), got list$"):
+            gab.Cholesky([[2.0, 1.0], [1.0, 2.0]])
+        with self.assertRaisesRegex(ValueError, r"^Cholesky.analyze: indices must be in 0..1, got 2$"):
+            gab.Cholesky((np.array([0, 2, 3]), np.array([0, 2, 1]), np.array([2.0, -1, 2])))
+
+    def test_a_closed_factor_says_it_is_closed(self):
+        A, dense = grid_laplacian(4, 0.5)
+        chol = gab.Cholesky(A)
+        chol.close()
+        for name, call in [("solve", lambda: chol.solve(np.ones(16))), ("add_anchor", lambda: chol.add_anchor(1, 1.0)),
+                           ("factorize", lambda: chol.factorize(A))]:
+            with self.subTest(call=name):
+                with self.assertRaises(gab.GabError) as e:
+                    call()
+                self.assertEqual(e.exception.name, "GAB_E_STATE")
+                self.assertRegex(str(e.exception), rf"^Cholesky.{name}: this Cholesky is closed \(close\(\) or the "
+                                                   r"end of its with block released it\)")
+        with gab.Cholesky(A) as scoped:
+            pass
+        with self.assertRaisesRegex(gab.GabError, "is closed"):
+            scoped.solve(np.ones(16))
+        chol.analyze(A).factorize(A)  # analyzing again reopens it
+        self.assertTrue(np.allclose(dense @ chol.solve(np.ones(16)), 1))
+        with self.assertRaisesRegex(gab.GabError, r"^Cholesky.solve: no analyzed matrix: call analyze first$"):
+            gab.Cholesky().solve(np.ones(2))
 
 
 if __name__ == "__main__":

@@ -1,5 +1,6 @@
 """gab.compress / decompress / read_mesh over libgab (run by ctest and .ci/run)."""
 
+import dataclasses
 import math
 import os
 import tempfile
@@ -155,6 +156,103 @@ class CodecTest(unittest.TestCase):
             gab.decompress(data, anchors=-5)  # not the whole file
         with self.assertRaisesRegex(TypeError, "anchors must be an integer"):
             gab.decompress(data, anchors=2.5)
+
+    def test_arguments_name_the_call_the_argument_and_its_type(self):
+        V, F = bumpy_torus(8, 6)
+        data = gab.compress(V, F)
+        cases = [
+            (TypeError, r"^gab\.compress: error must be a number, got str$", lambda: gab.compress(V, F, error="1e-3")),
+            (ValueError, r"^gab\.decompress: anchors must be in 1\.\.2147483647, got -5$",
+             lambda: gab.decompress(data, anchors=-5)),
+            (TypeError, r"^gab\.compress: reorder must be True or False, got str$",
+             lambda: gab.compress(V, F, reorder="no")),
+            (TypeError, r"^gab\.compress: return_stats must be True or False, got int$",
+             lambda: gab.compress(V, F, return_stats=1)),
+            (TypeError, r"^gab\.compress: detail must be 'auto', 'on' or 'off', got int$",
+             lambda: gab.compress(V, F, detail=1)),
+            (ValueError, r"^gab\.compress: ordering must be 'auto', 'amd' or 'nd', got 'natural'$",
+             lambda: gab.compress(V, F, ordering="natural")),
+            (ValueError, r"^gab\.compress: V must have shape \(k, 3\), got \(48, 2\)$",
+             lambda: gab.compress(V[:, :2], F)),
+            (TypeError, r"^gab\.compress: F must hold integers, got dtype float64$", lambda: gab.compress(V, F + 0.5)),
+            (TypeError, r"^gab\.decompress: data must be bytes-like \(bytes, bytearray, memoryview\), got str$",
+             lambda: gab.decompress("not bytes")),
+            (TypeError, r"^gab\.decompress: data must be bytes-like .*, got int$",
+             lambda: gab.decompress(5)),  # not five zero bytes
+            (TypeError, r"^gab\.decompress: threads must be an integer, got float$",
+             lambda: gab.decompress(data, threads=2.0)),
+            (TypeError, r"^gab\.read_mesh: path must be a str, bytes or os\.PathLike, got NoneType$",
+             lambda: gab.read_mesh(None)),
+        ]
+        for error, pattern, call in cases:
+            with self.subTest(pattern=pattern):
+                with self.assertRaisesRegex(error, pattern):
+                    call()
+        self.assertEqual(gab.decompress(np.frombuffer(data, dtype=np.uint8))[0].tolist(),
+                         gab.decompress(data)[0].tolist())  # any buffer of bytes
+        self.assertEqual(gab.compress(V, F, reorder=np.bool_(True)), gab.compress(V, F, reorder=True))
+
+    def test_return_stats_gives_the_cli_figures_and_the_map_onto_a_reordered_decode(self):
+        V, F = bumpy_torus(40, 30)
+        data, stats = gab.compress(V, F, error=1e-3, reorder=True, return_stats=True)
+        self.assertIsInstance(stats, gab.CompressStats)
+        self.assertEqual(data, gab.compress(V, F, error=1e-3, reorder=True))  # the same file
+        self.assertEqual((stats.n, stats.faces), (len(V), len(F)))
+        self.assertEqual(stats.bytes, len(data))
+        self.assertEqual(stats.bytes, stats.geometry_bytes + stats.connectivity_bytes + stats.order_bytes)
+        self.assertEqual(stats.order_bytes, 0)
+        self.assertGreater(stats.anchors, 0)
+        self.assertTrue(2 <= stats.bits <= 24)
+        self.assertEqual((stats.solver, stats.ordering), ("iterative", "amd"))
+        self.assertTrue(stats.reordered and stats.target_met and not stats.detail and not stats.refined)
+        self.assertGreater(stats.rms_rel, 0)
+        self.assertLessEqual(stats.rms_rel, 1e-3)
+        self.assertLessEqual(stats.rms_rel, stats.linf_rel)
+        self.assertEqual(stats.anchor_rms_rel, stats.rms_rel)
+        self.assertAlmostEqual(stats.bpv_geometry, 8 * stats.geometry_bytes / len(V))
+        self.assertEqual(stats.weight, 100)
+        # The map: W[order] lines up with V within the error, order[F] is the decoded triangles.
+        W, G = gab.decompress(data)
+        order = stats.order
+        self.assertEqual((order.dtype, order.shape), (np.int32, (len(V),)))
+        self.assertEqual(sorted(order.tolist()), list(range(len(V))))
+        self.assertAlmostEqual(relative_rms(V, W[order]), stats.rms_rel, delta=1e-12)
+        self.assertGreater(relative_rms(V, W), 0.01)  # the decoded numbering is another one
+        self.assertEqual(oriented_set(order[F]), oriented_set(G))
+        colours = np.random.default_rng(1).random((len(V), 3))
+        decoded_colours = np.empty_like(colours)
+        decoded_colours[order] = colours  # per-vertex data onto the decoded mesh
+        self.assertTrue(np.array_equal(decoded_colours[order], colours))
+        # The CLI's JSON names (docs/cli.md), and a result that stays as made.
+        fields = dataclasses.asdict(stats)
+        for key in ("n", "faces", "anchors", "bits", "bytes", "geometry_bytes", "connectivity_bytes", "order_bytes",
+                    "bpv_geometry", "linf_rel", "rms_rel", "encode_s", "reordered", "detail", "detail_bytes",
+                    "detail_step_rel", "solver", "anchor_rms_rel", "chunks", "weight", "target_met", "refined",
+                    "refinement_bytes", "unrefined_rms_rel", "levels", "ordering"):
+            self.assertIn(key, fields)
+        with self.assertRaises(dataclasses.FrozenInstanceError):
+            stats.bits = 3
+        # The numbering kept: no map, the order block priced; a detail layer by the global solver.
+        kept, same = gab.compress(V, F, return_stats=True)
+        self.assertEqual(kept, gab.compress(V, F))
+        self.assertIsNone(same.order)
+        self.assertFalse(same.reordered)
+        self.assertGreater(same.order_bytes, 0)
+        _, fine = gab.compress(V, F, error=1e-4, detail="on", solver="global", ordering="nd", return_stats=True)
+        self.assertTrue(fine.detail)
+        self.assertGreater(fine.detail_bytes, 0)
+        self.assertGreater(fine.anchor_rms_rel, fine.rms_rel)
+        self.assertEqual((fine.solver, fine.ordering), ("global", "nd"))
+
+    def test_the_report_struct_matches_the_library(self):
+        """gab._capi.CompressReport is gab_compress_report field for field: the library's init of a larger
+        buffer says how large its struct is."""
+        import ctypes
+        from gab import _capi
+
+        buffer = ctypes.create_string_buffer(4096)
+        _capi.LIB.gab_compress_report_init(ctypes.cast(buffer, ctypes.POINTER(_capi.CompressReport)), len(buffer))
+        self.assertEqual(ctypes.c_size_t.from_buffer(buffer).value, ctypes.sizeof(_capi.CompressReport))
 
     def test_max_memory_bounds_the_decode(self):
         V, F = bumpy_torus(12, 10)
