@@ -3,12 +3,15 @@
 // factorization, and the message of its last call (solve and add_anchor have
 // no message buffer in their signature).
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <string>
 
 #include "boundary.h"
 #include "gab/sparse/cholesky.h"
+#include "ordering_codes.h"
 
 struct gab_cholesky {
   gab::CscMatrix lower;  // the pattern, and the values of the last factorize
@@ -49,6 +52,25 @@ Status import_pattern(int32_t n, const int32_t* colptr, const int32_t* rowind, C
   return Status::Ok();
 }
 
+// The caller's options (NULL: the defaults, gab_cholesky_create's) as the
+// engine's analysis options. Any named ordering: the engine has them all.
+Status read_options(const gab_cholesky_options* in, AnalyzeOptions* out) {
+  gab_cholesky_options o;
+  gab_cholesky_options_init(&o, sizeof o);
+  if (in != nullptr) {
+    GAB_RETURN_IF_ERROR(check_options_size(in, in->size, sizeof o, "gab_cholesky_options_init"));
+#define GAB_TAKE(field) take_field(in, in->size, offsetof(gab_cholesky_options, field), &o.field)
+    GAB_TAKE(ordering);
+    GAB_TAKE(threads);
+#undef GAB_TAKE
+  }
+  GAB_RETURN_IF_ERROR(require(ordering_of_code(o.ordering, &out->ordering),
+                              "options->ordering is " + std::to_string(o.ordering) +
+                                  ": must be GAB_ORDERING_AMD, GAB_ORDERING_ND, GAB_ORDERING_NATURAL or "
+                                  "GAB_ORDERING_AUTO"));
+  return options_threads(o.threads, &out->threads);
+}
+
 Status factorize(gab_cholesky* c, const double* values) {
   GAB_RETURN_IF_ERROR(require(values != nullptr, "values is NULL"));
   const size_t nnz = c->lower.rowind.size();
@@ -79,24 +101,53 @@ int on_handle(gab_cholesky* c, const char* function, bool needs_factor, char* me
   return code;
 }
 
+// gab_cholesky_create and _ex: the options read, the pattern copied and
+// checked, ordered and analyzed, then factorized when values are given.
+int create(const char* function, int32_t n, const int32_t* colptr, const int32_t* rowind, const double* values,
+           const gab_cholesky_options* options, gab_cholesky** out, char* message, size_t message_size) {
+  return guarded(function, message, message_size, [&]() -> Status {
+    if (out != nullptr) *out = nullptr;
+    GAB_RETURN_IF_ERROR(require(out != nullptr, "out is NULL"));
+    AnalyzeOptions analyze_options;
+    GAB_RETURN_IF_ERROR(read_options(options, &analyze_options));
+    std::unique_ptr<gab_cholesky> c(new gab_cholesky);
+    GAB_RETURN_IF_ERROR(import_pattern(n, colptr, rowind, &c->lower));
+    GAB_RETURN_IF_ERROR(c->chol.analyze(c->lower, analyze_options));
+    if (values != nullptr) GAB_RETURN_IF_ERROR(factorize(c.get(), values));
+    *out = c.release();
+    return Status::Ok();
+  });
+}
+
 }  // namespace
 
 }  // namespace capi
 }  // namespace gab
 
+extern "C" void gab_cholesky_options_init(gab_cholesky_options* options, size_t size) {
+  gab_cholesky_options o;
+  std::memset(&o, 0, sizeof o);
+  o.ordering = GAB_ORDERING_AMD;  // gab_cholesky_create's
+  o.threads = 1;
+  gab::capi::init_options(o, options, size);
+}
+
 extern "C" int gab_cholesky_create(int32_t n, const int32_t* colptr, const int32_t* rowind, const double* values,
                                    gab_cholesky** out, char* message, size_t message_size) {
-  using namespace gab;
-  return capi::guarded("gab_cholesky_create", message, message_size, [&]() -> Status {
-    if (out != nullptr) *out = nullptr;
-    GAB_RETURN_IF_ERROR(capi::require(out != nullptr, "out is NULL"));
-    std::unique_ptr<gab_cholesky> c(new gab_cholesky);
-    GAB_RETURN_IF_ERROR(capi::import_pattern(n, colptr, rowind, &c->lower));
-    GAB_RETURN_IF_ERROR(c->chol.analyze(c->lower));
-    if (values != nullptr) GAB_RETURN_IF_ERROR(capi::factorize(c.get(), values));
-    *out = c.release();
-    return Status::Ok();
-  });
+  return gab::capi::create("gab_cholesky_create", n, colptr, rowind, values, nullptr, out, message, message_size);
+}
+
+extern "C" int gab_cholesky_create_ex(int32_t n, const int32_t* colptr, const int32_t* rowind, const double* values,
+                                      const gab_cholesky_options* options, gab_cholesky** out, char* message,
+                                      size_t message_size) {
+  return gab::capi::create("gab_cholesky_create_ex", n, colptr, rowind, values, options, out, message,
+                           message_size);
+}
+
+extern "C" int64_t gab_cholesky_factor_entries(const gab_cholesky* c) {
+  if (c == nullptr) return -1;
+  const gab::SymbolicFactor& f = c->chol.symbolic();
+  return f.value_ptr.empty() ? 0 : f.value_ptr.back();
 }
 
 extern "C" int gab_cholesky_factorize(gab_cholesky* c, const double* values, char* message, size_t message_size) {

@@ -42,11 +42,7 @@ Status read_options(const gab_compress_options* in, EncodeOptions* out) {
   GAB_RETURN_IF_ERROR(require(o.detail == GAB_DETAIL_AUTO || o.detail == GAB_DETAIL_ON || o.detail == GAB_DETAIL_OFF,
                               "options->detail is " + std::to_string(o.detail) +
                                   ": must be GAB_DETAIL_AUTO, GAB_DETAIL_ON or GAB_DETAIL_OFF"));
-  Ordering ordering = Ordering::kAuto;
-  GAB_RETURN_IF_ERROR(require(ordering_of_code(o.ordering, &ordering),
-                              "options->ordering is " + std::to_string(o.ordering) +
-                                  ": must be GAB_ORDERING_AUTO, GAB_ORDERING_AMD or GAB_ORDERING_ND"));
-  out->ordering = ordering;
+  GAB_RETURN_IF_ERROR(codec_ordering_of_code(o.ordering, &out->ordering));
   GAB_RETURN_IF_ERROR(require(solver_of_code(o.solver, &out->solver),
                               "options->solver is " + std::to_string(o.solver) +
                                   ": must be GAB_SOLVER_AUTO, GAB_SOLVER_GLOBAL or GAB_SOLVER_ITERATIVE"));

@@ -8,6 +8,7 @@
 
 #include "boundary.h"
 #include "gab/codec/decoder.h"
+#include "ordering_codes.h"
 
 namespace gab {
 namespace capi {
@@ -24,9 +25,11 @@ Status read_options(const gab_decompress_options* in, DecodeOptions* out) {
     GAB_TAKE(max_memory);
     GAB_TAKE(max_anchors);
     GAB_TAKE(threads);
+    GAB_TAKE(ordering);
 #undef GAB_TAKE
   }
   GAB_RETURN_IF_ERROR(options_threads(o.threads, &out->threads));
+  GAB_RETURN_IF_ERROR(codec_ordering_of_code(o.ordering, &out->ordering));
   out->max_anchors = o.max_anchors < 0 ? -1 : o.max_anchors;
   out->max_memory = o.max_memory < 0 ? -1 : o.max_memory;
   return Status::Ok();
@@ -68,6 +71,7 @@ extern "C" void gab_decompress_options_init(gab_decompress_options* options, siz
   std::memset(&o, 0, sizeof o);
   o.max_anchors = -1;
   o.threads = 1;
+  o.ordering = GAB_ORDERING_AUTO;
   gab::capi::init_options(o, options, size);
 }
 

@@ -3,6 +3,9 @@
 // (parse_ordering, parse_solver), the codes the C door's.
 #include "ordering_codes.h"
 
+#include <string>
+
+#include "boundary.h"
 #include "gab/codec/matrix_ordering.h"
 #include "gab/gab.h"
 
@@ -15,10 +18,12 @@ struct OrderingCode {
   Ordering ordering;
 };
 
-// The codec's orderings, each with its code.
+// The named orderings (parse_ordering's), each with its code; the codec
+// takes the first three (codec_takes_ordering).
 constexpr OrderingCode kCodes[] = {{GAB_ORDERING_AUTO, Ordering::kAuto},
                                    {GAB_ORDERING_AMD, Ordering::kAmd},
-                                   {GAB_ORDERING_ND, Ordering::kNestedDissection}};
+                                   {GAB_ORDERING_ND, Ordering::kNestedDissection},
+                                   {GAB_ORDERING_NATURAL, Ordering::kNatural}};
 
 // The solvers, each with its code.
 struct SolverCode {
@@ -51,6 +56,15 @@ bool ordering_of_code(int32_t code, Ordering* ordering) {
   return false;
 }
 
+Status codec_ordering_of_code(int32_t code, Ordering* ordering) {
+  const char* const taken = "GAB_ORDERING_AUTO, GAB_ORDERING_AMD or GAB_ORDERING_ND";
+  GAB_RETURN_IF_ERROR(require(ordering_of_code(code, ordering),
+                              "options->ordering is " + std::to_string(code) + ": must be " + taken));
+  return require(codec_takes_ordering(*ordering), std::string("options->ordering is GAB_ORDERING_NATURAL: the ") +
+                                                      "codec's factorizations take " + taken +
+                                                      " (natural is for gab_cholesky_create_ex)");
+}
+
 int32_t code_of_ordering(Ordering ordering) {
   for (const OrderingCode& row : kCodes) {
     if (row.ordering == ordering) return row.code;
@@ -70,7 +84,7 @@ int32_t code_of_solver(Solver solver) {
 
 extern "C" int gab_ordering_from_name(const char* name) {
   gab::Ordering ordering;
-  if (name == nullptr || !gab::parse_ordering(name, &ordering) || !gab::codec_takes_ordering(ordering)) return -1;
+  if (name == nullptr || !gab::parse_ordering(name, &ordering)) return -1;
   return gab::capi::code_of_ordering(ordering);
 }
 

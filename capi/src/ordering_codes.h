@@ -6,12 +6,17 @@
 
 #include "gab/codec/gab_format.h"
 #include "gab/sparse/ordering.h"
+#include "gab/status.h"
 
 namespace gab {
 namespace capi {
 
 // The Ordering a GAB_ORDERING_* code stands for; false for any other value.
 bool ordering_of_code(int32_t code, Ordering* ordering);
+// The ordering of a codec options struct (options->ordering): one the
+// codec factors with (GAB_ORDERING_AUTO, _AMD, _ND); kInvalidArgument
+// saying so for GAB_ORDERING_NATURAL and for an unknown code.
+Status codec_ordering_of_code(int32_t code, Ordering* ordering);
 // The Solver a GAB_SOLVER_* code stands for; false for any other value.
 bool solver_of_code(int32_t code, Solver* solver);
 // The GAB_ORDERING_* code of an ordering the codec takes, the GAB_SOLVER_*

@@ -4,6 +4,7 @@
 #include "capi/capi_scenarios.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -147,6 +148,35 @@ void capi_cholesky_run(int32_t n, const int32_t* colptr, const int32_t* rowind, 
   gab_cholesky_destroy(c);
 }
 
+int capi_cholesky_ordered(int32_t n, const int32_t* colptr, const int32_t* rowind, const double* values,
+                          int32_t ordering, int32_t threads, const double* b, int32_t nrhs, double* x,
+                          int64_t* entries, char* message, size_t message_size) {
+  gab_cholesky_options options;
+  gab_cholesky* c = NULL;
+  int code;
+  gab_cholesky_options_init(&options, sizeof options);
+  options.ordering = ordering;
+  options.threads = threads;
+  *entries = -1;
+  code = gab_cholesky_create_ex(n, colptr, rowind, values, &options, &c, message, message_size);
+  if (code != GAB_OK) return code;
+  *entries = gab_cholesky_factor_entries(c);
+  memcpy(x, b, (size_t)n * (size_t)nrhs * sizeof *x);
+  code = gab_cholesky_solve(c, x, nrhs);
+  if (code != GAB_OK) snprintf(message, message_size, "%s", gab_cholesky_message(c));
+  gab_cholesky_destroy(c);
+  return code;
+}
+
+int capi_decompress_ordered(const unsigned char* file, size_t size, int32_t ordering, capi_mesh* mesh,
+                            char* message, size_t message_size) {
+  gab_decompress_options options;
+  gab_decompress_options_init(&options, sizeof options);
+  options.ordering = ordering;
+  return gab_decompress_ex(file, size, &options, &mesh->positions, &mesh->n, &mesh->triangles, &mesh->t, message,
+                           message_size);
+}
+
 int capi_error_paths(void) {
   const double positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
   const int32_t triangles[3] = {0, 1, 7};
@@ -169,6 +199,7 @@ int capi_error_paths(void) {
   ok &= gab_cholesky_solve(NULL, NULL, 1) == GAB_E_INVALID_ARGUMENT;
   ok &= gab_cholesky_add_anchor(NULL, 0, 1.0) == GAB_E_INVALID_ARGUMENT;
   ok &= gab_cholesky_factorize(NULL, NULL, NULL, 0) == GAB_E_INVALID_ARGUMENT;
+  ok &= gab_cholesky_factor_entries(NULL) == -1;
   gab_cholesky_destroy(NULL);
   gab_free(NULL);
   return ok;

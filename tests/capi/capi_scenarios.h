@@ -64,6 +64,18 @@ int capi_read_mesh(const char* path, capi_mesh* mesh, char* message, size_t mess
 void capi_cholesky_run(int32_t n, const int32_t* colptr, const int32_t* rowind, const double* values,
                        const double* b, int32_t nrhs, int32_t j, double w, double* x, double* x_updated, int code[6]);
 
+/* gab_cholesky_create_ex with `ordering` and `threads` (the options struct
+   filled by gab_cholesky_options_init), factorizing `values`, then a solve
+   of b (n x nrhs) into x. The first failing call's code (its message in
+   `message`); the factor's stored entries in *entries. */
+int capi_cholesky_ordered(int32_t n, const int32_t* colptr, const int32_t* rowind, const double* values,
+                          int32_t ordering, int32_t threads, const double* b, int32_t nrhs, double* x,
+                          int64_t* entries, char* message, size_t message_size);
+
+/* gab_decompress_ex of the whole file with the factorizations' `ordering`. */
+int capi_decompress_ordered(const unsigned char* file, size_t size, int32_t ordering, capi_mesh* mesh,
+                            char* message, size_t message_size);
+
 /* Error paths from C: a NULL message buffer, a message truncated to a
    small buffer, NULL handles. 1 when each behaves as gab.h says. */
 int capi_error_paths(void);

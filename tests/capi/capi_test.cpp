@@ -2,12 +2,14 @@
 // against the C++ API's, and every door's error codes and messages.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "capi/capi_scenarios.h"
@@ -16,6 +18,8 @@
 #include "common/scratch_files.h"
 #include "common/test_meshes.h"
 #include "gab/gab.h"
+#include "gab/mesh/metrics.h"
+#include "gab/sparse/cholesky.h"
 
 namespace {
 
@@ -64,12 +68,14 @@ TEST(CapiTest, VersionAndErrorNamesAgreeWithTheHeader) {
   EXPECT_STREQ(gab_version(), GAB_VERSION_STRING);
 }
 
-// The C door reads the names the CLI reads, and takes the codec's orderings only.
+// The C door reads the names the CLI reads ("natural" is gab factor's: the
+// codec refuses it, gab_cholesky_create_ex takes it).
 TEST(CapiTest, OrderingNamesAreTheCliVocabulary) {
   EXPECT_EQ(gab_ordering_from_name("auto"), GAB_ORDERING_AUTO);
   EXPECT_EQ(gab_ordering_from_name("amd"), GAB_ORDERING_AMD);
   EXPECT_EQ(gab_ordering_from_name("nd"), GAB_ORDERING_ND);
-  EXPECT_EQ(gab_ordering_from_name("natural"), -1);  // gab factor's, not the codec's
+  EXPECT_EQ(gab_ordering_from_name("natural"), GAB_ORDERING_NATURAL);
+  EXPECT_EQ(gab_ordering_from_name("given"), -1);  // the engine's, for a caller's own permutation: no name
   EXPECT_EQ(gab_ordering_from_name("AMD"), -1);
   EXPECT_EQ(gab_ordering_from_name(""), -1);
   EXPECT_EQ(gab_ordering_from_name(nullptr), -1);
@@ -252,9 +258,15 @@ TEST(CapiTest, OptionsStructIsReadUpToItsSize) {
   EXPECT_EQ(compress(&o, nullptr).message,
             "gab_compress_ex: options->detail is 7: must be GAB_DETAIL_AUTO, GAB_DETAIL_ON or GAB_DETAIL_OFF");
   gab_compress_options_init(&o, sizeof o);
-  o.ordering = 3;
+  o.ordering = 4;
   EXPECT_EQ(compress(&o, nullptr).message,
-            "gab_compress_ex: options->ordering is 3: must be GAB_ORDERING_AUTO, GAB_ORDERING_AMD or GAB_ORDERING_ND");
+            "gab_compress_ex: options->ordering is 4: must be GAB_ORDERING_AUTO, GAB_ORDERING_AMD or GAB_ORDERING_ND");
+  o.ordering = GAB_ORDERING_NATURAL;  // a name of the engine's the codec does not factor with
+  const Outcome natural = compress(&o, nullptr);
+  EXPECT_EQ(natural.code, GAB_E_INVALID_ARGUMENT);
+  EXPECT_EQ(natural.message,
+            "gab_compress_ex: options->ordering is GAB_ORDERING_NATURAL: the codec's factorizations take "
+            "GAB_ORDERING_AUTO, GAB_ORDERING_AMD or GAB_ORDERING_ND (natural is for gab_cholesky_create_ex)");
   gab_compress_options_init(&o, sizeof o);
   o.solver = 3;
   EXPECT_EQ(compress(&o, nullptr).message,
@@ -486,6 +498,105 @@ TEST(CapiTest, DecompressOptionsBoundTheMemoryAndPickTheLevel) {
   gab_free(file);
 }
 
+// gab_decompress_options.ordering is the CLI's decompress --ordering: a
+// global-solver file's factorizations take it (the shape the C++ decoder
+// gives with that ordering, bit for bit); AUTO is the file's own. Another
+// ordering rounds differently: the same anchors, the shape the same to
+// 1e-11 of the diagonal (matrix_ordering.h).
+TEST(CapiTest, DecompressOrderingReachesTheFactorizations) {
+  const Mesh mesh = bumpy_torus(60, 30);
+  gab::EncodeOptions options;
+  options.solver = gab::Solver::kGlobal;
+  options.ordering = gab::Ordering::kAmd;
+  options.target_rms_rel = 2e-3;
+  gab::EncodeStats encoded;
+  const std::vector<uint8_t> file = gab::testing_util::encode_or_die(mesh, options, &encoded);
+  const double diagonal = gab::bounding_box_diagonal(mesh);
+  char message[256];
+  auto decode = [&](int32_t ordering) {
+    capi_mesh out{};
+    const int code = capi_decompress_ordered(file.data(), file.size(), ordering, &out, message, sizeof message);
+    EXPECT_EQ(code, GAB_OK) << ordering << ": " << message;
+    std::vector<double> positions(out.positions, out.positions + 3 * static_cast<size_t>(out.n));
+    capi_free_mesh(&out);
+    return positions;
+  };
+  auto cpp_decode = [&](gab::Ordering ordering) {
+    gab::DecodeOptions decode_options;
+    decode_options.ordering = ordering;
+    gab::DecodeStats stats;
+    const Mesh decoded = gab::testing_util::decode_or_die(file, decode_options, &stats);
+    EXPECT_EQ(stats.ordering, ordering == gab::Ordering::kAuto ? gab::Ordering::kAmd : ordering);
+    return decoded.positions;
+  };
+  const std::vector<double> own = decode(GAB_ORDERING_AUTO), amd = decode(GAB_ORDERING_AMD),
+                            nd = decode(GAB_ORDERING_ND);
+  EXPECT_EQ(own, cpp_decode(gab::Ordering::kAuto));
+  EXPECT_EQ(amd, own);  // the file's
+  EXPECT_EQ(nd, cpp_decode(gab::Ordering::kNestedDissection));
+  ASSERT_EQ(nd.size(), own.size());
+  EXPECT_NE(nd, own) << "nested dissection should round differently: is the ordering passed on?";
+  double largest = 0;
+  for (size_t i = 0; i < own.size(); ++i) largest = std::max(largest, std::fabs(nd[i] - own[i]));
+  EXPECT_LT(largest, 1e-11 * diagonal);
+
+  // Checked as the other fields: the codec's orderings only, and the ABI rule.
+  gab_decompress_options o;
+  gab_decompress_options_init(&o, sizeof o);
+  EXPECT_EQ(o.ordering, GAB_ORDERING_AUTO);
+  auto outcome = [&](const gab_decompress_options* d) {
+    double* positions = nullptr;
+    int32_t* triangles = nullptr;
+    int32_t n = 0, t = 0;
+    const int code = gab_decompress_ex(file.data(), file.size(), d, &positions, &n, &triangles, &t, message,
+                                       sizeof message);
+    const std::vector<double> decoded(positions, positions + 3 * static_cast<size_t>(n));
+    gab_free(positions);
+    gab_free(triangles);
+    return std::make_pair(Outcome{code, message}, decoded);
+  };
+  o.ordering = GAB_ORDERING_NATURAL;
+  const Outcome natural = outcome(&o).first;
+  EXPECT_EQ(natural.code, GAB_E_INVALID_ARGUMENT);
+  EXPECT_EQ(natural.message,
+            "gab_decompress_ex: options->ordering is GAB_ORDERING_NATURAL: the codec's factorizations take "
+            "GAB_ORDERING_AUTO, GAB_ORDERING_AMD or GAB_ORDERING_ND (natural is for gab_cholesky_create_ex)");
+  o.ordering = -1;
+  EXPECT_EQ(outcome(&o).first.message,
+            "gab_decompress_ex: options->ordering is -1: must be GAB_ORDERING_AUTO, GAB_ORDERING_AMD or "
+            "GAB_ORDERING_ND");
+  // An older caller's struct (up to threads): the ordering it does not know
+  // is the file's, whatever the bytes after its size hold.
+  struct {
+    gab_decompress_options o;
+    unsigned char guard[8];
+  } older;
+  std::memset(&older, 0xAB, sizeof older);
+  gab_decompress_options_init(&older.o, offsetof(gab_decompress_options, ordering));
+  EXPECT_EQ(older.o.size, offsetof(gab_decompress_options, ordering));
+  const auto old_caller = outcome(&older.o);
+  EXPECT_EQ(old_caller.first.code, GAB_OK) << old_caller.first.message;
+  EXPECT_EQ(old_caller.second, own);
+  // A newer caller's larger struct: a zero tail accepted, a set byte refused.
+  struct {
+    gab_decompress_options o;
+    int64_t future[2];
+  } newer;
+  std::memset(&newer, 0, sizeof newer);
+  gab_decompress_options_init(&newer.o, sizeof newer.o);
+  newer.o.size = sizeof newer;
+  newer.o.ordering = GAB_ORDERING_ND;
+  const auto new_caller = outcome(&newer.o);
+  EXPECT_EQ(new_caller.first.code, GAB_OK) << new_caller.first.message;
+  EXPECT_EQ(new_caller.second, nd);
+  newer.future[0] = 1;
+  const Outcome refused = outcome(&newer.o).first;
+  EXPECT_EQ(refused.code, GAB_E_UNSUPPORTED);
+  EXPECT_EQ(refused.message, "gab_decompress_ex: options->size is " + std::to_string(sizeof newer) + " and byte " +
+                                 std::to_string(sizeof newer.o) + " is set: gab " GAB_VERSION_STRING " knows " +
+                                 std::to_string(sizeof o) + " bytes of options");
+}
+
 TEST(CapiTest, CompressRejectsBadArgumentsWithClearMessages) {
   const Mesh mesh = bumpy_torus(8, 6);
   const double* p = mesh.positions.data();
@@ -608,6 +719,144 @@ TEST(CapiTest, CholeskySolvesAndUpdatesLikeAFreshFactorization) {
   ASSERT_EQ(gab_cholesky_solve(fresh, x_again.data(), nrhs), GAB_OK);
   for (size_t i = 0; i < b.size(); ++i) EXPECT_NEAR(x_again[i], x[i], 1e-12 * (1 + std::fabs(x[i])));
   gab_cholesky_destroy(fresh);
+}
+
+// gab_cholesky_create_ex: every ordering of the engine (gab factor's
+// --ordering) and its threads. Each solves A x = b; the orderings differ in
+// the factor they make (natural's banded fill on a grid against AMD's),
+// as the C++ engine's analysis with the same ordering says; the thread count
+// changes nothing of the result.
+TEST(CapiTest, CholeskyOptionsPickTheOrderingAndTheThreads) {
+  const gab::CscMatrix a = gab_test::grid_laplacian(40, 0.05);
+  const int32_t n = a.nrows, nrhs = 2;
+  std::vector<double> b(static_cast<size_t>(n) * nrhs);
+  for (size_t i = 0; i < b.size(); ++i) b[i] = std::cos(0.13 * static_cast<double>(i)) + 0.2;
+  struct Case {
+    int32_t code;
+    gab::Ordering ordering;
+  };
+  const Case cases[] = {{GAB_ORDERING_AMD, gab::Ordering::kAmd},
+                        {GAB_ORDERING_ND, gab::Ordering::kNestedDissection},
+                        {GAB_ORDERING_NATURAL, gab::Ordering::kNatural},
+                        {GAB_ORDERING_AUTO, gab::Ordering::kAmd}};  // AMD below 100,000 columns
+  char message[256];
+  std::vector<int64_t> entries;
+  for (const Case& c : cases) {
+    // The C++ engine's factor for this ordering: its size is what the handle reports.
+    gab::Cholesky reference;
+    gab::AnalyzeOptions analyze;
+    analyze.ordering = c.ordering;
+    ASSERT_TRUE(reference.analyze(a, analyze).ok());
+    const int64_t expected = reference.symbolic().value_ptr.back();
+    std::vector<double> one_thread;
+    for (int32_t threads : {1, 2, 0}) {
+      std::vector<double> x(b.size());
+      int64_t stored = 0;
+      ASSERT_EQ(capi_cholesky_ordered(n, a.colptr.data(), a.rowind.data(), a.values.data(), c.code, threads,
+                                      b.data(), nrhs, x.data(), &stored, message, sizeof message),
+                GAB_OK)
+          << c.code << ", " << threads << " threads: " << message;
+      EXPECT_EQ(stored, expected) << c.code;
+      for (int32_t r = 0; r < nrhs; ++r) {
+        const size_t at = static_cast<size_t>(r) * n;
+        EXPECT_LT(gab_test::relative_residual(a, &x[at], &b[at]), 1e-12) << c.code << ", " << threads << " threads";
+      }
+      if (threads == 1) {
+        one_thread = x;
+      } else {
+        EXPECT_EQ(x, one_thread) << c.code << ": " << threads << " threads";
+      }
+    }
+    entries.push_back(expected);
+  }
+  // Natural order fills the grid's band (nnz(L) about n k, three times AMD's here).
+  EXPECT_GT(entries[2], 3 * entries[0] / 2) << "natural order should fill a grid's band, AMD far less";
+  EXPECT_GT(entries[2], 3 * entries[1] / 2) << "natural order should fill a grid's band, ND far less";
+  EXPECT_EQ(entries[3], entries[0]);
+  // NULL options and the initialized defaults are gab_cholesky_create.
+  gab_cholesky* plain = nullptr;
+  gab_cholesky* defaults = nullptr;
+  gab_cholesky_options o;
+  gab_cholesky_options_init(&o, sizeof o);
+  EXPECT_EQ(o.size, sizeof o);
+  EXPECT_EQ(o.ordering, GAB_ORDERING_AMD);
+  EXPECT_EQ(o.threads, 1);
+  ASSERT_EQ(gab_cholesky_create(n, a.colptr.data(), a.rowind.data(), nullptr, &plain, message, sizeof message),
+            GAB_OK);
+  ASSERT_EQ(gab_cholesky_create_ex(n, a.colptr.data(), a.rowind.data(), nullptr, nullptr, &defaults, message,
+                                   sizeof message),
+            GAB_OK);
+  EXPECT_EQ(gab_cholesky_factor_entries(plain), entries[0]);
+  EXPECT_EQ(gab_cholesky_factor_entries(defaults), entries[0]);
+  gab_cholesky_destroy(plain);
+  gab_cholesky_destroy(defaults);
+}
+
+TEST(CapiTest, CholeskyOptionsAreCheckedAsTheOtherOptions) {
+  const std::vector<int32_t> colptr = {0, 2, 3, 4}, rowind = {0, 1, 1, 2};
+  const double values[4] = {2, -1, 2, 1};
+  char message[256];
+  auto create = [&](const gab_cholesky_options* o) {
+    gab_cholesky* c = reinterpret_cast<gab_cholesky*>(&message);  // must come back NULL on failure
+    const int code = gab_cholesky_create_ex(3, colptr.data(), rowind.data(), values, o, &c, message, sizeof message);
+    const bool cleared = code == GAB_OK || c == nullptr;
+    if (code == GAB_OK) gab_cholesky_destroy(c);
+    return cleared ? Outcome{code, message} : Outcome{GAB_E_INTERNAL, "handle not cleared on failure"};
+  };
+  gab_cholesky_options o;
+  gab_cholesky_options_init(&o, sizeof o);
+  EXPECT_EQ(create(&o).code, GAB_OK) << message;
+  o.ordering = 7;
+  const Outcome unknown = create(&o);
+  EXPECT_EQ(unknown.code, GAB_E_INVALID_ARGUMENT);
+  EXPECT_EQ(unknown.message,
+            "gab_cholesky_create_ex: options->ordering is 7: must be GAB_ORDERING_AMD, GAB_ORDERING_ND, "
+            "GAB_ORDERING_NATURAL or GAB_ORDERING_AUTO");
+  gab_cholesky_options_init(&o, sizeof o);
+  o.threads = -2;
+  EXPECT_EQ(create(&o).message,
+            "gab_cholesky_create_ex: options->threads is -2: must be in 0..64 (0: every core)");
+  // An older caller's struct (up to ordering): the threads it does not know
+  // take their default whatever the bytes after its size hold.
+  struct {
+    gab_cholesky_options o;
+    unsigned char guard[8];
+  } older;
+  std::memset(&older, 0xAB, sizeof older);
+  gab_cholesky_options_init(&older.o, offsetof(gab_cholesky_options, threads));
+  EXPECT_EQ(older.o.size, offsetof(gab_cholesky_options, threads));
+  EXPECT_EQ(older.o.ordering, GAB_ORDERING_AMD);
+  older.o.ordering = GAB_ORDERING_NATURAL;
+  EXPECT_EQ(create(&older.o).code, GAB_OK) << message;
+  // A newer caller's larger struct: a zero tail accepted, a set byte refused.
+  struct {
+    gab_cholesky_options o;
+    int64_t future[2];
+  } newer;
+  std::memset(&newer, 0, sizeof newer);
+  gab_cholesky_options_init(&newer.o, sizeof newer.o);
+  newer.o.size = sizeof newer;
+  EXPECT_EQ(create(&newer.o).code, GAB_OK) << message;
+  newer.future[1] = 1;
+  const Outcome refused = create(&newer.o);
+  EXPECT_EQ(refused.code, GAB_E_UNSUPPORTED);
+  EXPECT_EQ(refused.message, "gab_cholesky_create_ex: options->size is " + std::to_string(sizeof newer) +
+                                 " and byte " + std::to_string(sizeof newer - 8) + " is set: gab " GAB_VERSION_STRING
+                                 " knows " + std::to_string(sizeof o) + " bytes of options");
+  gab_cholesky_options_init(&o, 4);  // not even the size field: nothing written
+  o.size = 4;
+  EXPECT_EQ(create(&o).message,
+            "gab_cholesky_create_ex: options->size is 4: set it with gab_cholesky_options_init");
+  // A pattern error is named as gab_cholesky_create names it.
+  gab_cholesky* c = nullptr;
+  EXPECT_EQ(gab_cholesky_create_ex(3, colptr.data(), rowind.data(), nullptr, nullptr, nullptr, message,
+                                   sizeof message),
+            GAB_E_INVALID_ARGUMENT);
+  EXPECT_STREQ(message, "gab_cholesky_create_ex: out is NULL");
+  EXPECT_EQ(gab_cholesky_create_ex(0, colptr.data(), rowind.data(), nullptr, nullptr, &c, message, sizeof message),
+            GAB_E_INVALID_ARGUMENT);
+  EXPECT_STREQ(message, "gab_cholesky_create_ex: n = 0: must be positive");
+  EXPECT_EQ(gab_cholesky_factor_entries(nullptr), -1);
 }
 
 TEST(CapiTest, CholeskyRejectsBadPatternsWithClearMessages) {

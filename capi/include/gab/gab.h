@@ -79,14 +79,19 @@ int gab_read_mesh(const char* path, double** positions, int32_t* n, int32_t** tr
 #define GAB_DETAIL_ON 1   /* with an error target: always */
 #define GAB_DETAIL_OFF 2  /* never: the anchors alone (a target may be missed) */
 
-/* The factorizations' fill-reducing ordering (gab_compress_options.ordering):
-   a matter of speed only, recorded in the file. */
-#define GAB_ORDERING_AUTO 0 /* "auto": nested dissection from 100,000 vertices, AMD below */
-#define GAB_ORDERING_AMD 1  /* "amd": approximate minimum degree */
-#define GAB_ORDERING_ND 2   /* "nd": nested dissection */
+/* A factorization's fill-reducing ordering (the .ordering of
+   gab_compress_options, gab_decompress_options and gab_cholesky_options):
+   a matter of speed and memory only, never of the result. A compress
+   records its ordering in the file. */
+#define GAB_ORDERING_AUTO 0    /* "auto": nested dissection from 100,000 vertices (columns), AMD below */
+#define GAB_ORDERING_AMD 1     /* "amd": approximate minimum degree */
+#define GAB_ORDERING_ND 2      /* "nd": nested dissection: less fill for large meshes, dearer to compute */
+#define GAB_ORDERING_NATURAL 3 /* "natural": the matrix's own order (its elimination tree postordered); for a
+                                  matrix already ordered well; gab_cholesky_options only (the codec refuses it) */
 
-/* The GAB_ORDERING_* value a name stands for ("auto", "amd" or "nd", as the
-   CLI's --ordering reads them); -1 for any other text or NULL. O(1). */
+/* The GAB_ORDERING_* value a name stands for ("auto", "amd", "nd" or
+   "natural", as the CLI's --ordering reads them); -1 for any other text or
+   NULL. O(1). */
 int gab_ordering_from_name(const char* name);
 
 /* The reconstruction operator (gab_compress_options.solver), recorded in
@@ -213,6 +218,11 @@ typedef struct gab_decompress_options {
                            the message saying how much the decode needs */
   int32_t max_anchors;  /* < 0 (default -1): the whole file, else its first max_anchors anchors */
   int32_t threads;      /* threads for the factorizations (default 1; 0: every core); same shape for any count */
+  int32_t ordering;     /* a global-solver file's factorizations' (--ordering): GAB_ORDERING_AUTO (default)
+                           the one the file records, or GAB_ORDERING_AMD or GAB_ORDERING_ND. Speed and memory
+                           only: the same anchors and detail positions bit for bit, a shape solved from the
+                           anchors the same up to rounding (1e-11 of the diagonal); an iterative-solver file
+                           has no factor and ignores it */
 } gab_decompress_options;
 
 /* Sets the defaults, as gab_compress_options_init does. */
@@ -233,9 +243,34 @@ typedef struct gab_cholesky gab_cholesky;
    each column strictly increasing, all >= the column (lower triangle), the
    diagonal present. When values is not NULL the matrix is factorized too.
    The pattern is copied: the caller's arrays may go. Cost: AMD ordering and
-   symbolic analysis, O(nnz(L)) memory reserved for the factor. */
+   symbolic analysis, O(nnz(L)) memory reserved for the factor; one thread. */
 int gab_cholesky_create(int32_t n, const int32_t* colptr, const int32_t* rowind,
                         const double* values, gab_cholesky** out, char* message, size_t message_size);
+
+/* Options of gab_cholesky_create_ex; ABI-stable as gab_compress_options
+   (fill with gab_cholesky_options_init, then set fields). The defaults are
+   gab_cholesky_create's. */
+typedef struct gab_cholesky_options {
+  size_t size;      /* sizeof(gab_cholesky_options) as the caller compiled it */
+  int32_t ordering; /* GAB_ORDERING_AMD (default), GAB_ORDERING_ND, GAB_ORDERING_NATURAL or GAB_ORDERING_AUTO:
+                       the fill, hence the factor's memory and the factorization's time; the solutions are
+                       the same up to rounding */
+  int32_t threads;  /* threads for the factorizations, solves and the nested dissection (default 1; 0: every
+                       core); the same factor, bit for bit, for any count */
+} gab_cholesky_options;
+
+/* Sets the defaults, as gab_compress_options_init does. */
+void gab_cholesky_options_init(gab_cholesky_options* options, size_t size);
+
+/* gab_cholesky_create with options (NULL: the defaults, gab_cholesky_create
+   itself). An options struct larger than this library knows is accepted
+   when its unknown bytes are zero, else GAB_E_UNSUPPORTED; an unknown
+   ordering or a thread count outside 0..64 is GAB_E_INVALID_ARGUMENT. Cost:
+   the options' ordering (nested dissection several times AMD's time,
+   natural none) and symbolic analysis. */
+int gab_cholesky_create_ex(int32_t n, const int32_t* colptr, const int32_t* rowind, const double* values,
+                           const gab_cholesky_options* options, gab_cholesky** out, char* message,
+                           size_t message_size);
 /* Numeric factorization: values in the pattern's order (colptr[n] finite
    doubles). Discards any earlier updates. */
 int gab_cholesky_factorize(gab_cholesky* c, const double* values, char* message, size_t message_size);
@@ -244,6 +279,11 @@ int gab_cholesky_solve(gab_cholesky* c, double* b, int32_t nrhs);
 /* A + w^2 e_j e_j^T, in place: Givens rotations along the elimination-tree
    path of j, no change of structure. Needs a factorization. */
 int gab_cholesky_add_anchor(gab_cholesky* c, int32_t j, double w);
+/* The doubles the factor is stored in, reserved at create (8 bytes each:
+   the bulk of the handle's memory): nnz(L) and the explicit zeros of its
+   supernodes' dense blocks, what the ordering is chosen to keep small. -1
+   when c is NULL. O(1). */
+int64_t gab_cholesky_factor_entries(const gab_cholesky* c);
 /* The message of the last call on c (solve, add_anchor, factorize): "" when
    it succeeded. Valid until the next call on c. */
 const char* gab_cholesky_message(const gab_cholesky* c);
