@@ -12,6 +12,7 @@ arrays in and out).
 
     chol = gab.Cholesky(A)                   # A: scipy.sparse (any format), dense, or (indptr, indices, data);
     x = chol.solve(b)                        #    symmetric or its lower triangle
+    chol = gab.Cholesky(A, ordering="nd", threads=0)  # another ordering, every core
     chol.add_anchor(j, w)                    # now the factor of A + w^2 e_j e_j^T
 
 Every failure of the library raises GabError with its message; a file cut
@@ -53,6 +54,7 @@ except ImportError as _error:
 from ._capi import (  # noqa: E402 (after numpy's check, so its message comes first)
     GAB_W_TRUNCATED,
     LIB,
+    CholeskyOptions,
     CompressOptions,
     CompressReport,
     DecompressOptions,
@@ -68,6 +70,9 @@ __all__ = ["Cholesky", "CompressStats", "GabError", "TruncatedWarning", "compres
 _DETAIL = {"auto": 0, "on": 1, "off": 2}
 _SOLVER_NAMES = {1: "global", 2: "iterative"}  # GAB_SOLVER_*
 _ORDERING_NAMES = {1: "amd", 2: "nd"}  # GAB_ORDERING_*
+_CODEC_ORDERINGS = ["auto", "amd", "nd"]  # what the codec factors with (gab.h: GAB_ORDERING_*)
+_CHOLESKY_ORDERINGS = ["amd", "nd", "natural", "auto"]  # the engine's, gab factor's default first
+_MAX_THREADS = 64  # gab.h: threads 0..64 (0: every core)
 _DEFAULT_ERROR = 1e-3
 _GAB_E_STATE = 9
 
@@ -265,10 +270,10 @@ def compress(V, F, error=None, anchors=None, linf=None, bits=None, weight=None, 
     if weight is not None:
         options.weight = _real_arg(call, weight, "weight")
     options.reorder = _bool_arg(call, reorder, "reorder")
-    options.threads = _int_arg(call, threads, "threads", 0)
+    options.threads = _int_arg(call, threads, "threads", 0, _MAX_THREADS)
     options.detail = _DETAIL[_name_arg(call, detail, "detail", list(_DETAIL))]
     options.refine = _bool_arg(call, refine, "refine")
-    options.ordering = LIB.gab_ordering_from_name(_name_arg(call, ordering, "ordering", ["auto", "amd", "nd"]).encode())
+    options.ordering = _ordering_code(call, ordering, _CODEC_ORDERINGS)
     options.solver = LIB.gab_solver_from_name(
         _name_arg(call, solver, "solver", ["auto", "global", "iterative"]).encode())
     report = None
@@ -290,6 +295,11 @@ def compress(V, F, error=None, anchors=None, linf=None, bits=None, weight=None, 
     return data if report is None else (data, _stats_of(report))
 
 
+def _ordering_code(call, name, names):
+    """The GAB_ORDERING_* code of an ordering argument, one of `names`."""
+    return LIB.gab_ordering_from_name(_name_arg(call, name, "ordering", names).encode())
+
+
 def _bytes_arg(call, data, name):
     """A bytes-like argument (bytes, bytearray, memoryview, a uint8 array) as bytes."""
     try:
@@ -299,14 +309,17 @@ def _bytes_arg(call, data, name):
                         f"got {type(data).__name__}") from None
 
 
-def decompress(data, anchors=None, max_memory=None, threads=1):
+def decompress(data, anchors=None, max_memory=None, threads=1, ordering="auto"):
     """Decodes a .gab file (bytes-like) into (V, F); anchors=K decodes only the
     first K anchors (a coarser level). max_memory: the bytes the decode may
     take (None: 32 KiB per byte of the file, at least 64 MiB; -1: no limit;
     over it GabError GAB_E_RESOURCE_EXHAUSTED says how much it needs).
     threads: for the factorizations (0: every core; same shape for any
-    count). A file cut short decodes to its complete chunks and warns
-    (TruncatedWarning, saying how many of how many); damaged or forged
+    count). ordering: a global-solver file's factorizations' ('auto': the
+    one the file records, 'amd' or 'nd', as the CLI's decompress
+    --ordering): speed and memory only, the same anchors and a shape the
+    same up to rounding. A file cut short decodes to its complete chunks and
+    warns (TruncatedWarning, saying how many of how many); damaged or forged
     bytes raise GabError."""
     call = "gab.decompress"
     data = _bytes_arg(call, data, "data")
@@ -316,7 +329,8 @@ def decompress(data, anchors=None, max_memory=None, threads=1):
         options.max_anchors = _int_arg(call, anchors, "anchors", 1)
     if max_memory is not None:
         options.max_memory = _int_arg(call, max_memory, "max_memory", -1, np.iinfo(np.int64).max)
-    options.threads = _int_arg(call, threads, "threads", 0)
+    options.threads = _int_arg(call, threads, "threads", 0, _MAX_THREADS)
+    options.ordering = _ordering_code(call, ordering, _CODEC_ORDERINGS)
     positions, n, triangles, t = _mesh_outputs()
     message = message_buffer()
     code = LIB.gab_decompress_ex(data, len(data), ctypes.byref(options), ctypes.byref(positions),
@@ -461,17 +475,31 @@ class Cholesky:
     triangle (e.g. scipy.sparse.tril(A, format='csc')). Only the lower
     triangle is used.
 
-    Cholesky(A) analyzes and factorizes; analyze takes the pattern (AMD
-    ordering and symbolic analysis, once per pattern); factorize the values;
-    solve (or calling the object, chol(b)) solves A x = b for one or several
+    Cholesky(A) analyzes and factorizes; analyze takes the pattern (ordering
+    and symbolic analysis, once per pattern); factorize the values; solve (or
+    calling the object, chol(b)) solves A x = b for one or several
     right-hand sides; add_anchor(j, w) turns the factor into that of
     A + w^2 e_j e_j^T in place (Givens rotations along the elimination tree).
-    close() (or the end of a with block) releases it."""
+    close() (or the end of a with block) releases it.
 
-    def __init__(self, A=None):
+    ordering: the fill-reducing ordering every analyze uses, as `gab factor
+    --ordering`: 'amd' (approximate minimum degree, the default), 'nd'
+    (nested dissection: less fill on large meshes, several times AMD's
+    ordering time), 'natural' (A's own order, for a matrix already ordered
+    well) or 'auto' (nd from 100,000 columns, amd below). It sets the fill,
+    hence factor_entries (the memory) and the time; the solutions are the
+    same up to rounding. threads: for the factorizations, solves and the
+    nested dissection (0: every core; the same factor for any count)."""
+
+    def __init__(self, A=None, ordering="amd", threads=1):
+        call = "gab.Cholesky"
         self._handle = None
         self._pattern = None
         self._closed = False
+        self._options = CholeskyOptions()
+        LIB.gab_cholesky_options_init(ctypes.byref(self._options), ctypes.sizeof(self._options))
+        self._options.ordering = _ordering_code(call, ordering, _CHOLESKY_ORDERINGS)
+        self._options.threads = _int_arg(call, threads, "threads", 0, _MAX_THREADS)
         if A is not None:
             n, indptr, indices, data = _lower_csc("Cholesky.analyze", A)
             self._analyze(n, indptr, indices)
@@ -482,17 +510,26 @@ class Cholesky:
     def n(self):
         return 0 if self._pattern is None else self._pattern[0]
 
+    @property
+    def factor_entries(self):
+        """The doubles the factor is stored in (8 bytes each: the bulk of its
+        memory): nnz(L) and the explicit zeros of its supernodes' blocks,
+        what the ordering is chosen to keep small. Known once analyzed."""
+        self._require("Cholesky.factor_entries")
+        return int(LIB.gab_cholesky_factor_entries(self._handle))
+
     def analyze(self, A):
-        """Ordering and symbolic analysis of A's pattern (its values are not used)."""
+        """Ordering (the one the constructor took) and symbolic analysis of
+        A's pattern (its values are not used)."""
         n, indptr, indices, _ = _lower_csc("Cholesky.analyze", A)
         return self._analyze(n, indptr, indices)
 
     def _analyze(self, n, indptr, indices):
         handle = ctypes.c_void_p()
         message = message_buffer()
-        code = LIB.gab_cholesky_create(n, indptr.ctypes.data_as(ctypes.POINTER(ctypes.c_int32)),
-                                       indices.ctypes.data_as(ctypes.POINTER(ctypes.c_int32)), None,
-                                       ctypes.byref(handle), message, len(message))
+        code = LIB.gab_cholesky_create_ex(n, indptr.ctypes.data_as(ctypes.POINTER(ctypes.c_int32)),
+                                          indices.ctypes.data_as(ctypes.POINTER(ctypes.c_int32)), None,
+                                          ctypes.byref(self._options), ctypes.byref(handle), message, len(message))
         check(code, message)
         self.close()
         self._handle = handle

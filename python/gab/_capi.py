@@ -56,6 +56,17 @@ class DecompressOptions(ctypes.Structure):
         ("max_memory", c_int64),
         ("max_anchors", c_int32),
         ("threads", c_int32),
+        ("ordering", c_int32),
+    ]
+
+
+class CholeskyOptions(ctypes.Structure):
+    """gab_cholesky_options, field for field (gab.h)."""
+
+    _fields_ = [
+        ("size", c_size_t),
+        ("ordering", c_int32),
+        ("threads", c_int32),
     ]
 
 
@@ -138,6 +149,12 @@ def _declare(lib):
             c_int,
             [c_int32, P(c_int32), P(c_int32), P(c_double), P(c_void_p), c_char_p, c_size_t],
         ),
+        "gab_cholesky_options_init": (None, [P(CholeskyOptions), c_size_t]),
+        "gab_cholesky_create_ex": (
+            c_int,
+            [c_int32, P(c_int32), P(c_int32), P(c_double), P(CholeskyOptions), P(c_void_p), c_char_p, c_size_t],
+        ),
+        "gab_cholesky_factor_entries": (c_int64, [c_void_p]),
         "gab_cholesky_factorize": (c_int, [c_void_p, P(c_double), c_char_p, c_size_t]),
         "gab_cholesky_solve": (c_int, [c_void_p, P(c_double), c_int32]),
         "gab_cholesky_add_anchor": (c_int, [c_void_p, c_int32, c_double]),
@@ -165,6 +182,7 @@ PYTHON_NAMES = {
     "gab_decompress_ex": "gab.decompress",
     "gab_read_mesh": "gab.read_mesh",
     "gab_cholesky_create": "Cholesky.analyze",
+    "gab_cholesky_create_ex": "Cholesky.analyze",
     "gab_cholesky_factorize": "Cholesky.factorize",
     "gab_cholesky_solve": "Cholesky.solve",
     "gab_cholesky_add_anchor": "Cholesky.add_anchor",

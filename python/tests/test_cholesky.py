@@ -210,6 +210,59 @@ class CholeskyTest(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, r"^Cholesky.analyze: indices must be in 0..1, got 2$"):
             gab.Cholesky((np.array([0, 2, 3]), np.array([0, 2, 1]), np.array([2.0, -1, 2])))
 
+    def test_every_ordering_and_thread_count_solves(self):
+        """ordering= and threads= are `gab factor`'s: every ordering solves;
+        they differ in the factor (natural order fills a grid's band, AMD and
+        nested dissection far less); 'auto' is AMD below 100,000 columns; the
+        thread count changes nothing of the result."""
+        A, dense = grid_laplacian(30, 0.05)
+        b = np.stack([np.sin(np.arange(A.shape[0])), np.ones(A.shape[0])], 1)
+        entries = {}
+        for ordering in ("amd", "nd", "natural", "auto"):
+            one_thread = None
+            for threads in (1, 2, 0):
+                with self.subTest(ordering=ordering, threads=threads):
+                    chol = gab.Cholesky(A, ordering=ordering, threads=threads)
+                    x = chol.solve(b)
+                    self.assertLess(np.linalg.norm(dense @ x - b) / np.linalg.norm(b), 1e-12)
+                    if one_thread is None:
+                        one_thread = x
+                        entries[ordering] = chol.factor_entries
+                    else:
+                        self.assertTrue(np.array_equal(x, one_thread))
+                        self.assertEqual(chol.factor_entries, entries[ordering])
+        self.assertGreater(entries["natural"], 1.5 * entries["amd"])
+        self.assertGreater(entries["natural"], 1.5 * entries["nd"])
+        self.assertEqual(entries["auto"], entries["amd"])
+        self.assertEqual(gab.Cholesky(A).factor_entries, entries["amd"])  # the default
+        # analyze keeps the constructor's ordering.
+        chol = gab.Cholesky(ordering="natural").analyze(A)
+        self.assertEqual(chol.factor_entries, entries["natural"])
+        self.assertTrue(np.allclose(dense @ chol.factorize(A).solve(b), b, rtol=0, atol=1e-12))
+
+    def test_ordering_and_threads_are_checked(self):
+        A, _ = grid_laplacian(4, 0.5)
+        orderings = "'amd', 'nd', 'natural' or 'auto'"
+        for error, pattern, call in [
+            (ValueError, rf"^gab\.Cholesky: ordering must be {orderings}, got 'AMD'$",
+             lambda: gab.Cholesky(A, ordering="AMD")),
+            (ValueError, rf"^gab\.Cholesky: ordering must be {orderings}, got 'given'$",
+             lambda: gab.Cholesky(ordering="given")),
+            (TypeError, rf"^gab\.Cholesky: ordering must be {orderings}, got NoneType$",
+             lambda: gab.Cholesky(A, ordering=None)),
+            (ValueError, r"^gab\.Cholesky: threads must be in 0\.\.64, got 65$",
+             lambda: gab.Cholesky(A, threads=65)),
+            (ValueError, r"^gab\.Cholesky: threads must be in 0\.\.64, got -1$",
+             lambda: gab.Cholesky(threads=-1)),
+            (TypeError, r"^gab\.Cholesky: threads must be an integer, got float$",
+             lambda: gab.Cholesky(A, threads=2.0)),
+        ]:
+            with self.subTest(pattern=pattern):
+                with self.assertRaisesRegex(error, pattern):
+                    call()
+        with self.assertRaisesRegex(gab.GabError, r"^Cholesky.factor_entries: no analyzed matrix"):
+            gab.Cholesky().factor_entries
+
     def test_a_closed_factor_says_it_is_closed(self):
         A, dense = grid_laplacian(4, 0.5)
         chol = gab.Cholesky(A)

@@ -264,6 +264,43 @@ class CodecTest(unittest.TestCase):
         self.assertEqual(gab.decompress(data, max_memory=-1)[0].tolist(), gab.decompress(data)[0].tolist())
         self.assertEqual(gab.decompress(data, threads=2)[0].tolist(), gab.decompress(data)[0].tolist())
 
+    def test_decompress_ordering_is_the_cli_s(self):
+        """ordering= is `gab decompress --ordering`: a global-solver file's
+        factorizations take it; 'auto' is the file's own (AMD on a small
+        mesh); another rounds differently, the shape the same to 1e-11 of
+        the diagonal."""
+        V, F = bumpy_torus(40, 20)
+        data = gab.compress(V, F, error=2e-3, solver="global")
+        own = gab.decompress(data)[0]
+        self.assertEqual(gab.decompress(data, ordering="auto")[0].tolist(), own.tolist())
+        self.assertEqual(gab.decompress(data, ordering="amd")[0].tolist(), own.tolist())
+        nd = gab.decompress(data, ordering="nd", threads=2)[0]
+        self.assertFalse(np.array_equal(nd, own), "nd should round differently: is the ordering passed on?")
+        self.assertLess(np.max(np.abs(nd - own)), 1e-11 * np.linalg.norm(V.max(0) - V.min(0)))
+        self.assertEqual(gab.decompress(data, ordering="nd")[0].tolist(), nd.tolist())  # any thread count
+        with self.assertRaisesRegex(ValueError, r"^gab\.decompress: ordering must be 'auto', 'amd' or 'nd', "
+                                                r"got 'natural'$"):
+            gab.decompress(data, ordering="natural")  # gab.Cholesky's, not the codec's
+        with self.assertRaisesRegex(TypeError, r"^gab\.decompress: ordering must be 'auto', 'amd' or 'nd', "
+                                               r"got int$"):
+            gab.decompress(data, ordering=2)
+        with self.assertRaisesRegex(ValueError, r"^gab\.decompress: threads must be in 0\.\.64, got 65$"):
+            gab.decompress(data, threads=65)
+
+    def test_the_options_structs_match_the_library(self):
+        """gab._capi's option structs are gab.h's field for field: the library's init of a larger buffer says
+        how large its struct is."""
+        import ctypes
+        from gab import _capi
+
+        for struct, init in [(_capi.CompressOptions, _capi.LIB.gab_compress_options_init),
+                             (_capi.DecompressOptions, _capi.LIB.gab_decompress_options_init),
+                             (_capi.CholeskyOptions, _capi.LIB.gab_cholesky_options_init)]:
+            with self.subTest(struct=struct.__name__):
+                buffer = ctypes.create_string_buffer(4096)
+                init(ctypes.cast(buffer, ctypes.POINTER(struct)), len(buffer))
+                self.assertEqual(ctypes.c_size_t.from_buffer(buffer).value, ctypes.sizeof(struct))
+
     def test_read_mesh(self):
         with tempfile.TemporaryDirectory() as folder:
             path = os.path.join(folder, "quad.off")
