@@ -11,7 +11,8 @@ For every mesh, at one relative vertex RMS target (default 1e-3):
 
 * Draco: `draco_encoder -cl 10 -qp Q` at the smallest Q whose decoded RMS
   meets the target (found as bench/draco_compare.py finds it); its real file.
-* gab: `gab compress --error TARGET --reorder` (default options otherwise).
+* gab: `gab compress --error TARGET --reorder` (default options otherwise;
+  --compress-args adds more, e.g. "--solver global" for the paper's operator).
 
 Both files are then decoded ROUNDS times, interleaved (gab, Draco, gab, ...),
 each `gab decompress --threads T` / `draco_decoder` writing binary PLY to a
@@ -52,6 +53,7 @@ def main():
     ap.add_argument("--rounds", type=int, default=5, help="decodes of each file (the median is kept)")
     ap.add_argument("--threads", type=int, default=1, help="gab decompress --threads (Draco has one)")
     ap.add_argument("--speeds", default="1,10", help="link speeds in Mbit/s, a comma list")
+    ap.add_argument("--compress-args", default="", help="more gab compress options, one string (e.g. \"--solver global\")")
     args = ap.parse_args()
 
     missing = draco_compare.tools_missing(args.gab)
@@ -77,7 +79,7 @@ def main():
             draco_compare.run(["draco_encoder", "-i", obj, "-o", drc, "-cl", "10", "-qp", str(qp)])
             gab = os.path.join(work, name + ".gab")
             draco_compare.run([args.gab, "compress", "-i", mesh, "-o", gab, "--error", repr(args.target),
-                               "--reorder"])
+                               "--reorder"] + args.compress_args.split())
             out = os.path.join(work, "out.ply")
             gab_s, draco_s = [], []
             for _ in range(args.rounds):
@@ -92,7 +94,8 @@ def main():
                          "gab_s": statistics.median(gab_s), "draco_s": statistics.median(draco_s)})
             print(f"[{name}: done]", file=sys.stderr, flush=True)
 
-    print(f"\n### Full mesh over a link at relative RMS {args.target:g} (gab --reorder, "
+    options = " ".join(["--reorder"] + args.compress_args.split())
+    print(f"\n### Full mesh over a link at relative RMS {args.target:g} (gab {options}, "
           f"{args.threads} thread(s); Draco -cl 10 at the qp meeting the target; median of {args.rounds})\n")
     head = "| mesh | n | gab bytes | Draco bytes (qp) | gab decode s | Draco decode s |"
     rule = "|---|---:|---:|---:|---:|---:|"

@@ -7,6 +7,9 @@
 //   level=L         stop at level L (the first L + 1 chunks), as if the
 //                   file ended there
 //   compact=1       a one-line panel (level, anchors, bytes), for pictures
+//   flat=1          flat shading: one normal per triangle (facets visible)
+//   zoom=Z          the first view's distance over the fitting one (0.5: twice
+//                   as close), for close-ups
 //   up=AXIS         the file's axis shown up: x, y, z, -x, -y or -z (default
 //                   +Y, or +Z when the view is along Y; the U key cycles)
 //
@@ -22,6 +25,8 @@
   const fileName = params.get('file');
   const stopLevel = params.has('level') ? parseInt(params.get('level'), 10) : -1;
   const compact = params.get('compact') === '1';
+  const flatShading = params.get('flat') === '1';
+  const homeZoom = params.has('zoom') ? Math.min(20, Math.max(0.05, parseFloat(params.get('zoom')) || 1)) : 1;
   if (compact) document.body.classList.add('compact');
 
   const canvas = document.getElementById('view');
@@ -290,6 +295,18 @@
     return normals;
   }
 
+  // Flat shading: every triangle its own three vertices, so the normals
+  // averaged at a vertex are its triangle's (three times the memory).
+  function unshared(positions, indices) {
+    const flat = new Float32Array(3 * indices.length);
+    for (let k = 0; k < indices.length; ++k) {
+      for (let c = 0; c < 3; ++c) flat[3 * k + c] = positions[3 * indices[k] + c];
+    }
+    const order = new Uint32Array(indices.length);
+    for (let k = 0; k < order.length; ++k) order[k] = k;
+    return [flat, order];
+  }
+
   // The first level fixes the camera (the bounding box barely moves after):
   // each later level replaces the shape in place, so refinement is visible.
   function uploadMesh(positions, indices) {
@@ -309,6 +326,7 @@
       homeView();
       fitted = true;
     }
+    if (flatShading) [positions, indices] = unshared(positions, indices);
     gl.bindBuffer(gl.ARRAY_BUFFER, positionBuffer);
     gl.bufferData(gl.ARRAY_BUFFER, positions, gl.STATIC_DRAW);
     gl.bindBuffer(gl.ARRAY_BUFFER, normalBuffer);
@@ -461,7 +479,7 @@
       right[1], upVector[1], toCamera[1], 0,
       right[2], upVector[2], toCamera[2], 0,
       0, 0, 0, 1]);
-    zoom = 1;
+    zoom = homeZoom;
     canvas.dataset.view = JSON.stringify({ toCamera: toCamera.map((x) => +x.toFixed(4)), up: up });
   }
 

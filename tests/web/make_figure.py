@@ -1,11 +1,14 @@
 #!/usr/bin/env python3
-"""The picture of the viewer in docs/viewer.md: one .gab file shown at several levels
-side by side (the paper's Figure 6, live), each panel the page itself with
-?file=NAME&level=L&compact=1, screenshotted by headless Chromium.
+"""Pictures of the viewer for the docs: one .gab file shown at several levels
+side by side (docs/viewer.md: the paper's Figure 6, live), each panel the
+page itself with ?file=NAME&level=L&compact=1, or panels of the page's own
+parameters (docs/tuning-codec.md: decoded shapes close up, flat shaded),
+screenshotted by headless Chromium.
 
   make_figure.py SITE NAME.gab LEVEL... -o docs/viewer-levels.png
+  make_figure.py SITE --panel 'file=A.gab&flat=1&zoom=0.5' --panel ... -o OUT.png
 
-SITE is a folder made by scripts/build-web.sh that holds NAME.gab.
+SITE is a folder made by scripts/build-web.sh that holds the files.
 """
 
 import argparse
@@ -40,19 +43,23 @@ const timer = setInterval(() => {
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("site")
-    parser.add_argument("file")
-    parser.add_argument("levels", nargs="+", type=int)
+    parser.add_argument("file", nargs="?")
+    parser.add_argument("levels", nargs="*", type=int)
+    parser.add_argument("--panel", action="append", default=[], help="a panel's query string (compact=1 added)")
+    parser.add_argument("--size", type=int, default=PANEL, help="a panel's width and height in pixels")
     parser.add_argument("-o", "--output", required=True)
     args = parser.parse_args()
-    frames = "".join('<iframe src="index.html?file=%s&level=%d&compact=1"></iframe>' % (args.file, level)
-                     for level in args.levels)
+    queries = args.panel + ["file=%s&level=%d" % (args.file, level) for level in args.levels]
+    if not queries or (args.levels and not args.file):
+        parser.error("give NAME.gab and levels, or --panel queries")
+    frames = "".join('<iframe src="index.html?%s&compact=1"></iframe>' % query for query in queries)
     with open(os.path.join(args.site, "figure.html"), "w") as f:
-        f.write(FIGURE % (PANEL, PANEL, frames))
+        f.write(FIGURE % (args.size, args.size, frames))
     work = os.path.dirname(os.path.abspath(args.site))
     browser = viewer_test.Browser(viewer_test.find_chromium(), work)
     try:
         browser.call("Emulation.setDeviceMetricsOverride",
-                     {"width": PANEL * len(args.levels), "height": PANEL, "deviceScaleFactor": 1, "mobile": False})
+                     {"width": args.size * len(queries), "height": args.size, "deviceScaleFactor": 1, "mobile": False})
         with viewer_test.Server(args.site) as server:
             title, _ = browser.load("http://127.0.0.1:%d/figure.html" % server.port)
             print(title)
