@@ -1,0 +1,23 @@
+// Eigenvectors of a symmetric band matrix for given eigenvalues, by inverse
+// iteration (internal).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "eigensolver/band_tridiagonal.h"
+
+namespace gab {
+namespace eigen_detail {
+
+// For each values[t] (t < count, sorted descending, each accurate to about
+// eps ||band||), the unit eigenvector in column t of vectors (m x count,
+// column-major). Values closer than cluster_gap to their predecessor form a
+// cluster whose vectors are orthogonalized against each other, so a
+// multiple eigenvalue gets an orthonormal basis of its space. About
+// 2 b^2 m flops (the factorization of band - value I) per vector.
+void band_eigenvectors(const SymmetricBand& band, const double* values, int32_t count,
+                       double cluster_gap, uint64_t seed, double* vectors);
+
+}  // namespace eigen_detail
+}  // namespace gab

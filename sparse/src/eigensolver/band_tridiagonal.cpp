@@ -1,0 +1,90 @@
+// Band to tridiagonal by Givens rotations with bulge chasing (Rutishauser
+// 1963, Schwarz 1968; Golub & Van Loan, sec. 8.3 and the band notes of
+// sec. 4.3). Column j's entries below the subdiagonal are zeroed from the
+// band's edge inwards, each by a rotation of the adjacent rows (i - 1, i).
+// That rotation puts one entry outside the band, b + 1 below the diagonal
+// (the bulge); a rotation b rows further down removes it and makes the next
+// bulge b further on, until it falls off the matrix. The work array holds
+// half-bandwidth b + 1, so a bulge has a place.
+#include "eigensolver/band_tridiagonal.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gab {
+namespace eigen_detail {
+
+namespace {
+
+// The working band: half-bandwidth b + 1, symmetric access.
+struct Work {
+  int32_t m, b, ld;
+  double* a;
+  double& at(int32_t i, int32_t j) {
+    if (i < j) std::swap(i, j);
+    return a[(i - j) + static_cast<int64_t>(j) * ld];
+  }
+};
+
+// Applies the rotation [c s; -s c] to rows and columns (q - 1, q): every
+// entry that can be nonzero lies in columns [q - b - 1, q + b].
+void rotate(Work& w, int32_t q, double c, double s) {
+  const int32_t p = q - 1;
+  const int32_t lo = std::max(0, q - w.b - 1), hi = std::min(w.m - 1, q + w.b);
+  for (int32_t k = lo; k <= hi; ++k) {
+    if (k == p || k == q) continue;
+    double& x = w.at(p, k);
+    double& y = w.at(q, k);
+    const double xp = x, yq = y;
+    x = c * xp + s * yq;
+    y = -s * xp + c * yq;
+  }
+  const double app = w.at(p, p), aqq = w.at(q, q), apq = w.at(q, p);
+  w.at(p, p) = c * c * app + 2.0 * c * s * apq + s * s * aqq;
+  w.at(q, q) = s * s * app - 2.0 * c * s * apq + c * c * aqq;
+  w.at(q, p) = c * s * (aqq - app) + (c * c - s * s) * apq;
+}
+
+// Zeroes entry (q, col) against (q - 1, col) by a rotation of (q - 1, q).
+void eliminate(Work& w, int32_t q, int32_t col) {
+  const double x = w.at(q - 1, col), y = w.at(q, col);
+  if (y == 0.0) return;
+  const double r = std::hypot(x, y);
+  rotate(w, q, x / r, y / r);
+  w.at(q, col) = 0.0;  // exactly, not to rounding
+}
+
+}  // namespace
+
+void band_to_tridiagonal(const SymmetricBand& band, std::vector<double>* work, double* d,
+                         double* e) {
+  const int32_t m = band.m, b = band.b;
+  if (m == 0) return;
+  if (b <= 1) {
+    for (int32_t i = 0; i < m; ++i) {
+      d[i] = band.at(i, i);
+      e[i] = (b == 1 && i + 1 < m) ? band.at(i + 1, i) : 0.0;
+    }
+    return;
+  }
+  Work w{m, b, b + 2, nullptr};
+  work->assign(static_cast<size_t>(w.ld) * m, 0.0);
+  w.a = work->data();
+  for (int32_t j = 0; j < m; ++j) {
+    for (int32_t t = 0; t <= b && j + t < m; ++t) w.at(j + t, j) = band.at(j + t, j);
+  }
+  for (int32_t j = 0; j + 2 < m; ++j) {
+    for (int32_t r = std::min(b, m - 1 - j); r >= 2; --r) {
+      eliminate(w, j + r, j);
+      // The rotation of (q - 1, q), q = j + r, left a bulge at (q + b, q - 1).
+      for (int32_t q = j + r; q + b < m; q += b) eliminate(w, q + b, q - 1);
+    }
+  }
+  for (int32_t i = 0; i < m; ++i) {
+    d[i] = w.at(i, i);
+    e[i] = i + 1 < m ? w.at(i + 1, i) : 0.0;
+  }
+}
+
+}  // namespace eigen_detail
+}  // namespace gab

@@ -1,0 +1,314 @@
+// The front door of the eigensolver: checks, the shift and its factor, the
+// Lanczos runs with their convergence checks and restarts, the Ritz vectors
+// and their residuals. Shift-and-invert (Ericsson & Ruhe 1980; Grimes,
+// Lewis & Simon 1994): Op = (A - sigma I)^{-1} has eigenvalues
+// theta = 1 / (lambda - sigma), largest for A's smallest, well separated
+// there; Lanczos finds an operator's extreme eigenvalues first.
+//
+// Restarts (Saad, "Numerical Methods for Large Eigenvalue Problems", 2nd
+// ed., sec. 4.3 and 5.2, explicit restart with locking): when the basis is
+// full, the converged Ritz vectors are locked (kept, and every later vector
+// is orthogonalized against them) and a new run starts from the best
+// unconverged ones. Unlike a thick restart this keeps the projected matrix
+// a band, so its eigenvalues cost O(b m^2) and each wanted vector O(b^2 m)
+// instead of a dense O(m^3) eigensolve per check.
+#include "gab/sparse/symmetric_eigensolver.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <numeric>
+#include <string>
+
+#include "eigensolver/band_inverse_iteration.h"
+#include "eigensolver/band_tridiagonal.h"
+#include "eigensolver/block_lanczos.h"
+#include "eigensolver/tridiagonal_ql.h"
+#include "gab/sparse/cholesky.h"
+#include "gab/sparse/dense_kernels.h"
+
+namespace gab {
+
+namespace {
+
+using eigen_detail::BlockLanczos;
+
+double now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+Status invalid(const std::string& what) {
+  return Status::Error(StatusCode::kInvalidArgument, "smallest_eigenpairs: " + what);
+}
+
+Status check_arguments(const CscMatrix& a, const SymmetricEigenOptions& o) {
+  if (a.nrows != a.ncols) {
+    return invalid("the matrix is " + std::to_string(a.nrows) + " x " + std::to_string(a.ncols) + ", not square");
+  }
+  GAB_RETURN_IF_ERROR(check_csc(a));
+  if (a.nnz() > 0 && a.values.empty()) return invalid("the matrix has no values");
+  if (o.count < 1 || o.count > a.nrows) {
+    return invalid("count " + std::to_string(o.count) + " is outside 1.." + std::to_string(a.nrows));
+  }
+  if (!(o.tolerance > 0.0) || !std::isfinite(o.tolerance)) return invalid("tolerance must be positive and finite");
+  if (!(o.shift <= 0.0) || !std::isfinite(o.shift)) return invalid("shift must be negative (or 0: chosen)");
+  if (o.block_size < 1 || o.block_size > 64) return invalid("block_size " + std::to_string(o.block_size) + " is outside 1..64");
+  if (o.max_restarts < 0) return invalid("max_restarts must be >= 0");
+  if (o.threads < 1) return invalid("threads must be >= 1");
+  return Status::Ok();
+}
+
+// ||A||_1 of the symmetric matrix whose lower triangle is given.
+double norm1(const CscMatrix& lower) {
+  std::vector<double> sum(lower.ncols, 0.0);
+  for (int32_t j = 0; j < lower.ncols; ++j) {
+    for (int32_t p = lower.colptr[j]; p < lower.colptr[j + 1]; ++p) {
+      const int32_t i = lower.rowind[p];
+      const double v = std::abs(lower.values[p]);
+      sum[j] += v;
+      if (i != j) sum[i] += v;
+    }
+  }
+  return sum.empty() ? 0.0 : *std::max_element(sum.begin(), sum.end());
+}
+
+// The lower triangle of A - sigma I (the diagonal added where missing).
+Status shifted_lower(const CscMatrix& lower, double sigma, CscMatrix* out) {
+  std::vector<Triplet> t;
+  t.reserve(static_cast<size_t>(lower.nnz()) + lower.ncols);
+  for (int32_t j = 0; j < lower.ncols; ++j) {
+    t.push_back({j, j, -sigma});
+    for (int32_t p = lower.colptr[j]; p < lower.colptr[j + 1]; ++p) {
+      if (lower.rowind[p] >= j) t.push_back({lower.rowind[p], j, lower.values[p]});
+    }
+  }
+  return csc_from_triplets(lower.nrows, lower.ncols, t, out);
+}
+
+// What a check of the run found: the wanted Ritz values (descending), their
+// vectors in the band's basis and whether each has converged.
+struct RitzCheck {
+  std::vector<double> theta;   // all of the band's eigenvalues, descending
+  std::vector<double> s;       // active x want
+  std::vector<char> converged;
+  int32_t want = 0, converged_count = 0;
+};
+
+class Solver {
+ public:
+  Solver(const SymmetricEigenOptions& o, double norm, double sigma) : o_(o), norm_(norm), sigma_(sigma) {}
+
+  Status run(Cholesky& chol, int32_t n, SymmetricEigenResult* result);
+
+ private:
+  // The run's Ritz values; vectors for the wanted ones from `first` on
+  // (the rest only when all of those converged, `full`).
+  void check(int32_t remaining, bool boundary_only, RitzCheck* out);
+  bool pair_converged(double theta, double estimate) const;
+  // y (n x count) = Q S[:, cols] for the listed columns of out.s.
+  void ritz_vectors(const RitzCheck& rc, const std::vector<int32_t>& cols, double* y);
+
+  const SymmetricEigenOptions& o_;
+  double norm_, sigma_;
+  BlockLanczos lz_;
+  std::vector<double> locked_theta_;
+  std::vector<double> work_;
+};
+
+bool Solver::pair_converged(double theta, double estimate) const {
+  // A x - lambda x = -(A - sigma I) r / theta for the Op-residual r, so
+  // ||A x - lambda x|| <= ||A - sigma I||_1 ||r|| / theta.
+  const double bound = (norm_ - sigma_) * estimate / theta;
+  return bound <= 0.5 * o_.tolerance * norm_;
+}
+
+void Solver::check(int32_t remaining, bool boundary_only, RitzCheck* rc) {
+  const int32_t m = lz_.active;
+  std::vector<double> d(m), e(m);
+  eigen_detail::band_to_tridiagonal(lz_.band, &work_, d.data(), e.data());
+  eigen_detail::tridiagonal_eigenvalues(m, d.data(), e.data());
+  rc->theta.assign(d.rbegin(), d.rend());
+  rc->want = std::min(remaining, m);
+  const int32_t first = boundary_only ? std::max(0, rc->want - 2 * lz_.b) : 0;
+  const int32_t count = rc->want - first;
+  rc->s.assign(static_cast<size_t>(m) * rc->want, 0.0);
+  double scale = 0.0;
+  for (double t : rc->theta) scale = std::max(scale, std::abs(t));
+  eigen_detail::band_eigenvectors(lz_.band, rc->theta.data() + first, count, 1e-5 * scale, o_.seed + 17,
+                                  rc->s.data() + static_cast<int64_t>(first) * m);
+  rc->converged.assign(rc->want, 0);
+  rc->converged_count = 0;
+  for (int32_t t = first; t < rc->want; ++t) {
+    const double est = lz_.residual_estimate(rc->s.data() + static_cast<int64_t>(t) * m);
+    rc->converged[t] = pair_converged(rc->theta[t], est);
+    rc->converged_count += rc->converged[t];
+  }
+}
+
+void Solver::ritz_vectors(const RitzCheck& rc, const std::vector<int32_t>& cols, double* y) {
+  const int32_t n = lz_.n, m = lz_.active, count = static_cast<int32_t>(cols.size());
+  if (count == 0) return;
+  // Y = Q S is the GEMM's C -= A B^T with B = -S^T (count x m).
+  std::vector<double> st(static_cast<size_t>(count) * m);
+  for (int32_t c = 0; c < count; ++c) {
+    const double* s = rc.s.data() + static_cast<int64_t>(cols[c]) * m;
+    for (int32_t i = 0; i < m; ++i) st[c + static_cast<int64_t>(i) * count] = -s[i];
+  }
+  std::fill(y, y + static_cast<int64_t>(n) * count, 0.0);
+  dense_kernels().gemm_nt_sub(n, count, m, lz_.column(lz_.locked), n, st.data(), count, y, n);
+}
+
+Status Solver::run(Cholesky& chol, int32_t n, SymmetricEigenResult* result) {
+  const int32_t k = o_.count;
+  const int32_t b = std::min(o_.block_size, n);
+  int32_t capacity = o_.max_basis > 0 ? std::min(o_.max_basis, n) : std::min<int64_t>(n, 2 * int64_t{k} + 64);
+  if (capacity < std::min(n, k + b)) {
+    return Status::Error(StatusCode::kInvalidArgument, "smallest_eigenpairs: max_basis " + std::to_string(o_.max_basis) + " is below count + block_size (" +
+                   std::to_string(std::min(n, k + b)) + ")");
+  }
+  lz_.reserve(n, b, capacity);
+  lz_.start_run(nullptr, b, o_.seed);
+  int32_t restarts = 0;
+  RitzCheck rc;
+  std::vector<double> y;
+  for (;;) {
+    const int32_t remaining = k - lz_.locked;
+    int32_t next_check = std::min(remaining + 2 * b, capacity - lz_.locked);
+    bool done = false;
+    while (!done) {
+      if (lz_.room()) {
+        const double t0 = now();
+        GAB_RETURN_IF_ERROR(lz_.extend(chol));
+        result->lanczos_s += now() - t0;
+      }
+      const bool full = !lz_.room();
+      if (lz_.active < next_check && !full) continue;
+      next_check = lz_.active + std::max(2 * b, lz_.active / 10);
+      const double t0 = now();
+      check(remaining, /*boundary_only=*/true, &rc);
+      result->check_s += now() - t0;
+      const int32_t first = std::max(0, rc.want - 2 * lz_.b);
+      const bool boundary_ok = rc.converged_count == rc.want - first;
+      if (!boundary_ok && !full) continue;
+      const double t1 = now();
+      check(remaining, /*boundary_only=*/false, &rc);
+      result->check_s += now() - t1;
+      if (rc.want == remaining && rc.converged_count == rc.want) done = true;
+      if (!done && full) break;  // restart
+    }
+    if (done) {
+      const double t0 = now();
+      // Locked columns first, then this run's Ritz vectors: n x k.
+      result->vectors.assign(static_cast<size_t>(n) * k, 0.0);
+      std::memcpy(result->vectors.data(), lz_.v.data(), sizeof(double) * n * lz_.locked);
+      std::vector<int32_t> cols(rc.want);
+      std::iota(cols.begin(), cols.end(), 0);
+      ritz_vectors(rc, cols, result->vectors.data() + static_cast<int64_t>(n) * lz_.locked);
+      result->vectors_s += now() - t0;
+      break;
+    }
+    // Restart: lock the converged wanted pairs, start from the best others.
+    if (restarts == o_.max_restarts) {
+      return Status::Error(StatusCode::kResourceExhausted,
+                           "smallest_eigenpairs: " + std::to_string(lz_.locked + rc.converged_count) + " of " +
+                               std::to_string(k) + " eigenpairs converged within " + std::to_string(o_.max_restarts) +
+                               " restarts (basis of " + std::to_string(capacity) + " columns)");
+    }
+    ++restarts;
+    std::vector<int32_t> lock, restart;
+    for (int32_t t = 0; t < rc.want; ++t) {
+      if (rc.converged[t]) lock.push_back(t);
+      else if (static_cast<int32_t>(restart.size()) < b) restart.push_back(t);
+    }
+    std::vector<int32_t> cols(lock);
+    cols.insert(cols.end(), restart.begin(), restart.end());
+    y.assign(static_cast<size_t>(n) * cols.size(), 0.0);
+    ritz_vectors(rc, cols, y.data());
+    std::memcpy(lz_.column(lz_.locked), y.data(), sizeof(double) * n * lock.size());
+    lz_.locked += static_cast<int32_t>(lock.size());
+    if (lz_.locked + b > capacity) {
+      return Status::Error(StatusCode::kResourceExhausted,
+                           "smallest_eigenpairs: the basis of " + std::to_string(capacity) +
+                               " columns has no room left after locking " + std::to_string(lz_.locked) + " pairs");
+    }
+    const double* start = restart.empty() ? nullptr : y.data() + static_cast<int64_t>(n) * lock.size();
+    lz_.start_run(start, restart.empty() ? b : static_cast<int32_t>(restart.size()), o_.seed + restarts);
+  }
+  result->restarts = restarts;
+  result->solves = static_cast<int32_t>(lz_.solves);
+  result->basis_columns = capacity;
+  return Status::Ok();
+}
+
+}  // namespace
+
+Status smallest_eigenpairs(const CscMatrix& lower, const SymmetricEigenOptions& options,
+                           SymmetricEigenResult* result) {
+  GAB_RETURN_IF_ERROR(check_arguments(lower, options));
+  const int32_t n = lower.nrows, k = options.count;
+  const double norm = norm1(lower);
+  const double sigma = options.shift < 0.0 ? options.shift : (norm > 0.0 ? -1e-3 * norm : -1.0);
+  const double t0 = now();
+  CscMatrix shifted;
+  GAB_RETURN_IF_ERROR(shifted_lower(lower, sigma, &shifted));
+  Cholesky chol;
+  AnalyzeOptions analyze;
+  analyze.threads = options.threads;
+  GAB_RETURN_IF_ERROR(chol.analyze(shifted, analyze));
+  Status factored = chol.factorize(shifted);
+  if (factored.code() == StatusCode::kNotPositiveDefinite) {
+    return Status::Error(StatusCode::kNotPositiveDefinite,
+                         "smallest_eigenpairs: A - sigma I (sigma " + std::to_string(sigma) +
+                             ") is not positive definite: A is not positive semi-definite (" + factored.message() + ")");
+  }
+  GAB_RETURN_IF_ERROR(factored);
+
+  *result = SymmetricEigenResult();
+  result->factor_s = now() - t0;
+  Solver solver(options, norm, sigma);
+  GAB_RETURN_IF_ERROR(solver.run(chol, n, result));
+  const double t1 = now();
+
+  // Rayleigh quotients and residuals, then ascending order.
+  std::vector<double> ax(n), lambda(k), residual(k);
+  for (int32_t c = 0; c < k; ++c) {
+    const double* x = result->vectors.data() + static_cast<int64_t>(c) * n;
+    symmetric_lower_matvec(lower, x, ax.data());
+    double xx = 0.0, xax = 0.0;
+    for (int32_t i = 0; i < n; ++i) {
+      xx += x[i] * x[i];
+      xax += x[i] * ax[i];
+    }
+    lambda[c] = xax / xx;
+    double r = 0.0;
+    for (int32_t i = 0; i < n; ++i) r += (ax[i] - lambda[c] * x[i]) * (ax[i] - lambda[c] * x[i]);
+    residual[c] = std::sqrt(r / xx) / (norm > 0.0 ? norm : 1.0);
+  }
+  std::vector<int32_t> order(k);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int32_t a, int32_t b) { return lambda[a] < lambda[b]; });
+  std::vector<double> sorted(static_cast<size_t>(n) * k);
+  result->values.resize(k);
+  result->residuals.resize(k);
+  for (int32_t c = 0; c < k; ++c) {
+    result->values[c] = lambda[order[c]];
+    result->residuals[c] = residual[order[c]];
+    std::memcpy(sorted.data() + static_cast<int64_t>(c) * n, result->vectors.data() + static_cast<int64_t>(order[c]) * n,
+                sizeof(double) * n);
+  }
+  result->vectors.swap(sorted);
+  result->vectors_s += now() - t1;
+  result->norm = norm;
+  result->shift = sigma;
+  int32_t failed = 0;
+  for (double r : result->residuals) failed += !(r <= options.tolerance);
+  if (failed > 0) {
+    return Status::Error(StatusCode::kResourceExhausted,
+                         "smallest_eigenpairs: " + std::to_string(k - failed) + " of " + std::to_string(k) +
+                             " eigenpairs reached the tolerance");
+  }
+  return Status::Ok();
+}
+
+}  // namespace gab
