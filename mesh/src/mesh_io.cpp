@@ -29,7 +29,7 @@ std::string_view first_word(std::string_view bytes) {
   for (;;) {
     while (i < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[i]))) ++i;
     if (i < bytes.size() && bytes[i] == '#') {
-      while (i < bytes.size() && bytes[i] != '\n') ++i;
+      while (i < bytes.size() && bytes[i] != '\n' && bytes[i] != '\r') ++i;
       continue;
     }
     break;
@@ -107,22 +107,23 @@ Status mesh_format_from_path(const std::string& path, MeshFormat* format) {
   return Status::Ok();
 }
 
-Status parse_mesh(std::string_view bytes, MeshFormat format, const std::string& name, Mesh* mesh) {
+Status parse_mesh(std::string_view bytes, MeshFormat format, const std::string& name, Mesh* mesh,
+                  MeshReadNotes* notes) {
   GAB_RETURN_IF_ERROR(check_content(bytes, format, name));
   switch (format) {
-    case MeshFormat::kObj: return parse_obj(bytes, name, mesh);
-    case MeshFormat::kOff: return parse_off(bytes, name, mesh);
-    case MeshFormat::kPly: return parse_ply(bytes, name, mesh);
+    case MeshFormat::kObj: return parse_obj(bytes, name, mesh, notes);
+    case MeshFormat::kOff: return parse_off(bytes, name, mesh, notes);
+    case MeshFormat::kPly: return parse_ply(bytes, name, mesh, notes);
   }
   return Status::Error(StatusCode::kInvalidArgument, name + ": unknown mesh format");
 }
 
-Status read_mesh(const std::string& path, Mesh* mesh) {
+Status read_mesh(const std::string& path, Mesh* mesh, MeshReadNotes* notes) {
   MeshFormat format;
   GAB_RETURN_IF_ERROR(mesh_format_from_path(path, &format));
   std::string bytes;
   GAB_RETURN_IF_ERROR(read_file(path, &bytes));
-  return parse_mesh(bytes, format, path, mesh);
+  return parse_mesh(bytes, format, path, mesh, notes);
 }
 
 Status write_mesh(const std::string& path, const Mesh& mesh, const PlyWriteOptions& ply) {

@@ -25,9 +25,67 @@ using mesh_detail::parse_int;
 using mesh_detail::parse_real;
 using mesh_detail::printable;
 
+std::vector<std::string_view> split_blanks(std::string_view s);
+
 struct ObjLines {
   std::vector<int64_t> vertex_line;  // line of each `v` record
   std::vector<int64_t> face_line;    // line of each `f` record
+};
+
+// Records a Mesh does not carry, counted by the same pass.
+struct ObjDropped {
+  int64_t normals = 0, texcoords = 0, parameter = 0, colors = 0, weights = 0;
+  int64_t face_texcoords = 0, face_normals = 0, polygons = 0;
+  int64_t lines = 0, points = 0, groups = 0, objects = 0, smoothing = 0, libraries = 0, materials = 0;
+  int64_t other = 0;
+  std::string first_other;  // keyword of the first other record
+
+  void note(std::string_view key, std::string_view args) {
+    if (key == "vn") {
+      ++normals;
+    } else if (key == "vt") {
+      ++texcoords;
+    } else if (key == "vp") {
+      ++parameter;
+    } else if (key == "l") {
+      ++lines;
+    } else if (key == "p") {
+      ++points;
+    } else if (key == "g") {
+      ++groups;
+    } else if (key == "o") {
+      ++objects;
+    } else if (key == "s") {
+      // "s off" and "s 0" say there is no smoothing group.
+      const std::vector<std::string_view> w = split_blanks(args);
+      if (!w.empty() && w[0] != "off" && w[0] != "0") ++smoothing;
+    } else if (key == "mtllib") {
+      ++libraries;
+    } else if (key == "usemtl") {
+      ++materials;
+    } else {
+      if (other++ == 0) first_other = printable(key);
+    }
+  }
+
+  void report(MeshReadNotes* notes) const {
+    notes->drop("normals", "normals (vn)", normals);
+    notes->drop("texture_coordinates", "texture coordinates (vt)", texcoords);
+    notes->drop("parameter_vertices", "parameter-space vertices (vp)", parameter);
+    notes->drop("vertex_colors", "vertex colours (v x y z r g b)", colors);
+    notes->drop("vertex_weights", "vertex weights (v x y z w)", weights);
+    notes->drop("face_texture_indices", "faces with vt indices (f v/vt)", face_texcoords);
+    notes->drop("face_normal_indices", "faces with vn indices (f v//vn)", face_normals);
+    notes->drop("polygons", "polygons of 4 or more corners (fan-triangulated)", polygons);
+    notes->drop("lines", "lines (l)", lines);
+    notes->drop("points", "points (p)", points);
+    notes->drop("groups", "groups (g)", groups);
+    notes->drop("objects", "object names (o)", objects);
+    notes->drop("smoothing_groups", "smoothing groups (s)", smoothing);
+    notes->drop("material_libraries", "material libraries (mtllib)", libraries);
+    notes->drop("material_uses", "material uses (usemtl)", materials);
+    notes->drop("other_records", "other records (the first '" + first_other + "')", other);
+  }
 };
 
 std::vector<std::string_view> split_blanks(std::string_view s) {
@@ -44,15 +102,18 @@ std::vector<std::string_view> split_blanks(std::string_view s) {
 
 // One face corner "v", "v/vt", "v//vn" or "v/vt/vn": false unless every part
 // is an integer of at most 10 digits (vt, vn may be empty) and v is a
-// nonzero int32 (so tinyobjloader's atoi cannot overflow).
-bool parse_corner(std::string_view token, int64_t* v) {
+// nonzero int32 (so tinyobjloader's atoi cannot overflow). has[0], has[1]:
+// whether the vt, vn parts are there.
+bool parse_corner(std::string_view token, int64_t* v, bool has[2]) {
   size_t slash = token.find('/');
+  has[0] = has[1] = false;
   if (!parse_int(token.substr(0, slash), v) || *v == 0 || *v > INT32_MAX || *v < -INT32_MAX) return false;
   for (int part = 0; part < 2 && slash != std::string_view::npos; ++part) {
     const size_t next = token.find('/', slash + 1);
     const std::string_view s = token.substr(slash + 1, next == std::string_view::npos ? next : next - slash - 1);
     int64_t ignored;
     if (!s.empty() && (s.size() > 11 || !parse_int(s, &ignored))) return false;
+    has[part] = !s.empty();
     slash = next;
   }
   return slash == std::string_view::npos;
@@ -62,7 +123,7 @@ Status line_error(const std::string& name, int64_t line, const std::string& what
   return Status::Error(StatusCode::kParseError, name + ":" + std::to_string(line) + ": " + what);
 }
 
-Status scan_lines(std::string_view text, const std::string& name, ObjLines* lines) {
+Status scan_lines(std::string_view text, const std::string& name, ObjLines* lines, ObjDropped* dropped) {
   size_t pos = 0;
   int64_t line_no = 0;
   while (pos < text.size()) {
@@ -78,9 +139,16 @@ Status scan_lines(std::string_view text, const std::string& name, ObjLines* line
     if (nul != std::string_view::npos) line = line.substr(0, nul);
     size_t i = 0;
     while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-    if (i + 1 >= line.size() || (line[i + 1] != ' ' && line[i + 1] != '\t')) continue;
+    if (i == line.size() || line[i] == '#') continue;
+    size_t key_end = i;
+    while (key_end < line.size() && line[key_end] != ' ' && line[key_end] != '\t') ++key_end;
+    const std::string_view key_word = line.substr(i, key_end - i);
+    if (key_word != "v" && key_word != "f") {
+      dropped->note(key_word, line.substr(key_end));
+      continue;
+    }
+    if (key_end == line.size()) continue;  // a bare "v" or "f": tinyobjloader skips it
     const char key = line[i];
-    if (key != 'v' && key != 'f') continue;
     const std::vector<std::string_view> w = split_blanks(line.substr(i + 2));
     if (key == 'v') {
       const int64_t v = static_cast<int64_t>(lines->vertex_line.size());
@@ -98,6 +166,12 @@ Status scan_lines(std::string_view text, const std::string& name, ObjLines* line
       if (lines->vertex_line.size() >= static_cast<size_t>(INT32_MAX)) {
         return line_error(name, line_no, "more than 2^31-1 vertices");
       }
+      // tinyobjloader reads "v x y z w" and the common "v x y z r g b".
+      if (w.size() >= 6) {
+        ++dropped->colors;
+      } else if (w.size() >= 4) {
+        ++dropped->weights;
+      }
       lines->vertex_line.push_back(line_no);
     } else {
       const int64_t f = static_cast<int64_t>(lines->face_line.size());
@@ -105,15 +179,22 @@ Status scan_lines(std::string_view text, const std::string& name, ObjLines* line
         return line_error(name, line_no, "face " + std::to_string(f) + " has " + std::to_string(w.size()) +
                                              " vertices (need 3 or more)");
       }
+      bool face_has[2] = {false, false};  // vt, vn indices
       for (std::string_view corner : w) {
         int64_t v;
+        bool has[2];
         if (corner == "0" || corner.substr(0, 2) == "0/") {
           return line_error(name, line_no, "face " + std::to_string(f) + ": vertex index 0 (OBJ indices start at 1)");
         }
-        if (!parse_corner(corner, &v)) {
+        if (!parse_corner(corner, &v, has)) {
           return line_error(name, line_no, "face " + std::to_string(f) + ": bad vertex index '" + printable(corner) + "'");
         }
+        face_has[0] = face_has[0] || has[0];
+        face_has[1] = face_has[1] || has[1];
       }
+      dropped->face_texcoords += face_has[0];
+      dropped->face_normals += face_has[1];
+      dropped->polygons += w.size() > 3;
       lines->face_line.push_back(line_no);
     }
   }
@@ -185,9 +266,10 @@ struct Collector {
 
 }  // namespace
 
-Status parse_obj(std::string_view text, const std::string& name, Mesh* mesh) {
+Status parse_obj(std::string_view text, const std::string& name, Mesh* mesh, MeshReadNotes* notes) {
   ObjLines lines;
-  GAB_RETURN_IF_ERROR(scan_lines(text, name, &lines));
+  ObjDropped dropped;
+  GAB_RETURN_IF_ERROR(scan_lines(text, name, &lines, &dropped));
   if (lines.vertex_line.empty()) return Status::Error(StatusCode::kParseError, name + ": mesh has no vertices");
   if (lines.face_line.empty()) return Status::Error(StatusCode::kParseError, name + ": mesh has no faces");
   Collector c;
@@ -225,13 +307,17 @@ Status parse_obj(std::string_view text, const std::string& name, Mesh* mesh) {
     }
   }
   *mesh = std::move(c.mesh);
+  if (notes != nullptr) {
+    *notes = MeshReadNotes();
+    dropped.report(notes);
+  }
   return Status::Ok();
 }
 
-Status read_obj(const std::string& path, Mesh* mesh) {
+Status read_obj(const std::string& path, Mesh* mesh, MeshReadNotes* notes) {
   std::string bytes;
   GAB_RETURN_IF_ERROR(read_file(path, &bytes));
-  return parse_obj(bytes, path, mesh);
+  return parse_obj(bytes, path, mesh, notes);
 }
 
 std::string format_obj(const Mesh& mesh) {

@@ -38,14 +38,24 @@ bool parse_keyword(std::string_view key, OffHeader* h) {
   return key.substr(i) == "OFF";
 }
 
+// The vertex extras the header announces, as dropped data: each vertex
+// carries one of each.
+void note_vertex_extras(const OffHeader& h, std::string_view keyword, int64_t nv, MeshReadNotes* notes) {
+  const std::string form = "(" + std::string(keyword) + ")";
+  if (h.normals) notes->drop("normals", "normals " + form, nv);
+  if (h.texture) notes->drop("texture_coordinates", "texture coordinates " + form, nv);
+  if (h.colors) notes->drop("vertex_colors", "vertex colours " + form, nv);
+}
+
 }  // namespace
 
-Status parse_off(std::string_view text, const std::string& name, Mesh* mesh) {
+Status parse_off(std::string_view text, const std::string& name, Mesh* mesh, MeshReadNotes* notes) {
   TextScanner tok(text, name, '#');
   std::string_view t;
   if (!tok.next(&t)) return tok.error_here("empty file, expected an OFF header");
   OffHeader h;
   if (!parse_keyword(t, &h)) return tok.error("not an OFF file (header '" + printable(t) + "')");
+  const std::string_view t0 = t;
   if (h.ndim) {
     int64_t dim = 0;
     if (!tok.next(&t)) return tok.error_here("truncated header: expected the nOFF dimension");
@@ -74,6 +84,8 @@ Status parse_off(std::string_view text, const std::string& name, Mesh* mesh) {
   if (nf == 0) return tok.error("mesh has no faces");
   if (nv > INT32_MAX) return tok.error("more than 2^31-1 vertices");
 
+  MeshReadNotes seen;
+  note_vertex_extras(h, printable(t0), nv, &seen);
   Mesh m;
   m.positions.resize(static_cast<size_t>(nv) * 3);
   const int dims = h.homogeneous ? 4 : 3;
@@ -101,6 +113,7 @@ Status parse_off(std::string_view text, const std::string& name, Mesh* mesh) {
   }
 
   m.triangles.reserve(static_cast<size_t>(nf) * 3);
+  int64_t polygons = 0, face_colors = 0;
   for (int64_t f = 0; f < nf; ++f) {
     int64_t k;
     if (!tok.next(&t)) {
@@ -115,6 +128,7 @@ Status parse_off(std::string_view text, const std::string& name, Mesh* mesh) {
       return tok.error("face " + std::to_string(f) + ": vertex count " + std::to_string(k) +
                        " is more than the rest of the file can hold");
     }
+    if (k > 3) ++polygons;
     if (static_cast<int64_t>(m.triangles.size() / 3) + (k - 2) > INT32_MAX) {
       return tok.error("face " + std::to_string(f) + ": more than 2^31-1 triangles");
     }
@@ -140,16 +154,20 @@ Status parse_off(std::string_view text, const std::string& name, Mesh* mesh) {
       }
       prev = static_cast<int32_t>(idx);
     }
-    tok.skip_line();  // per-face colour, if any
+    if (!tok.at_line_end()) ++face_colors;  // OFF(5): a colour may follow the indices
+    tok.skip_line();
   }
+  seen.drop("polygons", "polygons of 4 or more corners (fan-triangulated)", polygons);
+  seen.drop("face_colors", "face colours (after the indices)", face_colors);
   *mesh = std::move(m);
+  if (notes != nullptr) *notes = std::move(seen);
   return Status::Ok();
 }
 
-Status read_off(const std::string& path, Mesh* mesh) {
+Status read_off(const std::string& path, Mesh* mesh, MeshReadNotes* notes) {
   std::string bytes;
   GAB_RETURN_IF_ERROR(read_file(path, &bytes));
-  return parse_off(bytes, path, mesh);
+  return parse_off(bytes, path, mesh, notes);
 }
 
 std::string format_off(const Mesh& mesh) {

@@ -1,7 +1,10 @@
 // PLY header: "ply", "format <ascii|binary_little_endian|binary_big_endian>
 // 1.0", then element / property / comment / obj_info lines, "end_header"
 // (Greg Turk, "The PLY Polygon File Format", 1994). Lines are read one at a
-// time; '\r' before '\n' is tolerated.
+// time. They end at LF, CRLF or CR, as the first line's end says: a binary
+// body may begin with byte 0x0A, so after "end_header\r" of a CR file that
+// byte is the body's, not the rest of a CRLF. Lines with an unknown keyword
+// (exporters write "Created by ...") are skipped with a warning.
 #include "ply_header.h"
 
 #include <set>
@@ -79,6 +82,7 @@ Status parse_ply_header(std::string_view bytes, const std::string& name, PlyHead
   size_t pos = bom_length(bytes);
   int64_t line_no = 0;
   bool have_format = false;
+  bool cr_lines = false;  // the first line ended with a lone '\r'
   // Names seen, to reject duplicates in O(log) each (a hostile header may
   // declare millions). Views point into `bytes`.
   std::set<std::string_view> element_names;
@@ -92,13 +96,14 @@ Status parse_ply_header(std::string_view bytes, const std::string& name, PlyHead
       if (line_no == 1) return error("empty file, expected a PLY header");
       return error("truncated header: no end_header line");
     }
-    const size_t eol = bytes.find('\n', pos);
-    std::string_view line = bytes.substr(pos, eol == std::string_view::npos ? std::string_view::npos : eol - pos);
-    pos = eol == std::string_view::npos ? bytes.size() : eol + 1;
+    const size_t eol = bytes.find_first_of("\r\n", pos);
+    const std::string_view line = bytes.substr(pos, eol == std::string_view::npos ? std::string_view::npos : eol - pos);
+    const bool crlf = eol != std::string_view::npos && bytes[eol] == '\r' && eol + 1 < bytes.size() && bytes[eol + 1] == '\n';
+    pos = eol == std::string_view::npos ? bytes.size() : eol + (crlf && !cr_lines ? 2 : 1);
     ++line_no;
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     if (line_no == 1) {
       if (line != "ply") return error("not a PLY file (first line '" + printable(line) + "', expected 'ply')");
+      cr_lines = eol != std::string_view::npos && bytes[eol] == '\r' && !crlf;
       continue;
     }
     const std::vector<std::string_view> w = split_words(line);
@@ -155,7 +160,7 @@ Status parse_ply_header(std::string_view bytes, const std::string& name, PlyHead
       h.body_line = line_no + 1;
       break;
     } else {
-      return error("unknown header keyword '" + printable(key) + "'");
+      h.notes.warn(name + ":" + std::to_string(line_no) + ": unknown header line '" + printable(line) + "' skipped");
     }
   }
   *header = std::move(h);

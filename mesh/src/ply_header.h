@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "gab/mesh/mesh_read_notes.h"
 #include "gab/mesh/ply_io.h"
 #include "gab/status.h"
 
@@ -40,10 +41,12 @@ struct PlyHeader {
   std::vector<PlyElement> elements;
   size_t body_offset = 0;  // first byte after the end_header line
   int64_t body_line = 0;   // line number of that byte (ASCII bodies)
+  MeshReadNotes notes;     // warnings: the unknown lines skipped
 };
 
 // Parses the header of `bytes`; messages are "<name>:<line>: ...". Checks
-// the magic, the format line, the keywords and the property types; element
+// the magic, the format line, the keywords (an unknown one is skipped with a
+// warning in header->notes) and the property types; element
 // counts are checked against the body's size by the reader. O(header).
 Status parse_ply_header(std::string_view bytes, const std::string& name, PlyHeader* header);
 

@@ -153,6 +153,74 @@ Status header_error(const std::string& name, int64_t line, const std::string& wh
   return Status::Error(StatusCode::kParseError, name + ":" + std::to_string(line) + ": " + what);
 }
 
+// The common names of per-vertex data a Mesh does not carry: key, label,
+// the property names that make it.
+struct VertexDataKind {
+  const char* key;
+  const char* label;
+  std::vector<const char*> names;
+};
+
+const std::vector<VertexDataKind>& vertex_data_kinds() {
+  static const std::vector<VertexDataKind> kinds = {
+      {"normals", "normals", {"nx", "ny", "nz"}},
+      {"texture_coordinates", "texture coordinates", {"s", "t", "u", "v", "texture_u", "texture_v", "texture_s", "texture_t"}},
+      {"vertex_colors", "vertex colours", {"red", "green", "blue", "alpha"}},
+  };
+  return kinds;
+}
+
+// What the header declares that the decoder skips, into `notes`: vertex
+// properties other than x y z (by common kind, else by name), face and
+// strip properties other than the index list (colours by kind), other
+// elements by name. Counts are the elements that carry the data.
+void note_skipped(const PlyHeader& h, const Roles& roles, MeshReadNotes* notes) {
+  for (size_t ei = 0; ei < h.elements.size(); ++ei) {
+    const PlyElement& e = h.elements[ei];
+    const int index = static_cast<int>(ei);
+    if (index != roles.vertex && index != roles.face && index != roles.strips) {
+      notes->drop("element." + printable(e.name), "'" + printable(e.name) + "' elements", e.count);
+      continue;
+    }
+    const int kept = index == roles.face ? roles.face_list : index == roles.strips ? roles.strips_list : -1;
+    std::vector<std::string> kind_names(vertex_data_kinds().size());  // the names seen of each kind
+    std::vector<int> named;                                          // the others, by name
+    for (size_t pi = 0; pi < e.properties.size(); ++pi) {
+      const std::string& p = e.properties[pi].name;
+      if (static_cast<int>(pi) == kept) continue;
+      if (index == roles.vertex && (static_cast<int>(pi) == roles.xyz[0] || static_cast<int>(pi) == roles.xyz[1] ||
+                                    static_cast<int>(pi) == roles.xyz[2])) {
+        continue;
+      }
+      bool grouped = false;
+      for (size_t k = 0; k < vertex_data_kinds().size() && !grouped; ++k) {
+        // Faces have colours too; their normals or UVs would be odd enough to name.
+        if (index != roles.vertex && k != 2) continue;
+        for (const char* n : vertex_data_kinds()[k].names) {
+          if (p != n) continue;
+          kind_names[k] += (kind_names[k].empty() ? "" : " ") + p;
+          grouped = true;
+          break;
+        }
+      }
+      if (!grouped) named.push_back(static_cast<int>(pi));
+    }
+    for (size_t k = 0; k < kind_names.size(); ++k) {
+      if (kind_names[k].empty()) continue;
+      const VertexDataKind& kind = vertex_data_kinds()[k];
+      if (index == roles.vertex) {
+        notes->drop(kind.key, std::string(kind.label) + " (" + kind_names[k] + ")", e.count);
+      } else {
+        notes->drop("face_colors", printable(e.name) + " colours (" + kind_names[k] + ")", e.count);
+      }
+    }
+    for (int pi : named) {
+      const std::string p = printable(e.properties[pi].name);
+      notes->drop(printable(e.name) + "." + p, printable(e.name) + " property '" + p + "'", e.count);
+    }
+  }
+}
+
 // Assigns roles, then checks the header against the body size: every
 // element instance needs a minimum number of bytes, so a count larger than
 // the body can hold is refused before any allocation.
@@ -288,6 +356,7 @@ class BodyDecoder {
       return Status::Error(StatusCode::kParseError, src_.where() + e.name + " " + std::to_string(i) + " has " +
                                                         std::to_string(count) + " vertices (need 3 or more)");
     }
+    if (is_face && count > 3) ++polygons_;
     int32_t first = 0, a = 0, b = 0;  // fan origin / the strip's previous two
     int64_t run = 0;                   // position in the current strip
     for (int64_t k = 0; k < count; ++k) {
@@ -334,31 +403,42 @@ class BodyDecoder {
     m_.triangles.push_back(c);
   }
 
+
+ public:
+  int64_t polygons() const { return polygons_; }
+
+ private:
   Source& src_;
   const PlyHeader& h_;
   const Roles& roles_;
   const std::string& name_;
   Mesh& m_;
   int64_t nv_ = 0;
+  int64_t polygons_ = 0;  // faces of 4 or more corners
 };
 
 }  // namespace
 
-Status parse_ply(std::string_view bytes, const std::string& name, Mesh* mesh) {
+Status parse_ply(std::string_view bytes, const std::string& name, Mesh* mesh, MeshReadNotes* notes) {
   PlyHeader h;
   GAB_RETURN_IF_ERROR(mesh_detail::parse_ply_header(bytes, name, &h));
   const std::string_view body = bytes.substr(h.body_offset);
   Roles roles;
   GAB_RETURN_IF_ERROR(plan(h, body.size(), name, &roles));
+  MeshReadNotes seen = std::move(h.notes);
+  note_skipped(h, roles, &seen);
   Mesh m;
+  int64_t polygons = 0;
   if (h.encoding == PlyEncoding::kAscii) {
     AsciiSource src(body, h.body_line, name);
     BodyDecoder<AsciiSource> decoder(&src, h, roles, name, &m);
     GAB_RETURN_IF_ERROR(decoder.run());
+    polygons = decoder.polygons();
   } else {
     BinarySource src(body, h.encoding == PlyEncoding::kBinaryBigEndian, name);
     BodyDecoder<BinarySource> decoder(&src, h, roles, name, &m);
     GAB_RETURN_IF_ERROR(decoder.run());
+    polygons = decoder.polygons();
     // What the header declares is the whole body: more bytes than a line
     // end or blanks mean a header that does not describe the file.
     const std::string_view rest = body.substr(body.size() - src.remaining());
@@ -367,14 +447,16 @@ Status parse_ply(std::string_view bytes, const std::string& name, Mesh* mesh) {
                                                         " bytes after the last element the header declares");
     }
   }
+  seen.drop("polygons", "polygons of 4 or more corners (fan-triangulated)", polygons);
   *mesh = std::move(m);
+  if (notes != nullptr) *notes = std::move(seen);
   return Status::Ok();
 }
 
-Status read_ply(const std::string& path, Mesh* mesh) {
+Status read_ply(const std::string& path, Mesh* mesh, MeshReadNotes* notes) {
   std::string bytes;
   GAB_RETURN_IF_ERROR(read_file(path, &bytes));
-  return parse_ply(bytes, path, mesh);
+  return parse_ply(bytes, path, mesh, notes);
 }
 
 }  // namespace gab

@@ -9,8 +9,11 @@ namespace mesh_detail {
 
 namespace {
 
-// Blank bytes other than '\n' (which also ends a line).
-inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+// Blank bytes that do not end a line. A line ends at '\n', '\r\n' or a
+// lone '\r' (old Mac OS, Rhino's exports): a '\r' counts as a line end
+// unless a '\n' follows it, which then ends the line itself.
+inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\f' || c == '\v'; }
+inline bool is_line_end(char c) { return c == '\n' || c == '\r'; }
 
 }  // namespace
 
@@ -24,13 +27,13 @@ bool TextScanner::next(std::string_view* token) {
   const char* s = text_.data();
   while (pos_ < n) {
     const char c = s[pos_];
-    if (c == '\n') {
+    if (c == '\n' || (c == '\r' && (pos_ + 1 == n || s[pos_ + 1] != '\n'))) {
       ++line_;
       ++pos_;
-    } else if (is_blank(c)) {
+    } else if (is_blank(c) || c == '\r') {
       ++pos_;
     } else if (c == comment_ && c != '\0') {
-      while (pos_ < n && s[pos_] != '\n') ++pos_;
+      while (pos_ < n && !is_line_end(s[pos_])) ++pos_;
     } else {
       break;
     }
@@ -42,7 +45,7 @@ bool TextScanner::next(std::string_view* token) {
   const size_t start = pos_;
   while (pos_ < n) {
     const char c = s[pos_];
-    if (c == '\n' || is_blank(c) || (c == comment_ && c != '\0')) break;
+    if (is_line_end(c) || is_blank(c) || (c == comment_ && c != '\0')) break;
     ++pos_;
   }
   *token = std::string_view(s + start, pos_ - start);
@@ -52,8 +55,9 @@ bool TextScanner::next(std::string_view* token) {
 
 void TextScanner::skip_line() {
   const size_t n = text_.size();
-  while (pos_ < n && text_[pos_] != '\n') ++pos_;
+  while (pos_ < n && !is_line_end(text_[pos_])) ++pos_;
   if (pos_ < n) {
+    if (text_[pos_] == '\r' && pos_ + 1 < n && text_[pos_ + 1] == '\n') ++pos_;
     ++pos_;
     ++line_;
   }
@@ -62,7 +66,7 @@ void TextScanner::skip_line() {
 bool TextScanner::at_line_end() {
   const size_t n = text_.size();
   while (pos_ < n && is_blank(text_[pos_])) ++pos_;
-  return pos_ >= n || text_[pos_] == '\n' || (text_[pos_] == comment_ && comment_ != '\0');
+  return pos_ >= n || is_line_end(text_[pos_]) || (text_[pos_] == comment_ && comment_ != '\0');
 }
 
 Status TextScanner::error(const std::string& what) const {

@@ -1,5 +1,6 @@
 // Internal to the mesh layer: a whitespace tokenizer over text in memory that
-// counts lines for error messages, and strict number parsing (the whole token
+// counts lines for error messages (a line ends at '\n', '\r\n' or a lone
+// '\r'), and strict number parsing (the whole token
 // must be a number; std::from_chars, so the locale never changes the result).
 #pragma once
 

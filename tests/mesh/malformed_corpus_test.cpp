@@ -88,7 +88,8 @@ std::vector<Hostile> corpus() {
       {PLY, "ply\nformat ascii 1.0\nelement face 1\nproperty list float int vertex_indices\n",
        ":4: list count type 'float' is not an integer type"},
       {PLY, "ply\nformat ascii 1.0\nelement vertex -1\n", ":3: bad count '-1' for element 'vertex'"},
-      {PLY, "ply\nformat ascii 1.0\nelephant 3\n", ":3: unknown header keyword 'elephant'"},
+      // An unknown header line is skipped with a warning (exporters write "Created by ...").
+      {PLY, "ply\nformat ascii 1.0\nelephant 3\n", ":4: truncated header: no end_header line"},
       {PLY, "ply\nformat ascii 1.0\nelement vertex 1\nelement vertex 1\n", ":4: element 'vertex' declared twice"},
       {PLY, "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty double x\n",
        ":5: property 'x' declared twice in element 'vertex'"},

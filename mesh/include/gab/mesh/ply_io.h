@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "gab/mesh/mesh.h"
+#include "gab/mesh/mesh_read_notes.h"
 #include "gab/status.h"
 
 namespace gab {
@@ -21,15 +22,18 @@ struct PlyWriteOptions {
 // element `face` (any list count and index types; polygons fan-triangulated)
 // and of element `tristrips` (-1 restarts strips; strips alternate
 // orientation; their zero-area stitching triangles are dropped). Other
-// properties and elements are skipped. Errors name the file and the line
+// properties and elements are skipped, and counted in `notes` when given (on
+// success), with the polygons triangulated; header lines end at LF, CRLF or
+// CR, and a line with an unknown keyword is skipped with a warning there.
+// Errors name the file and the line
 // (header, ASCII body) or the element and its index (binary body): counts the
 // file cannot hold (checked before anything is allocated), indices out of
 // range, NaN or infinite coordinates, truncation, faces with fewer than 3
 // vertices, no vertices or no faces. O(file size).
-Status read_ply(const std::string& path, Mesh* mesh);
+Status read_ply(const std::string& path, Mesh* mesh, MeshReadNotes* notes = nullptr);
 
 // Same, from the file's bytes in memory; `name` is used in messages.
-Status parse_ply(std::string_view bytes, const std::string& name, Mesh* mesh);
+Status parse_ply(std::string_view bytes, const std::string& name, Mesh* mesh, MeshReadNotes* notes = nullptr);
 
 // The PLY bytes of a mesh: element vertex (x y z as double or float), element
 // face (list uchar int vertex_indices). O(V + T).
