@@ -7,6 +7,7 @@
 // bulge b further on, until it falls off the matrix. The work array holds
 // half-bandwidth b + 1, so a bulge has a place.
 #include "eigensolver/band_tridiagonal.h"
+#include "eigensolver/plane_rotation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -49,7 +50,7 @@ void rotate(Work& w, int32_t q, double c, double s) {
 void eliminate(Work& w, int32_t q, int32_t col) {
   const double x = w.at(q - 1, col), y = w.at(q, col);
   if (y == 0.0) return;
-  const double r = std::hypot(x, y);
+  const double r = rotation_norm(x, y);
   rotate(w, q, x / r, y / r);
   w.at(q, col) = 0.0;  // exactly, not to rounding
 }

@@ -8,8 +8,7 @@
 // second ("twice is enough", Kahan-Parlett; DGKS's test adds a third when a
 // column still lost more than half its norm). The full passes are the
 // process's dominant cost, 2 n m^2 flops for a basis of m columns: V^T W
-// with the solve kernels' transposed product (V streamed once per four
-// columns of W) and V H with the dense GEMM.
+// with the basis kernels, each streaming V once.
 #include "eigensolver/block_lanczos.h"
 
 #include <algorithm>
@@ -18,7 +17,7 @@
 
 #include "gab/sparse/dense_kernels.h"
 #include "gab/sparse/splitmix64.h"
-#include "kernels/solve_kernels.h"
+#include "eigensolver/basis_kernels.h"
 
 namespace gab {
 namespace eigen_detail {
@@ -46,7 +45,10 @@ void BlockLanczos::reserve(int32_t n_, int32_t b_, int32_t capacity_) {
   work.assign(static_cast<size_t>(n) * b, 0.0);
   coupling.assign(static_cast<size_t>(b) * b, 0.0);
   proj.assign(static_cast<size_t>(capacity) * b, 0.0);
-  projt.assign(static_cast<size_t>(capacity) * b, 0.0);
+  projt.assign(static_cast<size_t>(b) * b, 0.0);
+  diag.assign(static_cast<size_t>(b) * b, 0.0);
+  correction.assign(static_cast<size_t>(b) * b, 0.0);
+  coupling_prev.assign(static_cast<size_t>(b) * b, 0.0);
   norms.assign(static_cast<size_t>(3) * b, 0.0);
   band.b = b;
   band.data.assign(static_cast<size_t>(b + 1) * capacity, 0.0);
@@ -70,23 +72,16 @@ void BlockLanczos::start_run(const double* start, int32_t width, uint64_t seed) 
 
 void BlockLanczos::orthonormalize(double* x, int32_t count, int32_t cols, const double* base,
                                   int32_t diag_first, double* diag_correction) {
-  const DenseKernels& dk = dense_kernels();
-  const solve_detail::SolveKernels& sk = solve_detail::solve_kernels(dk.level);
+  const BasisKernels& bk = basis_kernels(dense_kernels().level);
   double* before = norms.data() + b;
   double* after = norms.data() + 2 * b;
   for (int32_t c = 0; c < count; ++c) before[c] = std::sqrt(dot(n, x + static_cast<int64_t>(c) * n, x + static_cast<int64_t>(c) * n));
   for (int pass = 0; pass < 2 && cols > 0; ++pass) {
-    // proj = -V^T x (cols x count), projt = its transpose, negated back:
-    // x -= V (V^T x) is the GEMM's C -= A B^T with B = (V^T x)^T.
-    std::fill(proj.begin(), proj.begin() + static_cast<int64_t>(cols) * count, 0.0);
-    sk.gemm_tn_sub(n, cols, count, v.data(), n, x, proj.data(), cols);
-    for (int32_t c = 0; c < count; ++c) {
-      for (int32_t i = 0; i < cols; ++i) projt[c + static_cast<int64_t>(i) * count] = -proj[i + static_cast<int64_t>(c) * cols];
-    }
-    dk.gemm_nt_sub(n, count, cols, v.data(), n, projt.data(), count, x, n);
+    bk.project(n, cols, count, v.data(), x, proj.data(), cols);  // proj = V^T x
+    bk.subtract(n, cols, count, v.data(), proj.data(), cols, x);  // x -= V proj
     if (diag_correction != nullptr) {
       for (int32_t c = 0; c < count; ++c) {
-        for (int32_t r = 0; r < count; ++r) diag_correction[r + c * b] -= proj[diag_first + r + static_cast<int64_t>(c) * cols];
+        for (int32_t r = 0; r < count; ++r) diag_correction[r + c * b] += proj[diag_first + r + static_cast<int64_t>(c) * cols];
       }
     }
     bool again = false;
@@ -132,7 +127,7 @@ Status BlockLanczos::extend(Cholesky& chol) {
       if (off + r - (prev_start + c) <= b) band.at(off + r, prev_start + c) = coupling[r + c * b];
     }
   }
-  std::vector<double> coupling_prev(coupling);  // B_j, before the QR overwrites it
+  coupling_prev = coupling;  // B_j, before the QR overwrites it
   last_start = off;
   active += w;
 
@@ -144,19 +139,23 @@ Status BlockLanczos::extend(Cholesky& chol) {
   for (int32_t c = 0; c < w; ++c) base[c] = std::sqrt(dot(n, x + static_cast<int64_t>(c) * n, x + static_cast<int64_t>(c) * n));
 
   // The three-term recurrence: A_j = Q_j^T W, W -= Q_j A_j + Q_{j-1} B_j^T.
-  const DenseKernels& dk = dense_kernels();
-  const solve_detail::SolveKernels& sk = solve_detail::solve_kernels(dk.level);
-  std::vector<double> a(static_cast<size_t>(b) * b, 0.0);
-  std::fill(proj.begin(), proj.begin() + w * w, 0.0);
-  sk.gemm_tn_sub(n, w, w, q, n, x, proj.data(), w);
+  const BasisKernels& bk = basis_kernels(dense_kernels().level);
+  std::vector<double>& a = diag;
+  bk.project(n, w, w, q, x, proj.data(), w);
   for (int32_t c = 0; c < w; ++c) {
-    for (int32_t r = 0; r < w; ++r) a[r + c * b] = -0.5 * (proj[r + c * w] + proj[c + r * w]);
+    for (int32_t r = 0; r < w; ++r) a[r + c * b] = 0.5 * (proj[r + c * w] + proj[c + r * w]);
   }
-  dk.gemm_nt_sub(n, w, w, q, n, a.data(), b, x, n);  // A symmetric: A^T = A
-  if (prev_w > 0) dk.gemm_nt_sub(n, w, prev_w, column(locked + prev_start), n, coupling_prev.data(), b, x, n);
+  bk.subtract(n, w, w, q, a.data(), b, x);
+  if (prev_w > 0) {
+    // Q_{j-1} B_j^T: the coefficients are B_j transposed.
+    for (int32_t c = 0; c < w; ++c) {
+      for (int32_t i = 0; i < prev_w; ++i) projt[i + static_cast<int64_t>(c) * prev_w] = coupling_prev[c + i * b];
+    }
+    bk.subtract(n, prev_w, w, column(locked + prev_start), projt.data(), prev_w, x);
+  }
 
   // The full pass over the basis (its corrections of A_j kept), then QR.
-  std::vector<double> correction(static_cast<size_t>(b) * b, 0.0);
+  std::fill(correction.begin(), correction.end(), 0.0);
   orthonormalize(x, w, locked + active, base, locked + off, correction.data());
   for (int32_t c = 0; c < w; ++c) {
     for (int32_t r = c; r < w; ++r) {

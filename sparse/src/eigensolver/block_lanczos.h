@@ -30,7 +30,9 @@ struct BlockLanczos {
   std::vector<double> next, coupling;
   int32_t next_width = 0;
   int64_t solves = 0;
-  std::vector<double> work, proj, projt, norms;  // per-step workspace
+  // Per-step workspace, sized by reserve(): the operator's block (n x b),
+  // projections (capacity x b), b x b blocks, norms.
+  std::vector<double> work, proj, projt, diag, correction, coupling_prev, norms;
 
   // Sizes everything; n x capacity doubles for V, 2 n b more.
   void reserve(int32_t n_, int32_t b_, int32_t capacity_);

@@ -93,6 +93,7 @@ struct RitzCheck {
   std::vector<double> s;       // active x want
   std::vector<char> converged;
   int32_t want = 0, converged_count = 0;
+  double worst = 0.0;  // max over the checked pairs of residual bound / target
 };
 
 class Solver {
@@ -105,8 +106,10 @@ class Solver {
   // The run's Ritz values; vectors for the wanted ones from `first` on
   // (the rest only when all of those converged, `full`).
   void check(int32_t remaining, bool boundary_only, RitzCheck* out);
-  bool pair_converged(double theta, double estimate) const;
+  // The pair's bound on ||A x - lambda x|| over its target (converged at <= 1).
+  double residual_ratio(double theta, double estimate) const;
   // y (n x count) = Q S[:, cols] for the listed columns of out.s.
+  int32_t schedule(const RitzCheck& rc, int32_t b, int32_t* last_at, double* last_log) const;
   void ritz_vectors(const RitzCheck& rc, const std::vector<int32_t>& cols, double* y);
 
   const SymmetricEigenOptions& o_;
@@ -116,11 +119,12 @@ class Solver {
   std::vector<double> work_;
 };
 
-bool Solver::pair_converged(double theta, double estimate) const {
+double Solver::residual_ratio(double theta, double estimate) const {
   // A x - lambda x = -(A - sigma I) r / theta for the Op-residual r, so
-  // ||A x - lambda x|| <= ||A - sigma I||_1 ||r|| / theta.
+  // ||A x - lambda x|| <= ||A - sigma I||_1 ||r|| / theta; the target keeps
+  // a factor 2 for the rounding of the vectors formed afterwards.
   const double bound = (norm_ - sigma_) * estimate / theta;
-  return bound <= 0.5 * o_.tolerance * norm_;
+  return bound / (0.5 * o_.tolerance * norm_);
 }
 
 void Solver::check(int32_t remaining, bool boundary_only, RitzCheck* rc) {
@@ -139,10 +143,13 @@ void Solver::check(int32_t remaining, bool boundary_only, RitzCheck* rc) {
                                   rc->s.data() + static_cast<int64_t>(first) * m);
   rc->converged.assign(rc->want, 0);
   rc->converged_count = 0;
+  rc->worst = 0.0;
   for (int32_t t = first; t < rc->want; ++t) {
     const double est = lz_.residual_estimate(rc->s.data() + static_cast<int64_t>(t) * m);
-    rc->converged[t] = pair_converged(rc->theta[t], est);
+    const double ratio = residual_ratio(rc->theta[t], est);
+    rc->converged[t] = ratio <= 1.0;
     rc->converged_count += rc->converged[t];
+    rc->worst = std::max(rc->worst, ratio);
   }
 }
 
@@ -159,10 +166,31 @@ void Solver::ritz_vectors(const RitzCheck& rc, const std::vector<int32_t>& cols,
   dense_kernels().gemm_nt_sub(n, count, m, lz_.column(lz_.locked), n, st.data(), count, y, n);
 }
 
+// When to check next: 10% more columns, or sooner where the last two
+// checks' residuals, extrapolated geometrically, predict the boundary pairs
+// pass (they fall faster than geometrically near the end, so the
+// prediction is only trusted to shorten the step). Each check costs
+// O(b m^2).
+int32_t Solver::schedule(const RitzCheck& rc, int32_t b, int32_t* last_at, double* last_log) const {
+  const int32_t m = lz_.active;
+  const double log_now = std::log(std::max(rc.worst, 1e-300));
+  int32_t step = std::max(2 * b, m / 10);
+  if (*last_at >= 0 && m > *last_at && log_now > 0.0) {
+    const double slope = (log_now - *last_log) / (m - *last_at);
+    if (slope < 0.0) {
+      const double predicted = 1.05 * log_now / -slope + b;
+      step = static_cast<int32_t>(std::min<double>(std::max<double>(predicted, b), step));
+    }
+  }
+  *last_at = m;
+  *last_log = log_now;
+  return m + step;
+}
+
 Status Solver::run(Cholesky& chol, int32_t n, SymmetricEigenResult* result) {
   const int32_t k = o_.count;
   const int32_t b = std::min(o_.block_size, n);
-  int32_t capacity = o_.max_basis > 0 ? std::min(o_.max_basis, n) : std::min<int64_t>(n, 2 * int64_t{k} + 64);
+  int32_t capacity = o_.max_basis > 0 ? std::min(o_.max_basis, n) : std::min<int64_t>(n, 3 * int64_t{k} + 64);
   if (capacity < std::min(n, k + b)) {
     return Status::Error(StatusCode::kInvalidArgument, "smallest_eigenpairs: max_basis " + std::to_string(o_.max_basis) + " is below count + block_size (" +
                    std::to_string(std::min(n, k + b)) + ")");
@@ -175,6 +203,8 @@ Status Solver::run(Cholesky& chol, int32_t n, SymmetricEigenResult* result) {
   for (;;) {
     const int32_t remaining = k - lz_.locked;
     int32_t next_check = std::min(remaining + 2 * b, capacity - lz_.locked);
+    int32_t last_at = -1;  // the previous boundary check: basis size, log of its worst ratio
+    double last_log = 0.0;
     bool done = false;
     while (!done) {
       if (lz_.room()) {
@@ -184,12 +214,12 @@ Status Solver::run(Cholesky& chol, int32_t n, SymmetricEigenResult* result) {
       }
       const bool full = !lz_.room();
       if (lz_.active < next_check && !full) continue;
-      next_check = lz_.active + std::max(2 * b, lz_.active / 10);
       const double t0 = now();
       check(remaining, /*boundary_only=*/true, &rc);
       result->check_s += now() - t0;
       const int32_t first = std::max(0, rc.want - 2 * lz_.b);
       const bool boundary_ok = rc.converged_count == rc.want - first;
+      next_check = schedule(rc, b, &last_at, &last_log);
       if (!boundary_ok && !full) continue;
       const double t1 = now();
       check(remaining, /*boundary_only=*/false, &rc);

@@ -5,6 +5,7 @@
 // the unreduced block [l, end] above the first negligible subdiagonal; a
 // plane rotation per row chases the shift's bulge up to row l.
 #include "eigensolver/tridiagonal_ql.h"
+#include "eigensolver/plane_rotation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,14 +33,14 @@ bool tridiagonal_eigenvalues(int32_t m, double* d, double* e) {
       // Wilkinson's shift from the top 2 x 2, folded into the first
       // rotation's g.
       double g = (d[l + 1] - d[l]) / (2.0 * e[l]);
-      double r = std::hypot(g, 1.0);
+      double r = rotation_norm(g, 1.0);
       g = d[end] - d[l] + e[l] / (g + std::copysign(r, g));
       double s = 1.0, c = 1.0, p = 0.0;
       bool underflow = false;
       for (int32_t i = end - 1; i >= l; --i) {
         const double f = s * e[i];
         const double b = c * e[i];
-        r = std::hypot(f, g);
+        r = rotation_norm(f, g);
         e[i + 1] = r;
         if (r == 0.0) {
           // The bulge vanished: the block splits at i + 1; start over.

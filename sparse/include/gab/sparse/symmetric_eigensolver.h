@@ -44,7 +44,7 @@ struct SymmetricEigenOptions {
   // is safely positive definite).
   double shift = 0.0;
   int32_t block_size = 8;     // vectors per Lanczos block (1..64)
-  int32_t max_basis = 0;      // basis columns held (>= count + 2 block_size); 0: min(n, 2 count + 64)
+  int32_t max_basis = 0;      // basis columns held (>= count + block_size); 0: min(n, 3 count + 64)
   int32_t max_restarts = 20;  // runs after the first before giving up
   int32_t threads = 1;        // of the factorization and solves (AnalyzeOptions::threads)
   uint64_t seed = 1;          // of the random start block (results are deterministic)
