@@ -26,7 +26,7 @@ Status load_benchmark_system(const std::string& path, int32_t k0, BenchmarkSyste
     }
   } else if (ext == "obj" || ext == "off" || ext == "ply") {
     Mesh mesh;
-    GAB_RETURN_IF_ERROR(read_mesh(path, &mesh));
+    GAB_RETURN_IF_ERROR(read_mesh(path, &mesh, &sys.read_notes));
     if (subdivide > 0) mesh = subdivide_midpoint(mesh, subdivide);
     sys.faces = mesh.num_triangles();
     const EdgeGraph graph = build_edge_graph(mesh);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "gab/mesh/mesh_read_notes.h"
 #include "gab/sparse/csc.h"
 #include "gab/status.h"
 
@@ -19,6 +20,7 @@ struct BenchmarkSystem {
   std::vector<int32_t> anchors;  // mesh input only: initial anchors
   bool from_mesh = false;
   int32_t faces = 0;             // mesh input only
+  MeshReadNotes read_notes;      // mesh input only: what the file held that the mesh does not carry
 };
 
 // k0: number of initial anchors for a mesh; subdivide: levels of 1:4

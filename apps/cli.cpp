@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <thread>
+#include <utility>
 
 #include "commands.h"
 #include "gab/mesh/file_io.h"
@@ -152,6 +153,8 @@ void JsonObject::add(const std::string& key, const std::vector<JsonObject>& item
   fields_.emplace_back(key, array + "]");
 }
 
+void JsonObject::add(const std::string& key, const JsonObject& object) { fields_.emplace_back(key, object.str()); }
+
 std::string JsonObject::str() const {
   std::string out = "{";
   for (size_t i = 0; i < fields_.size(); ++i) {
@@ -249,6 +252,25 @@ std::string extension(const std::string& path) {
   std::string ext = path.substr(dot + 1);
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return ext;
+}
+
+void warn_read_notes(const std::string& path, const MeshReadNotes& notes) {
+  for (const std::string& w : notes.warnings) std::fprintf(stderr, "gab: warning: %s\n", w.c_str());
+  if (notes.warnings_not_listed > 0) {
+    std::fprintf(stderr, "gab: warning: %s: %lld more warnings like these\n", path.c_str(),
+                 static_cast<long long>(notes.warnings_not_listed));
+  }
+  if (notes.dropped.empty()) return;
+  std::fprintf(stderr, "gab: warning: %s: not carried: %s; gab keeps positions and triangles only\n", path.c_str(),
+               notes.dropped_summary().c_str());
+}
+
+Status read_mesh_warning(const std::string& path, Mesh* mesh, MeshReadNotes* notes) {
+  MeshReadNotes seen;
+  GAB_RETURN_IF_ERROR(read_mesh(path, mesh, &seen));
+  warn_read_notes(path, seen);
+  if (notes != nullptr) *notes = std::move(seen);
+  return Status::Ok();
 }
 
 }  // namespace cli

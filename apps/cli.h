@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "gab/mesh/mesh_io.h"
 #include "gab/sparse/ordering.h"
 
 namespace gab {
@@ -23,6 +24,15 @@ int fail(const std::string& message);
 // Prints "gab <command>: <message>" and the command's usage (commands.h) on
 // stderr; returns kExitUsage.
 int usage_error(const std::string& command, const std::string& message);
+
+// What reading the mesh `path` left out or forgave, on stderr, one line
+// each: the reader's warnings ("gab: warning: <warning>"), then, when
+// something was dropped, "gab: warning: PATH: not carried: <counts>; gab
+// keeps positions and triangles only". --quiet does not silence it (it
+// silences the progress line only): data left out is never silent.
+void warn_read_notes(const std::string& path, const MeshReadNotes& notes);
+// read_mesh, then warn_read_notes on success; `notes` (optional) receives them.
+Status read_mesh_warning(const std::string& path, Mesh* mesh, MeshReadNotes* notes = nullptr);
 
 // Before `command` does its work: whether it can write its output `out`
 // (check_output_file). kExitOk when it can; else the usage error (the
@@ -73,6 +83,7 @@ class JsonObject {
                                                       // a string literal would convert to bool)
   void add_null(const std::string& key);
   void add(const std::string& key, const std::vector<JsonObject>& items);  // an array of objects
+  void add(const std::string& key, const JsonObject& object);              // a nested object
   std::string str() const;
 
  private:

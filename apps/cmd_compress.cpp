@@ -105,7 +105,8 @@ int run_compress(int argc, char** argv) {
   }
 
   Mesh mesh;
-  Status status = read_mesh(in, &mesh);
+  MeshReadNotes read_notes;
+  Status status = read_mesh_warning(in, &mesh, &read_notes);
   if (!status.ok()) return fail(status.message());
   std::vector<uint8_t> file;
   EncodeStats stats;
@@ -189,6 +190,10 @@ int run_compress(int argc, char** argv) {
       candidates.push_back(std::move(j));
     }
     o.add("candidates", candidates);
+    // What the input held that the file does not carry (docs/cli.md).
+    JsonObject dropped;
+    for (const DroppedData& d : read_notes.dropped) dropped.add(d.key, d.count);
+    o.add("dropped", dropped);
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }

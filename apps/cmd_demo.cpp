@@ -39,7 +39,7 @@ Status demo_input(Mesh* mesh, std::string* name) {
   for (const std::string& path : {env ? std::string(env) : std::string(), std::string("data/meshes/camel.off")}) {
     if (!path.empty() && exists(path)) {
       *name = path;
-      return read_mesh(path, mesh);
+      return read_mesh_warning(path, mesh);
     }
   }
   *name = "a bumpy sphere (generated; run scripts/setup-and-run.sh for libcgal-demo's camel)";

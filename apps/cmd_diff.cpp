@@ -82,9 +82,9 @@ int run_diff(int argc, char** argv) {
 
   const double t0 = now_seconds();
   Mesh a, b;
-  Status status = read_mesh(path_a, &a);
+  Status status = read_mesh_warning(path_a, &a);
   if (!status.ok()) return fail(status.message());
-  status = read_mesh(path_b, &b);
+  status = read_mesh_warning(path_b, &b);
   if (!status.ok()) return fail(status.message());
 
   // Per-vertex figures only where vertex i of A is vertex i of B (or

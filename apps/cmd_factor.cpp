@@ -35,6 +35,7 @@ int run_factor(int argc, char** argv) {
   BenchmarkSystem sys;
   Status status = load_benchmark_system(path, static_cast<int32_t>(anchors), &sys);
   if (!status.ok()) return fail(status.message());
+  warn_read_notes(path, sys.read_notes);
   const CscMatrix& a = sys.lower;
   const int32_t n = a.ncols;
 

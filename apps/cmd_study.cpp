@@ -58,12 +58,14 @@ struct StudyResult {
   std::vector<UpdateRecord> records;
 };
 
+// `warn`: print what the reader left out (once per input, not per ordering).
 Status study_one(const std::string& path, Ordering ordering, int64_t updates,
                  int64_t batch, int64_t anchors, int64_t subdivide, int64_t threads,
-                 StudyResult* out) {
+                 bool warn, StudyResult* out) {
   BenchmarkSystem sys;
   GAB_RETURN_IF_ERROR(load_benchmark_system(path, static_cast<int32_t>(anchors), &sys,
                                             static_cast<int>(subdivide)));
+  if (warn) warn_read_notes(path, sys.read_notes);
   CscMatrix a = sys.lower;
   const int32_t n = a.ncols;
   AnalyzeOptions options;
@@ -379,7 +381,8 @@ int run_study(int argc, char** argv) {
   for (const std::string& path : args.positionals()) {
     for (const Ordering ordering : orderings) {
       StudyResult r;
-      const Status s = study_one(path, ordering, updates, batch, anchors, subdivide, threads, &r);
+      const Status s =
+          study_one(path, ordering, updates, batch, anchors, subdivide, threads, ordering == orderings.front(), &r);
       if (!s.ok()) return fail(s.message());
       const JsonObject j = summary(r, batch, threads);
       if (json) {

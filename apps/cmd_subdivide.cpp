@@ -23,7 +23,7 @@ int run_subdivide(int argc, char** argv) {
   const std::string in = args.positionals()[0], out = args.get("-o");
   if (const int refused = check_output("subdivide", out, {in})) return refused;
   Mesh mesh;
-  Status status = read_mesh(in, &mesh);
+  Status status = read_mesh_warning(in, &mesh);
   if (!status.ok()) return fail(status.message());
   const Mesh fine = subdivide_midpoint(mesh, static_cast<int>(levels));
   status = write_mesh(out, fine);
