@@ -296,8 +296,10 @@ Status smallest_eigenpairs(const CscMatrix& lower, const SymmetricEigenOptions& 
 
   *result = SymmetricEigenResult();
   result->factor_s = now() - t0;
-  Solver solver(options, norm, sigma);
-  GAB_RETURN_IF_ERROR(solver.run(chol, n, result));
+  {
+    Solver solver(options, norm, sigma);  // its basis is freed before the residuals
+    GAB_RETURN_IF_ERROR(solver.run(chol, n, result));
+  }
   const double t1 = now();
 
   // Rayleigh quotients and residuals, then ascending order.
@@ -318,16 +320,24 @@ Status smallest_eigenpairs(const CscMatrix& lower, const SymmetricEigenOptions& 
   std::vector<int32_t> order(k);
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int32_t a, int32_t b) { return lambda[a] < lambda[b]; });
-  std::vector<double> sorted(static_cast<size_t>(n) * k);
   result->values.resize(k);
   result->residuals.resize(k);
+  bool sorted_already = true;
   for (int32_t c = 0; c < k; ++c) {
     result->values[c] = lambda[order[c]];
     result->residuals[c] = residual[order[c]];
-    std::memcpy(sorted.data() + static_cast<int64_t>(c) * n, result->vectors.data() + static_cast<int64_t>(order[c]) * n,
-                sizeof(double) * n);
+    sorted_already = sorted_already && order[c] == c;
   }
-  result->vectors.swap(sorted);
+  if (!sorted_already) {
+    // Usually the Ritz values come in order (theta descending); a copy
+    // only when locking or rounding mixed them.
+    std::vector<double> sorted(static_cast<size_t>(n) * k);
+    for (int32_t c = 0; c < k; ++c) {
+      std::memcpy(sorted.data() + static_cast<int64_t>(c) * n, result->vectors.data() + static_cast<int64_t>(order[c]) * n,
+                  sizeof(double) * n);
+    }
+    result->vectors.swap(sorted);
+  }
   result->vectors_s += now() - t1;
   result->norm = norm;
   result->shift = sigma;
