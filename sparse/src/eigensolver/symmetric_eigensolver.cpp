@@ -48,6 +48,13 @@ Status check_arguments(const CscMatrix& a, const SymmetricEigenOptions& o) {
   }
   GAB_RETURN_IF_ERROR(check_csc(a));
   if (a.nnz() > 0 && a.values.empty()) return invalid("the matrix has no values");
+  for (int32_t j = 0; j < a.ncols; ++j) {
+    for (int32_t p = a.colptr[j]; p < a.colptr[j + 1]; ++p) {
+      if (!std::isfinite(a.values[p])) {
+        return invalid("entry (" + std::to_string(a.rowind[p]) + ", " + std::to_string(j) + ") is not finite");
+      }
+    }
+  }
   if (o.count < 1 || o.count > a.nrows) {
     return invalid("count " + std::to_string(o.count) + " is outside 1.." + std::to_string(a.nrows));
   }
@@ -273,9 +280,18 @@ Status Solver::run(Cholesky& chol, int32_t n, SymmetricEigenResult* result) {
 
 }  // namespace
 
-Status smallest_eigenpairs(const CscMatrix& lower, const SymmetricEigenOptions& options,
+Status smallest_eigenpairs(const CscMatrix& given, const SymmetricEigenOptions& options,
                            SymmetricEigenResult* result) {
-  GAB_RETURN_IF_ERROR(check_arguments(lower, options));
+  GAB_RETURN_IF_ERROR(check_arguments(given, options));
+  // Entries above the diagonal are ignored (the engine's convention), also
+  // by the norm and the residuals' products.
+  bool upper = false;
+  for (int32_t j = 0; j < given.ncols && !upper; ++j) {
+    upper = given.colptr[j + 1] > given.colptr[j] && given.rowind[given.colptr[j]] < j;
+  }
+  CscMatrix lower_only;
+  if (upper) lower_only = lower_triangle(given);
+  const CscMatrix& lower = upper ? lower_only : given;
   const int32_t n = lower.nrows, k = options.count;
   const double norm = norm1(lower);
   const double sigma = options.shift < 0.0 ? options.shift : (norm > 0.0 ? -1e-3 * norm : -1.0);

@@ -63,7 +63,8 @@ double orthonormality_error(const SymmetricEigenResult& r, int32_t n) {
 }
 
 // ||A v - lambda v||_2 / ||A||_1 recomputed here, worst over the pairs.
-double worst_residual(const CscMatrix& a, const SymmetricEigenResult& r, int32_t n) {
+double worst_residual(const CscMatrix& given, const SymmetricEigenResult& r, int32_t n) {
+  const CscMatrix a = lower_triangle(given);
   std::vector<double> av(n);
   double worst = 0.0;
   for (size_t c = 0; c < r.values.size(); ++c) {
@@ -269,6 +270,36 @@ TEST(SymmetricEigensolver, BadArgumentsSayWhatIsWrong) {
   s = smallest_eigenpairs(a, o, &r);
   EXPECT_EQ(s.code(), StatusCode::kInvalidArgument);
   EXPECT_EQ(s.message(), "smallest_eigenpairs: max_basis 4 is below count + block_size (5)");
+}
+
+TEST(SymmetricEigensolver, EntriesAboveTheDiagonalAreIgnored) {
+  // The whole symmetric matrix gives what its lower triangle gives.
+  const int32_t n = 120;
+  const CscMatrix lower = laplacian(n, path_edges(n));
+  std::vector<Triplet> t;
+  for (int32_t j = 0; j < n; ++j) {
+    for (int32_t p = lower.colptr[j]; p < lower.colptr[j + 1]; ++p) {
+      t.push_back({lower.rowind[p], j, lower.values[p]});
+      if (lower.rowind[p] != j) t.push_back({j, lower.rowind[p], lower.values[p]});
+    }
+  }
+  CscMatrix full;
+  ASSERT_TRUE(csc_from_triplets(n, n, t, &full).ok());
+  std::vector<double> expected;
+  for (int32_t j = 0; j < n; ++j) expected.push_back(2.0 - 2.0 * std::cos(kPi * j / n));
+  SymmetricEigenOptions o;
+  o.count = 10;
+  const SymmetricEigenResult r = solve_and_check(full, o, expected);
+  EXPECT_DOUBLE_EQ(r.norm, 4.0);
+}
+
+TEST(SymmetricEigensolver, NonFiniteValueIsNamed) {
+  CscMatrix a = laplacian(10, path_edges(10));
+  a.values[a.colptr[3] + 1] = std::nan("");
+  SymmetricEigenResult r;
+  const Status s = smallest_eigenpairs(a, SymmetricEigenOptions(), &r);
+  EXPECT_EQ(s.code(), StatusCode::kInvalidArgument);
+  EXPECT_EQ(s.message(), "smallest_eigenpairs: entry (4, 3) is not finite");
 }
 
 TEST(SymmetricEigensolver, IndefiniteMatrixIsRefused) {

@@ -67,9 +67,9 @@ struct SymmetricEigenResult {
 };
 
 // The `options.count` smallest eigenpairs of the symmetric positive
-// semi-definite A given by its lower triangle (with values). Errors:
-// kInvalidArgument (not square, no values, count outside 1..n, bad
-// options), kNotPositiveDefinite (A - sigma I is not: A is not positive
+// semi-definite A given by its lower triangle (with values; entries above
+// the diagonal are ignored). Errors: kInvalidArgument (not square, no
+// values, a value not finite, count outside 1..n, bad options), kNotPositiveDefinite (A - sigma I is not: A is not positive
 // semi-definite), kResourceExhausted (not converged within max_restarts:
 // the message says how many pairs had converged).
 Status smallest_eigenpairs(const CscMatrix& lower, const SymmetricEigenOptions& options,
