@@ -4,10 +4,11 @@
 #
 #   bash scripts/build-web.sh OUTDIR
 #
-# OUTDIR gets index.html, viewer.js, gab_web.js and gab_web.wasm: serve it
-# over HTTP (a browser will not fetch the .wasm from file://), put .gab
-# files beside it and open index.html?file=NAME.gab. The object files stay
-# in OUTDIR/.build, so a second run rebuilds only what changed.
+# OUTDIR gets index.html, viewer.js, decoder.js, worker.js, gab_web.js and
+# gab_web.wasm: serve it over HTTP (a browser will not fetch the .wasm from
+# file://), put .gab files beside it and open index.html?file=NAME.gab. The
+# object files stay in OUTDIR/.build, so a second run rebuilds only what
+# changed.
 # Needs Debian's emscripten (apt-get install emscripten).
 set -euo pipefail
 
@@ -33,5 +34,5 @@ emcmake cmake -S "$root/web" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/d
 cmake --build "$build" -j "${GAB_WEB_JOBS:-2}"
 
 cp "$build/gab_web.js" "$build/gab_web.wasm" "$out/"
-cp "$root/web/index.html" "$root/web/viewer.js" "$out/"
+cp "$root/web/index.html" "$root/web/viewer.js" "$root/web/decoder.js" "$root/web/worker.js" "$out/"
 echo "build-web: $out/index.html (serve $out over HTTP, open index.html?file=NAME.gab)" >&2

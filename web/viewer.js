@@ -1,6 +1,8 @@
-// gab's progressive viewer: streams a .gab file, decodes it in WebAssembly
-// (gab_web.js, web/gab_web.cpp) each time another chunk has completely
-// arrived, and draws the shape with WebGL. Hand-written, no libraries.
+// gab's progressive viewer: streams a .gab file, has it decoded in
+// WebAssembly each time another chunk has completely arrived, and draws the
+// shape with WebGL. The decoding (decoder.js over gab_web.js, web/gab_web.cpp)
+// runs in a Web Worker (worker.js): this thread only fetches, draws and
+// answers input. Hand-written, no libraries.
 //
 // URL parameters:
 //   file=NAME.gab   the file to show (a URL relative to this page)
@@ -12,12 +14,18 @@
 //                   as close), for close-ups
 //   up=AXIS         the file's axis shown up: x, y, z, -x, -y or -z (default
 //                   +Y, or +Z when the view is along Y; the U key cycles)
+//   worker=0        decode on the page's thread, as where there is no Web
+//                   Worker (for comparisons: the page pauses while a level decodes)
 //
 // For scripts: once the last level is shown, document.title is
 // "gab: done n=<vertices> anchors=<anchors>"; on a bad file (decoder or HTTP
 // error) it is "gab: error: <message>". Every level shown is a list item
-// with data-level, data-anchors, data-bytes, data-total and data-decode-ms;
-// the canvas's data-view is the first view, {"toCamera": [x, y, z], "up": AXIS}.
+// with data-level, data-anchors, data-bytes, data-total, data-decode-ms,
+// data-arrived-ms (when the page had the level's last byte) and
+// data-shown-ms (when it was drawn), both in ms since the page started; the
+// canvas's data-view is the first view, {"toCamera": [x, y, z], "up": AXIS};
+// the body's data-decoder says where the levels were decoded: "worker" or
+// "page".
 'use strict';
 
 (function () {
@@ -27,156 +35,186 @@
   const compact = params.get('compact') === '1';
   const flatShading = params.get('flat') === '1';
   const homeZoom = params.has('zoom') ? Math.min(20, Math.max(0.05, parseFloat(params.get('zoom')) || 1)) : 1;
+  const useWorker = params.get('worker') !== '0';
   if (compact) document.body.classList.add('compact');
 
   const canvas = document.getElementById('view');
   const statusEl = document.getElementById('status');
+  const progressEl = document.getElementById('progress');
+  const pathEl = document.getElementById('path');
   const errorEl = document.getElementById('error');
   const levelsEl = document.getElementById('levels');
   const startTime = performance.now();
 
   // ---- page state --------------------------------------------------------
 
-  let gab = null;          // the WebAssembly module
-  let received = 0;        // bytes in the module's buffer
+  let received = 0;        // bytes fetched so far
   let total = 0;           // Content-Length (0: unknown)
   let streamDone = false;
-  let decodedChunks = 0;   // complete chunks of the level on screen
-  let shown = null;        // what the decoder said of it
-  let stepPending = false;
+  let decoding = null;     // {level, since} while a level decodes
   let finished = false;    // done or failed: nothing more happens
 
   function kb(bytes) { return (bytes / 1024).toFixed(1) + ' KB'; }
 
   function fail(message) {
     if (finished) return;
-    finished = true;
+    finish();
     document.title = 'gab: error: ' + message;
     errorEl.textContent = 'error: ' + message;
   }
 
-  // ---- streaming ---------------------------------------------------------
-
-  // Copies `bytes` after the ones received so far, growing the module's buffer.
-  function append(bytes) {
-    const need = received + bytes.length;
-    const capacity = Math.max(need, total, 2 * received);
-    const ptr = gab._gab_web_buffer(capacity);
-    if (!ptr) throw new Error('out of memory for ' + need + ' bytes');
-    gab.HEAPU8.set(bytes, ptr + received);  // HEAPU8 afresh: the memory may have grown
-    received = need;
+  function finish() {
+    finished = true;
+    decoding = null;
+    clearInterval(progressTimer);
+    showProgress();
+    stopDecoder();
   }
 
-  // Decoding waits for a task of its own, so bytes that are already here
-  // are appended first, and a level overtaken while another decoded is skipped.
-  function schedule() {
-    if (stepPending || finished) return;
-    stepPending = true;
-    setTimeout(step, 0);
+  // ---- the decoder: in a Web Worker, or on this thread ------------------
+  //
+  // The worker loads the WebAssembly module itself, while this thread sets
+  // up WebGL and fetches. Messages for the decoder (decoder.js's) wait here until it is
+  // ready, so a worker that cannot start leaves them to the fallback: the
+  // same session on this thread, as where there is no Web Worker at all
+  // (file://, an old browser); each level's decode then blocks the page.
+  // Bytes go over with their buffers transferred, not copied.
+
+  let sendToDecoder = null;  // (message, transfer) => void, once it is ready
+  let waiting = [];          // [message, transfer] until then
+  let stopDecoder = () => {};
+
+  function send(message, transfer) {
+    if (sendToDecoder) sendToDecoder(message, transfer || []);
+    else waiting.push([message, transfer || []]);
   }
 
-  function step() {
-    stepPending = false;
-    if (finished) return;
-    let frames = gab._gab_web_frames(received);
-    if (frames === -2) return fail(gab.UTF8ToString(gab._gab_web_message()));
-    let last = streamDone;
-    if (stopLevel >= 0 && frames > stopLevel) {
-      frames = stopLevel + 1;
-      last = true;
-    }
-    if (frames < 0) frames = 0;
-    if (frames > decodedChunks || (last && shown === null)) {
-      // Whole chunks only; the decoder checks every checksum.
-      const size = frames > 0 ? gab._gab_web_chunk_end(frames - 1) : received;
-      if (!decodeAndShow(size)) return;
-    }
-    if (shown && (last || isComplete(shown))) conclude(shown);
+  function decoderReady(sender, where, why) {
+    sendToDecoder = sender;
+    document.body.dataset.decoder = where;
+    if (where === 'page') pathEl.textContent = 'decoding on the page\'s thread (' + why + '): it pauses while a level decodes';
+    for (const [message, transfer] of waiting.splice(0)) sender(message, transfer);
   }
 
-  function isComplete(info) {
-    return info.chunks === info.chunksInFile && info.anchors === info.anchorsInFile;
-  }
-
-  // The last level is on screen: done, or the file ended early.
-  function conclude(info) {
-    if (isComplete(info) || stopLevel >= 0) {
-      finished = true;
-      document.title = 'gab: done n=' + info.n + ' anchors=' + info.anchors;
-    } else {
-      fail('the file ends inside chunk ' + info.chunks + ' of ' + info.chunksInFile +
-           ' (showing the first ' + info.chunks + ')');
-    }
-  }
-
-  // Decodes the first `size` bytes and shows the shape; false on an error.
-  function decodeAndShow(size) {
-    const t0 = performance.now();
-    let rc;
+  function startDecoder() {
+    if (!useWorker) return startHere('worker=0');
+    if (typeof Worker !== 'function') return startHere('no Web Worker in this browser');
+    let worker;
     try {
-      rc = gab._gab_web_decode(size, -1);
+      worker = new Worker('worker.js');
     } catch (e) {
-      fail('the decoder stopped: ' + e);
-      return false;
+      return startHere('no Web Worker here: ' + (e.message || e));
     }
-    const decodeMs = performance.now() - t0;
-    if (rc !== 0) {
-      fail(gab.UTF8ToString(gab._gab_web_message()));
-      return false;
-    }
-    const info = {
-      n: gab._gab_web_vertices(),
-      t: gab._gab_web_triangles(),
-      anchors: gab._gab_web_anchors(),
-      anchorsInFile: gab._gab_web_anchors_in_file(),
-      chunks: gab._gab_web_chunks(),
-      chunksInFile: gab._gab_web_chunks_in_file(),
-      refined: gab._gab_web_refined() !== 0,
-      detail: gab._gab_web_detail() !== 0,
-      decodeMs: decodeMs,
+    stopDecoder = () => worker.terminate();
+    worker.onmessage = (e) => {
+      if (e.data.type === 'ready') decoderReady((message, transfer) => worker.postMessage(message, transfer), 'worker');
+      else fromDecoder(e.data);
     };
-    decodedChunks = info.chunks;
-    shown = info;
-    const positions = new Float32Array(gab.HEAPF32.buffer, gab._gab_web_positions(), 3 * info.n).slice();
-    const indices = new Uint32Array(gab.HEAPU32.buffer, gab._gab_web_indices(), 3 * info.t).slice();
-    uploadMesh(positions, indices);
-    report(info, size);
-    draw();
-    return true;
+    worker.onerror = (e) => {
+      e.preventDefault();
+      if (sendToDecoder) return fail('the decoder stopped: ' + e.message);
+      worker.terminate();
+      startHere('the Web Worker did not start');
+    };
   }
 
-  function report(info, size) {
-    const level = info.chunks - 1;
-    let kind = '';
-    if (info.detail) kind = ' (detail)';
-    else if (info.refined) kind = ' (refinement)';
-    const ms = info.decodeMs.toFixed(0);
-    statusEl.textContent =
-      'level ' + level + kind + ' of ' + (info.chunksInFile - 1) +
-      ' · anchors ' + info.anchors + ' / ' + info.anchorsInFile +
-      ' · ' + kb(size) + (total ? ' / ' + kb(total) : '') +
-      (compact ? '' : ' · n = ' + info.n + ', ' + info.t + ' triangles · decoded in ' + ms + ' ms');
-    const item = document.createElement('li');
-    item.className = 'level';
-    item.dataset.level = String(level);
-    item.dataset.anchors = String(info.anchors);
-    item.dataset.bytes = String(size);
-    item.dataset.total = String(total);
-    item.dataset.decodeMs = ms;
-    item.textContent = 'level ' + level + kind + ': ' + info.anchors + ' anchors' + ' at ' + kb(size) + ', decoded in ' + ms +
-      ' ms, shown at ' + (performance.now() - startTime).toFixed(0) + ' ms';
-    levelsEl.appendChild(item);
+  function loadScript(src) {
+    return new Promise((resolve, reject) => {
+      const script = document.createElement('script');
+      script.src = src;
+      script.onload = resolve;
+      script.onerror = () => reject(new Error(src + ' did not load'));
+      document.head.appendChild(script);
+    });
   }
 
-  async function load() {
-    if (!fileName) return fail('no file given: open index.html?file=NAME.gab');
-    document.getElementById('name').textContent = fileName;
+  async function startHere(why) {
+    stopDecoder = () => {};
+    try {
+      await loadScript('decoder.js');
+      await loadScript('gab_web.js');
+    } catch (e) {
+      return fail(e.message);
+    }
     if (typeof createGabModule !== 'function') return fail('gab_web.js did not load');
+    let gab;
     try {
       gab = await createGabModule();
     } catch (e) {
       return fail('the decoder did not load: ' + e);
     }
+    if (finished) return;
+    const session = createGabDecoder(gab, fromDecoder);
+    decoderReady((message) => session.receive(message), 'page', why);
+  }
+
+  function fromDecoder(message) {
+    if (finished) return;
+    if (message.type === 'decoding') {
+      decoding = { level: message.level, since: performance.now() };
+      showProgress();
+    } else if (message.type === 'shape') {
+      decoding = null;
+      uploadMesh(message);
+      draw();
+      report(message);
+      showProgress();
+    } else if (message.type === 'done') {
+      finish();
+      document.title = 'gab: done n=' + message.n + ' anchors=' + message.anchors;
+    } else if (message.type === 'error') {
+      fail(message.message);
+    }
+  }
+
+  // ---- the panel ----------------------------------------------------------
+
+  // While a level decodes, which one and for how long; while bytes arrive,
+  // how many. Refreshed by a timer, which also shows this thread is free.
+  function showProgress() {
+    let text = '';
+    if (decoding) {
+      const seconds = ((performance.now() - decoding.since) / 1000).toFixed(1);
+      text = 'decoding' + (decoding.level >= 0 ? ' level ' + decoding.level : '') + '… ' + seconds + ' s';
+    } else if (!finished && received > 0 && !streamDone) {
+      text = 'received ' + kb(received) + (total ? ' of ' + kb(total) : '');
+    }
+    if (progressEl.textContent !== text) progressEl.textContent = text;
+  }
+  const progressTimer = setInterval(showProgress, 100);
+
+  function report(shape) {
+    const info = shape.info;
+    const level = shape.level;
+    let kind = '';
+    if (info.detail) kind = ' (detail)';
+    else if (info.refined) kind = ' (refinement)';
+    const ms = shape.decodeMs.toFixed(0);
+    const shownMs = performance.now() - startTime;
+    statusEl.textContent =
+      'level ' + level + kind + ' of ' + (info.chunksInFile - 1) +
+      ' · anchors ' + info.anchors + ' / ' + info.anchorsInFile +
+      ' · ' + kb(shape.bytes) + (total ? ' / ' + kb(total) : '') +
+      (compact ? '' : ' · n = ' + info.n + ', ' + info.t + ' triangles · decoded in ' + ms + ' ms');
+    const item = document.createElement('li');
+    item.className = 'level';
+    item.dataset.level = String(level);
+    item.dataset.anchors = String(info.anchors);
+    item.dataset.bytes = String(shape.bytes);
+    item.dataset.total = String(total);
+    item.dataset.decodeMs = ms;
+    item.dataset.arrivedMs = (shape.arrivedMs - startTime).toFixed(0);
+    item.dataset.shownMs = shownMs.toFixed(0);
+    item.textContent = 'level ' + level + kind + ': ' + info.anchors + ' anchors' + ' at ' + kb(shape.bytes) +
+      ', decoded in ' + ms + ' ms, shown at ' + shownMs.toFixed(0) + ' ms';
+    levelsEl.appendChild(item);
+  }
+
+  // ---- streaming ---------------------------------------------------------
+
+  async function load() {
+    if (!fileName) return fail('no file given: open index.html?file=NAME.gab');
+    document.getElementById('name').textContent = fileName;
     statusEl.textContent = 'fetching ' + fileName + '…';
     let response;
     try {
@@ -186,6 +224,7 @@
     }
     if (!response.ok) return fail('HTTP ' + response.status + ' ' + response.statusText + ' for ' + fileName);
     total = Number(response.headers.get('Content-Length')) || 0;
+    send({ type: 'options', stopLevel: stopLevel, flat: flatShading, total: total });
     const reader = response.body.getReader();
     for (;;) {
       let chunk;
@@ -194,25 +233,28 @@
       } catch (e) {
         return fail('reading ' + fileName + ': ' + e.message);
       }
-      if (chunk.done) break;
       if (finished) {
         reader.cancel();
         return;
       }
-      append(chunk.value);
-      schedule();
+      if (chunk.done) break;
+      const bytes = chunk.value;
+      received += bytes.length;
+      // The stream's chunks usually own their buffers: handed over whole.
+      const buffer = bytes.byteOffset === 0 && bytes.byteLength === bytes.buffer.byteLength
+        ? bytes.buffer : bytes.slice().buffer;
+      send({ type: 'bytes', bytes: buffer, arrivedMs: performance.now() }, [buffer]);
     }
     streamDone = true;
     if (received === 0) return fail(fileName + ' is empty');
-    schedule();
+    send({ type: 'end' });
   }
 
   // ---- WebGL -------------------------------------------------------------
 
-  const gl = canvas.getContext('webgl2', { antialias: true, preserveDrawingBuffer: true }) ||
-             canvas.getContext('webgl', { antialias: true, preserveDrawingBuffer: true });
-  const isWebGL2 = typeof WebGL2RenderingContext !== 'undefined' && gl instanceof WebGL2RenderingContext;
+  let gl = null;
   let program = null, positionBuffer = null, normalBuffer = null, indexBuffer = null;
+  let modelViewLocation = null, projectionLocation = null;
   let indexCount = 0;
   let center = [0, 0, 0], radius = 1, fitted = false;
 
@@ -254,7 +296,10 @@
   }
 
   function initGL() {
+    gl = canvas.getContext('webgl2', { antialias: true, preserveDrawingBuffer: true }) ||
+         canvas.getContext('webgl', { antialias: true, preserveDrawingBuffer: true });
     if (!gl) return 'WebGL is not available in this browser';
+    const isWebGL2 = typeof WebGL2RenderingContext !== 'undefined' && gl instanceof WebGL2RenderingContext;
     if (!isWebGL2 && !gl.getExtension('OES_element_index_uint')) return 'WebGL lacks 32-bit indices';
     program = gl.createProgram();
     gl.attachShader(program, compile(gl.VERTEX_SHADER, vertexSource));
@@ -263,6 +308,10 @@
     gl.bindAttribLocation(program, 1, 'normal');
     gl.linkProgram(program);
     if (!gl.getProgramParameter(program, gl.LINK_STATUS)) return gl.getProgramInfoLog(program);
+    // Asked once, here: a query waits for the GPU process to catch up, which
+    // after a large upload would hold this thread for as long as the copy takes.
+    modelViewLocation = gl.getUniformLocation(program, 'modelView');
+    projectionLocation = gl.getUniformLocation(program, 'projection');
     positionBuffer = gl.createBuffer();
     normalBuffer = gl.createBuffer();
     indexBuffer = gl.createBuffer();
@@ -270,70 +319,26 @@
     return '';
   }
 
-  // Area-weighted vertex normals: the sum of the cross products of the
-  // triangles around each vertex, normalized.
-  function vertexNormals(positions, indices) {
-    const normals = new Float32Array(positions.length);
-    const p = positions;
-    for (let i = 0; i < indices.length; i += 3) {
-      const a = 3 * indices[i], b = 3 * indices[i + 1], c = 3 * indices[i + 2];
-      const ux = p[b] - p[a], uy = p[b + 1] - p[a + 1], uz = p[b + 2] - p[a + 2];
-      const vx = p[c] - p[a], vy = p[c + 1] - p[a + 1], vz = p[c + 2] - p[a + 2];
-      const nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
-      for (const k of [a, b, c]) {
-        normals[k] += nx;
-        normals[k + 1] += ny;
-        normals[k + 2] += nz;
-      }
-    }
-    for (let k = 0; k < normals.length; k += 3) {
-      const len = Math.hypot(normals[k], normals[k + 1], normals[k + 2]) || 1;
-      normals[k] /= len;
-      normals[k + 1] /= len;
-      normals[k + 2] /= len;
-    }
-    return normals;
-  }
-
-  // Flat shading: every triangle its own three vertices, so the normals
-  // averaged at a vertex are its triangle's (three times the memory).
-  function unshared(positions, indices) {
-    const flat = new Float32Array(3 * indices.length);
-    for (let k = 0; k < indices.length; ++k) {
-      for (let c = 0; c < 3; ++c) flat[3 * k + c] = positions[3 * indices[k] + c];
-    }
-    const order = new Uint32Array(indices.length);
-    for (let k = 0; k < order.length; ++k) order[k] = k;
-    return [flat, order];
-  }
-
   // The first level fixes the camera (the bounding box barely moves after):
   // each later level replaces the shape in place, so refinement is visible.
-  function uploadMesh(positions, indices) {
+  // The decoder sends the normals and, with the first level, its bounds and
+  // principal axes: nothing here is proportional to the shape but the upload.
+  function uploadMesh(shape) {
     if (!program) return;
     if (!fitted) {
-      const lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
-      for (let i = 0; i < positions.length; i += 3) {
-        for (let c = 0; c < 3; ++c) {
-          lo[c] = Math.min(lo[c], positions[i + c]);
-          hi[c] = Math.max(hi[c], positions[i + c]);
-        }
-      }
-      if (positions.length === 0) { lo.fill(0); hi.fill(1); }
-      center = [0, 1, 2].map((c) => 0.5 * (lo[c] + hi[c]));
-      radius = 0.5 * Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) || 1;
-      axes = principalAxes(positions, indices);
+      center = shape.bounds.center;
+      radius = shape.bounds.radius;
+      axes = shape.axes;
       homeView();
       fitted = true;
     }
-    if (flatShading) [positions, indices] = unshared(positions, indices);
     gl.bindBuffer(gl.ARRAY_BUFFER, positionBuffer);
-    gl.bufferData(gl.ARRAY_BUFFER, positions, gl.STATIC_DRAW);
+    gl.bufferData(gl.ARRAY_BUFFER, shape.positions, gl.STATIC_DRAW);
     gl.bindBuffer(gl.ARRAY_BUFFER, normalBuffer);
-    gl.bufferData(gl.ARRAY_BUFFER, vertexNormals(positions, indices), gl.STATIC_DRAW);
+    gl.bufferData(gl.ARRAY_BUFFER, shape.normals, gl.STATIC_DRAW);
     gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, indexBuffer);
-    gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, indices, gl.STATIC_DRAW);
-    indexCount = indices.length;
+    gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, shape.indices, gl.STATIC_DRAW);
+    indexCount = shape.indices.length;
   }
 
   // ---- camera: an orbit around the box's centre -------------------------
@@ -376,72 +381,8 @@
   // never a flat or long shape edge-on or from above. A file says nothing of
   // which way is up: the file's +Y is (OBJ's and glTF's convention), or +Z
   // where +Y is within 45 degrees of the view; `up=AXIS` in the URL (x, y, z,
-  // -x, -y, -z) or the U key (the next axis) chooses another.
-
-  // The surface's principal axes, the largest spread first: eigenvectors of
-  // its covariance, each triangle's second moment taken exactly (area / 12 *
-  // (aa' + bb' + cc' + ss'), s = a + b + c), so uneven sampling does not pull
-  // them. Cyclic Jacobi rotations on the 3 x 3 matrix.
-  function principalAxes(positions, indices) {
-    let area = 0;
-    const mean = [0, 0, 0], second = [0, 0, 0, 0, 0, 0];  // xx yy zz xy xz yz
-    const a = [0, 0, 0], b = [0, 0, 0], c = [0, 0, 0], sum = [0, 0, 0];
-    for (let k = 0; k + 2 < indices.length; k += 3) {
-      for (let d = 0; d < 3; ++d) {
-        a[d] = positions[3 * indices[k] + d] - center[d];
-        b[d] = positions[3 * indices[k + 1] + d] - center[d];
-        c[d] = positions[3 * indices[k + 2] + d] - center[d];
-        sum[d] = a[d] + b[d] + c[d];
-      }
-      const ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
-      const vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
-      const w = 0.5 * Math.hypot(uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx);
-      area += w;
-      for (let d = 0; d < 3; ++d) mean[d] += w * sum[d] / 3;
-      for (const p of [a, b, c, sum]) {
-        second[0] += w / 12 * p[0] * p[0];
-        second[1] += w / 12 * p[1] * p[1];
-        second[2] += w / 12 * p[2] * p[2];
-        second[3] += w / 12 * p[0] * p[1];
-        second[4] += w / 12 * p[0] * p[2];
-        second[5] += w / 12 * p[1] * p[2];
-      }
-    }
-    if (!(area > 0)) return [[1, 0, 0], [0, 1, 0], [0, 0, 1]];
-    const m = mean.map((v) => v / area);
-    const A = [
-      [second[0] / area - m[0] * m[0], second[3] / area - m[0] * m[1], second[4] / area - m[0] * m[2]],
-      [second[3] / area - m[0] * m[1], second[1] / area - m[1] * m[1], second[5] / area - m[1] * m[2]],
-      [second[4] / area - m[0] * m[2], second[5] / area - m[1] * m[2], second[2] / area - m[2] * m[2]]];
-    const V = [[1, 0, 0], [0, 1, 0], [0, 0, 1]];  // columns: the eigenvectors
-    for (let sweep = 0; sweep < 50; ++sweep) {
-      const off = Math.abs(A[0][1]) + Math.abs(A[0][2]) + Math.abs(A[1][2]);
-      if (off <= 1e-15 * (Math.abs(A[0][0]) + Math.abs(A[1][1]) + Math.abs(A[2][2]))) break;
-      for (const [p, q] of [[0, 1], [0, 2], [1, 2]]) {
-        if (A[p][q] === 0) continue;
-        // The rotation that zeroes A[p][q] (Golub & Van Loan, the symmetric Schur decomposition).
-        const theta = (A[q][q] - A[p][p]) / (2 * A[p][q]);
-        const t = Math.sign(theta || 1) / (Math.abs(theta) + Math.sqrt(theta * theta + 1));
-        const cs = 1 / Math.sqrt(t * t + 1), sn = t * cs;
-        for (let k = 0; k < 3; ++k) {  // A J
-          const akp = A[k][p], akq = A[k][q];
-          A[k][p] = cs * akp - sn * akq;
-          A[k][q] = sn * akp + cs * akq;
-        }
-        for (let k = 0; k < 3; ++k) {  // J' A
-          const apk = A[p][k], aqk = A[q][k];
-          A[p][k] = cs * apk - sn * aqk;
-          A[q][k] = sn * apk + cs * aqk;
-        }
-        for (let k = 0; k < 3; ++k) {
-          const vkp = V[k][p], vkq = V[k][q];
-          V[k][p] = cs * vkp - sn * vkq;
-          V[k][q] = sn * vkp + cs * vkq;
-        }
-      }
-    }
-    return [0, 1, 2].sort((i, j) => A[j][j] - A[i][i]).map((i) => [V[0][i], V[1][i], V[2][i]]);
-  }
+  // -x, -y, -z) or the U key (the next axis) chooses another. The axes come
+  // with the first level (decoder.js, principalAxes).
 
   const upAxes = ['y', 'z', 'x', '-y', '-z', '-x'];
   function axisVector(name) {
@@ -514,8 +455,8 @@
     const modelView = multiply(translation(0, 0, -distance),
                                multiply(orientation, translation(-center[0], -center[1], -center[2])));
     gl.useProgram(program);
-    gl.uniformMatrix4fv(gl.getUniformLocation(program, 'modelView'), false, modelView);
-    gl.uniformMatrix4fv(gl.getUniformLocation(program, 'projection'), false, projection);
+    gl.uniformMatrix4fv(modelViewLocation, false, modelView);
+    gl.uniformMatrix4fv(projectionLocation, false, projection);
     gl.bindBuffer(gl.ARRAY_BUFFER, positionBuffer);
     gl.enableVertexAttribArray(0);
     gl.vertexAttribPointer(0, 3, gl.FLOAT, false, 0, 0);
@@ -584,16 +525,24 @@
 
   // ---- start -------------------------------------------------------------
 
-  let glError = '';
-  try {
-    glError = initGL();
-  } catch (e) {
-    glError = String(e.message || e);
-  }
-  if (glError) {
-    // The shape still decodes (and the title still reports it); only the picture is missing.
-    errorEl.textContent = 'no picture: ' + glError;
-    program = null;
-  }
-  load().catch((e) => fail(String(e && e.message ? e.message : e)));
+  // The worker starts loading the module first; WebGL is set up in a task
+  // of its own, so the worker's start is not held behind it (a software
+  // renderer can take a good part of a second to create its context).
+  if (fileName) startDecoder();
+  setTimeout(() => {
+    let glError = '';
+    try {
+      glError = initGL();
+    } catch (e) {
+      glError = String(e.message || e);
+    }
+    if (glError) {
+      // The shape still decodes (and the title still reports it); only the picture is missing.
+      errorEl.textContent = 'no picture: ' + glError;
+      program = null;
+    } else {
+      resize();  // the drawing buffer's size, before any shape: a new size waits for the GPU process
+    }
+    load().catch((e) => fail(String(e && e.message ? e.message : e)));
+  }, 0);
 })();

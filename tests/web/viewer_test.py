@@ -7,17 +7,27 @@ Checks, each by the title the page sets (web/viewer.js) and its level list:
     numbers of `gab compress --json`; a screenshot stays in WORK/viewer.png;
   * served one frame at a time (a throttled stream), the first level is
     shown before the whole file has arrived, and later levels refine it;
+  * the levels were decoded in the Web Worker (the body's data-decoder);
+    with ?worker=0 the page decodes them itself, with the same result;
   * ?level=0 stops at the coarsest level;
   * the first view looks along the decoded surface's axis of least spread
     (the viewer's principal axes against the test's own), +Y up; ?up=z
     turns +Z up;
   * a file with a corrupted chunk, one with a corrupted header and a
-    missing file end at "gab: error: ..." with the decoder's (or HTTP's) message.
+    missing file end at "gab: error: ..." with the decoder's (or HTTP's) message;
+  * a larger mesh (bunny00 subdivided once: 150,818 vertices, --reorder;
+    or --large-mesh) on the throttled stream: the page's thread keeps
+    answering while its levels decode (a timer callback at most
+    MAX_GAP_MS late, in the best of GAP_LOADS loads, from the file's
+    request to the final title; decoding on the page's thread misses that
+    by the decode's whole length), and the panel said "decoding level L… T s"
+    meanwhile. The log gives the first shape's delay after the first
+    chunk's arrival and the whole mesh's decode against the native one.
 
 Exit 0 on success, 1 on a failure, 77 (ctest: skipped) when emscripten or
 Chromium is missing, unless GAB_WEB_TEST_REQUIRED=1 (CI): then 1.
 
-  viewer_test.py --gab build/apps/gab --source . --work build/web-test [--mesh MESH]
+  viewer_test.py --gab build/apps/gab --source . --work build/web-test [--mesh MESH] [--large-mesh MESH]
 """
 
 import argparse
@@ -39,6 +49,37 @@ import time
 
 SKIP = 77
 FRAME_DELAY_S = 0.15  # the throttled stream's pause between frames
+MAX_GAP_MS = 100      # the longest the page's thread may go unanswered while a file decodes
+GAP_LOADS = 3         # loads of the larger file; the best one counts (the machine may be busy)
+
+# Injected before the page's own scripts: when the page's thread ran a timer
+# callback (a gap is a stretch without one; the timer asks every 5 ms) and
+# what the progress line said, until the title is final.
+WATCH = """(() => {
+  const watch = window.gabWatch = { gaps: [], progress: [] };
+  let last = performance.now();
+  function tick() {
+    const now = performance.now();
+    if (now - last > 16) watch.gaps.push([last, now]);
+    last = now;
+    const line = document.getElementById('progress');
+    const text = line ? line.textContent : '';
+    if (text && watch.progress[watch.progress.length - 1] !== text) watch.progress.push(text);
+    if (!/^gab: (done|error)/.test(document.title)) setTimeout(tick, 5);
+  }
+  setTimeout(tick, 5);
+})();"""
+
+# The longest gap after the page asked for the file (Resource Timing's
+# startTime: what came before, such as WebGL's start, is not the decoder's),
+# and the progress lines seen.
+WATCHED = """(() => {
+  const file = performance.getEntriesByType('resource').find((e) => e.name.endsWith(%s));
+  const from = file ? file.startTime : 0;
+  const gaps = window.gabWatch.gaps.filter(([a, b]) => b > from).map(([a, b]) => b - Math.max(a, from));
+  return JSON.stringify({ maxGap: Math.max(0, ...gaps), progress: window.gabWatch.progress,
+                          decoder: document.body.dataset.decoder || '' });
+})()"""
 
 
 def log(message):
@@ -236,6 +277,17 @@ class Browser:
                                ".map((li) => Object.assign({}, li.dataset)))")
         return title, json.loads(levels or "[]")
 
+    def watch(self):
+        """Runs WATCH in every page loaded from now on; returns the handle for unwatch."""
+        return self.call("Page.addScriptToEvaluateOnNewDocument", {"source": WATCH})["identifier"]
+
+    def unwatch(self, handle):
+        self.call("Page.removeScriptToEvaluateOnNewDocument", {"identifier": handle})
+
+    def watched(self, file_name):
+        """What WATCH saw of the page just loaded, which fetched file_name."""
+        return json.loads(self.evaluate(WATCHED % json.dumps(file_name)))
+
     def screenshot(self, path):
         data = self.call("Page.captureScreenshot", {"format": "png"})["data"]
         with open(path, "wb") as f:
@@ -298,12 +350,53 @@ def corrupt_copy(data, offset):
     return bytes(out)
 
 
+def check_responsive(browser, base, large, native, check):
+    """The larger file on the throttled stream, GAP_LOADS times in the Web
+    Worker and once on the page's thread (for the log): the page's thread
+    answers throughout, and the panel shows the decode's progress."""
+    expected = "gab: done n=%d anchors=%d" % (large["n"], large["anchors"])
+    handle = browser.watch()
+    try:
+        runs = []
+        for _ in range(GAP_LOADS):
+            title, levels = browser.load(base + "slow/large.gab")
+            runs.append((title, levels, browser.watched("slow/large.gab")))
+        title, levels = browser.load(base + "slow/large.gab&worker=0")
+        page = browser.watched("slow/large.gab")
+    finally:
+        browser.unwatch(handle)
+    check("larger file, throttled: " + ", ".join(sorted(set(run[0] for run in runs))),
+          all(run[0] == expected and run[2]["decoder"] == "worker" for run in runs),
+          "expected %r from the worker each time" % expected)
+    gaps = [run[2]["maxGap"] for run in runs]
+    check("larger file: the page's thread answers while it decodes (longest gap %s ms; at most %d in the best load)" %
+          (", ".join("%.0f" % gap for gap in gaps), MAX_GAP_MS), min(gaps) <= MAX_GAP_MS,
+          "every load left the page's thread unanswered longer")
+    progress = [line for run in runs for line in run[2]["progress"]]
+    shown = [line for line in progress if re.match(r"^decoding level \d+… \d+\.\d s$", line)]
+    check("larger file: the panel showed the decode's progress (%s)" % (shown[-1] if shown else "nothing"),
+          len(shown) > 0, "no 'decoding level L… T s' line among %r" % progress[:10])
+    log("larger file decoded on the page's thread (worker=0): longest gap %.0f ms, %s" %
+        (page["maxGap"], title))
+    for title, levels, _ in runs:
+        if title != expected or not levels:
+            continue
+        first, last = levels[0], levels[-1]
+        log("larger file: first shape (level %s) %d ms after its chunk arrived (decode %s ms); "
+            "whole mesh decoded in %s ms, %.1fx native's %.0f ms, shown %d ms after its last byte" %
+            (first["level"], int(first["shownMs"]) - int(first["arrivedMs"]), first["decodeMs"],
+             last["decodeMs"], float(last["decodeMs"]) / (1e3 * native["decode_s"]), 1e3 * native["decode_s"],
+             int(last["shownMs"]) - int(last["arrivedMs"])))
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--gab", required=True, help="the gab binary")
     parser.add_argument("--source", required=True, help="the repository's root")
     parser.add_argument("--work", required=True, help="a folder for the site, files and screenshot")
     parser.add_argument("--mesh", help="the mesh to compress (default: data/meshes/camel.off)")
+    parser.add_argument("--large-mesh", help="the larger mesh for the responsiveness check "
+                        "(default: data/meshes/bunny00.off subdivided once)")
     args = parser.parse_args()
 
     chromium = find_chromium()
@@ -346,6 +439,21 @@ def main():
     with open(os.path.join(site, "bad-header.gab"), "wb") as f:
         f.write(corrupt_copy(data, 20))
 
+    large_mesh = args.large_mesh
+    if not large_mesh:
+        large_mesh = os.path.join(work, "bunny00-x4.off")
+        subprocess.run([args.gab, "subdivide", os.path.join(args.source, "data", "meshes", "bunny00.off"),
+                        "-o", large_mesh, "--levels", "1"], stdout=subprocess.DEVNULL, check=True)
+    large_file = os.path.join(site, "large.gab")
+    large = json.loads(subprocess.run([args.gab, "compress", "-i", large_mesh, "-o", large_file, "--reorder",
+                                       "--json"], stdout=subprocess.PIPE, check=True).stdout)
+    large_decode = json.loads(subprocess.run([args.gab, "decompress", "-i", large_file, "-o",
+                                              os.path.join(work, "large-decoded.off"), "--json", "--threads", "1"],
+                                             stdout=subprocess.PIPE, check=True).stdout)
+    log("%s (the larger mesh): n=%d anchors=%d, %d bytes, %d chunks; native decode %.1f ms" %
+        (os.path.basename(large_mesh), large["n"], large["anchors"], large["bytes"], large["chunks"],
+         1e3 * large_decode["decode_s"]))
+
     failures = []
 
     def check(what, condition, detail):
@@ -366,6 +474,9 @@ def main():
             if levels:
                 log("browser decode of the whole file: %s ms (native, one thread: %.1f ms)" %
                     (levels[-1]["decodeMs"], 1e3 * decode["decode_s"]))
+            decoder = browser.evaluate("document.body.dataset.decoder || ''")
+            check("whole file: decoded in the Web Worker (data-decoder=%s)" % decoder, decoder == "worker",
+                  "expected data-decoder=worker")
             view = json.loads(browser.evaluate("document.getElementById('view').dataset.view || '{}'") or "{}")
             axis = thinnest_axis(*read_off(os.path.join(work, "decoded.off")))
             to_camera = view.get("toCamera", [0, 0, 0])
@@ -395,6 +506,11 @@ def main():
             shot_up = os.path.join(work, "viewer-up-z.png")
             browser.screenshot(shot_up)
 
+            title, levels = browser.load(base + "mesh.gab&worker=0")
+            decoder = browser.evaluate("document.body.dataset.decoder || ''")
+            check("worker=0: %s, decoded by the page (data-decoder=%s)" % (title, decoder),
+                  title == expected and decoder == "page", "expected %r and data-decoder=page" % expected)
+
             title, levels = browser.load(base + "mesh.gab&level=0")
             level0 = levels[-1]["anchors"] if levels else "?"
             check("level=0: " + title,
@@ -406,6 +522,8 @@ def main():
                                   ("missing.gab", r"^gab: error: HTTP 404")):
                 title, _ = browser.load(base + name)
                 check(name + ": " + title, re.search(pattern, title) is not None, "expected /%s/" % pattern)
+
+            check_responsive(browser, base, large, large_decode, check)
     finally:
         browser.close()
 
