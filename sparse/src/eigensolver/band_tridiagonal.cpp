@@ -28,22 +28,30 @@ struct Work {
 };
 
 // Applies the rotation [c s; -s c] to rows and columns (q - 1, q): every
-// entry that can be nonzero lies in columns [q - b - 1, q + b].
+// entry that can be nonzero lies in columns [q - b - 1, q + b]. Left of the
+// pair the two entries of column k are adjacent (rows p and q of it); right
+// of it they lie in columns p and q at rows k; the three ranges are written
+// apart so the loops index storage directly.
 void rotate(Work& w, int32_t q, double c, double s) {
   const int32_t p = q - 1;
   const int32_t lo = std::max(0, q - w.b - 1), hi = std::min(w.m - 1, q + w.b);
-  for (int32_t k = lo; k <= hi; ++k) {
-    if (k == p || k == q) continue;
-    double& x = w.at(p, k);
-    double& y = w.at(q, k);
-    const double xp = x, yq = y;
-    x = c * xp + s * yq;
-    y = -s * xp + c * yq;
+  for (int32_t k = lo; k < p; ++k) {
+    double* col = w.a + static_cast<int64_t>(k) * w.ld;
+    const double x = col[p - k], y = col[q - k];
+    col[p - k] = c * x + s * y;
+    col[q - k] = -s * x + c * y;
   }
-  const double app = w.at(p, p), aqq = w.at(q, q), apq = w.at(q, p);
-  w.at(p, p) = c * c * app + 2.0 * c * s * apq + s * s * aqq;
-  w.at(q, q) = s * s * app - 2.0 * c * s * apq + c * c * aqq;
-  w.at(q, p) = c * s * (aqq - app) + (c * c - s * s) * apq;
+  double* cp = w.a + static_cast<int64_t>(p) * w.ld;  // column p: (p + t, p) at cp[t]
+  double* cq = w.a + static_cast<int64_t>(q) * w.ld;
+  for (int32_t k = q + 1; k <= hi; ++k) {
+    const double x = cp[k - p], y = cq[k - q];
+    cp[k - p] = c * x + s * y;
+    cq[k - q] = -s * x + c * y;
+  }
+  const double app = cp[0], aqq = cq[0], apq = cp[1];
+  cp[0] = c * c * app + 2.0 * c * s * apq + s * s * aqq;
+  cq[0] = s * s * app - 2.0 * c * s * apq + c * c * aqq;
+  cp[1] = c * s * (aqq - app) + (c * c - s * s) * apq;
 }
 
 // Zeroes entry (q, col) against (q - 1, col) by a rotation of (q - 1, q).
