@@ -4,7 +4,7 @@
 // 4.3.5: the upper bandwidth grows from b to 2b), normalize, repeat. With
 // theta accurate to eps ||T||, two solves from a random start give the
 // vector to about eps ||T|| / gap. Vectors of close values are
-// orthogonalized against their cluster after every solve.
+// orthogonalized against each other after every solve.
 #include "eigensolver/band_inverse_iteration.h"
 
 #include <algorithm>
@@ -112,9 +112,14 @@ void band_eigenvectors(const SymmetricBand& band, const double* values, int32_t 
                       std::numeric_limits<double>::epsilon();
   SplitMix64 rng(seed);
   BandLu lu;
-  int32_t cluster_first = 0;
+  // The vectors already made whose values lie within cluster_gap of this
+  // one: [near, t). A window, not a chain of close neighbours, so a long
+  // run of close values costs each vector its few neighbours only; vectors
+  // farther apart are orthogonal to about eps ||T|| / cluster_gap already.
+  int32_t near = 0;
   for (int32_t t = 0; t < count; ++t) {
-    if (t == 0 || std::abs(values[t - 1] - values[t]) > cluster_gap) cluster_first = t;
+    while (std::abs(values[near] - values[t]) > cluster_gap) ++near;
+    const int32_t cluster_first = near;
     double* x = vectors + static_cast<int64_t>(t) * m;
     for (int32_t i = 0; i < m; ++i) x[i] = rng.uniform() - 0.5;
     lu.factor(band, values[t], tiny);

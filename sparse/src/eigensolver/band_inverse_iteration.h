@@ -12,10 +12,10 @@ namespace eigen_detail {
 
 // For each values[t] (t < count, sorted descending, each accurate to about
 // eps ||band||), the unit eigenvector in column t of vectors (m x count,
-// column-major). Values closer than cluster_gap to their predecessor form a
-// cluster whose vectors are orthogonalized against each other, so a
-// multiple eigenvalue gets an orthonormal basis of its space. About
-// 2 b^2 m flops (the factorization of band - value I) per vector.
+// column-major). Each vector is orthogonalized against those of values
+// within cluster_gap of its own, so a multiple eigenvalue gets an
+// orthonormal basis of its space. About 2 b^2 m flops (the factorization of
+// band - value I) per vector, plus 12 m per close neighbour.
 void band_eigenvectors(const SymmetricBand& band, const double* values, int32_t count,
                        double cluster_gap, uint64_t seed, double* vectors);
 

@@ -140,7 +140,12 @@ void Solver::check(int32_t remaining, bool boundary_only, RitzCheck* rc) {
   eigen_detail::band_to_tridiagonal(lz_.band, &work_, d.data(), e.data());
   eigen_detail::tridiagonal_eigenvalues(m, d.data(), e.data());
   rc->theta.assign(d.rbegin(), d.rend());
-  rc->want = std::min(remaining, m);
+  // Only the upper half of the Ritz values counts as wanted: Lanczos also
+  // converges at the other end of the spectrum, and in a basis barely larger
+  // than `remaining` the top `remaining` Ritz values would include such
+  // converged, unwanted pairs (a restart would lock them). An exhausted
+  // Krylov space has only exact pairs.
+  rc->want = std::min(remaining, lz_.next_width == 0 ? m : m / 2);
   const int32_t first = boundary_only ? std::max(0, rc->want - 2 * lz_.b) : 0;
   const int32_t count = rc->want - first;
   rc->s.assign(static_cast<size_t>(m) * rc->want, 0.0);
@@ -211,7 +216,7 @@ Status Solver::run(Cholesky& chol, int32_t n, SymmetricEigenResult* result) {
   std::vector<double> y;
   for (;;) {
     const int32_t remaining = k - lz_.locked;
-    int32_t next_check = std::min(remaining + 2 * b, capacity - lz_.locked);
+    int32_t next_check = std::min(2 * remaining + 2 * b, capacity - lz_.locked);
     int32_t last_at = -1;  // the previous boundary check: basis size, log of its worst ratio
     double last_log = 0.0;
     bool done = false;
