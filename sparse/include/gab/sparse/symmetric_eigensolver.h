@@ -18,10 +18,11 @@
 // max_basis columns, the converged pairs are locked and the run restarts
 // from the best unconverged Ritz vectors (memory stays bounded).
 //
-// Cost: one factorization, about max_basis solves, 2 n m^2 flops of
-// reorthogonalization for a basis of m columns and 2 n m count for the
-// eigenvectors. Memory: n (max_basis + block_size) doubles for the basis
-// plus the factor. An eigenvalue of multiplicity above block_size may be
+// Cost: one factorization; a basis of m columns, m about 2 to 3 count
+// (camel-head, count 1,000: 2,264), takes m solves, 2 n m^2 flops of
+// reorthogonalization and 2 n m count for the eigenvectors (about 8 s on
+// one core for that example: docs/tuning-engine.md). Memory: n (max_basis +
+// block_size) doubles for the basis, n count for the vectors, the factor. An eigenvalue of multiplicity above block_size may be
 // returned with fewer copies than it has (Krylov subspaces hold at most
 // block_size copies per run).
 #pragma once
