@@ -117,6 +117,16 @@ class Solver {
   double residual_ratio(double theta, double estimate) const;
   // y (n x count) = Q S[:, cols] for the listed columns of out.s.
   int32_t schedule(const RitzCheck& rc, int32_t b, int32_t* last_at, double* last_log) const;
+  // Locks the run's wanted pairs 0..count-1 (all converged): their Ritz
+  // vectors overwrite the run's first columns, row block by row block (a
+  // row of Y = Q S needs only the same row of Q), so no n x count copy.
+  void lock_in_place(const RitzCheck& rc, int32_t count);
+  // After all count pairs are locked: runs short Lanczos runs orthogonal to
+  // them and swaps in any converged pair above the smallest locked theta.
+  // Catches what one run cannot see: copies of an eigenvalue beyond the
+  // block size (a graph with more components than block_size has more zero
+  // eigenvalues than one block Krylov space holds).
+  Status probe_for_missed(Cholesky& chol, SymmetricEigenResult* result);
   void ritz_vectors(const RitzCheck& rc, const std::vector<int32_t>& cols, double* y);
 
   const SymmetricEigenOptions& o_;
@@ -178,6 +188,78 @@ void Solver::ritz_vectors(const RitzCheck& rc, const std::vector<int32_t>& cols,
   dense_kernels().gemm_nt_sub(n, count, m, lz_.column(lz_.locked), n, st.data(), count, y, n);
 }
 
+void Solver::lock_in_place(const RitzCheck& rc, int32_t count) {
+  const int32_t n = lz_.n, m = lz_.active;
+  std::vector<double> st(static_cast<size_t>(count) * m);
+  for (int32_t c = 0; c < count; ++c) {
+    for (int32_t i = 0; i < m; ++i) st[c + static_cast<int64_t>(i) * count] = -rc.s[i + static_cast<int64_t>(c) * m];
+  }
+  constexpr int32_t kRows = 256;
+  std::vector<double> tile(static_cast<size_t>(kRows) * count);
+  double* q = lz_.column(lz_.locked);
+  for (int32_t r0 = 0; r0 < n; r0 += kRows) {
+    const int32_t rows = std::min(kRows, n - r0);
+    std::fill(tile.begin(), tile.end(), 0.0);
+    dense_kernels().gemm_nt_sub(rows, count, m, q + r0, n, st.data(), count, tile.data(), rows);
+    for (int32_t c = 0; c < count; ++c) {
+      std::memcpy(q + static_cast<int64_t>(c) * n + r0, tile.data() + static_cast<int64_t>(c) * rows, sizeof(double) * rows);
+    }
+  }
+  for (int32_t c = 0; c < count; ++c) locked_theta_.push_back(rc.theta[c]);
+  lz_.locked += count;
+}
+
+Status Solver::probe_for_missed(Cholesky& chol, SymmetricEigenResult* result) {
+  const int32_t n = lz_.n, b = lz_.b;
+  const int32_t max_probes = 16 + lz_.locked / b;  // each probe that goes on swapped a pair in
+  RitzCheck rc;
+  std::vector<double> y;
+  for (int32_t probe = 0; probe < max_probes; ++probe) {
+    if (lz_.locked + 2 * b > lz_.capacity) return Status::Ok();  // no room: nothing to probe with
+    const auto lowest = std::min_element(locked_theta_.begin(), locked_theta_.end());
+    // Above this a probe's Ritz value is a pair the locked set misses (a
+    // tie within rounding is no miss: either pair is as small).
+    const double threshold = *lowest * (1.0 + 1e-9);
+    lz_.start_run(nullptr, b, o_.seed + 7919 * (probe + 1));
+    if (lz_.next_width == 0) return Status::Ok();  // the locked vectors span the space
+    int32_t above = 0;
+    for (;;) {
+      if (lz_.room()) {
+        const double t0 = now();
+        GAB_RETURN_IF_ERROR(lz_.extend(chol));
+        result->lanczos_s += now() - t0;
+      }
+      const double t0 = now();
+      check(1, /*boundary_only=*/true, &rc);
+      above = 0;
+      while (above < lz_.active && rc.theta[above] > threshold) ++above;
+      if (above > 0) check(above, /*boundary_only=*/false, &rc);
+      result->check_s += now() - t0;
+      // Ritz values only grow with the basis: none above after two blocks
+      // means none to find (short of one just above the threshold).
+      if (above == 0 && (lz_.active >= 2 * b || !lz_.room())) return Status::Ok();
+      if (above > 0 && rc.converged_count > 0) break;
+      if (!lz_.room()) return Status::Ok();  // cannot tell: keep what is locked
+    }
+    // Swap each converged pair above in for the lowest locked one.
+    std::vector<int32_t> cols;
+    for (int32_t t = 0; t < rc.want; ++t) {
+      if (rc.converged[t]) cols.push_back(t);
+    }
+    y.assign(static_cast<size_t>(n) * cols.size(), 0.0);
+    ritz_vectors(rc, cols, y.data());
+    for (size_t c = 0; c < cols.size(); ++c) {
+      auto low = std::min_element(locked_theta_.begin(), locked_theta_.end());
+      if (rc.theta[cols[c]] <= *low) break;
+      *low = rc.theta[cols[c]];
+      std::memcpy(lz_.column(static_cast<int32_t>(low - locked_theta_.begin())), y.data() + static_cast<int64_t>(c) * n,
+                  sizeof(double) * n);
+    }
+    ++result->probes;
+  }
+  return Status::Ok();
+}
+
 // When to check next: 10% more columns while the boundary pairs' residuals
 // are still a million times their target (they stay that far for most of
 // the run, then fall steeply within ~15% of the basis), 4% after that, or
@@ -204,7 +286,7 @@ int32_t Solver::schedule(const RitzCheck& rc, int32_t b, int32_t* last_at, doubl
 Status Solver::run(Cholesky& chol, int32_t n, SymmetricEigenResult* result) {
   const int32_t k = o_.count;
   const int32_t b = std::min(o_.block_size, n);
-  int32_t capacity = o_.max_basis > 0 ? std::min(o_.max_basis, n) : std::min<int64_t>(n, 3 * int64_t{k} + 64);
+  int32_t capacity = o_.max_basis > 0 ? std::min(o_.max_basis, n) : std::min<int64_t>(n, 5 * int64_t{k} / 2 + 256);
   if (capacity < std::min(n, k + b)) {
     return Status::Error(StatusCode::kInvalidArgument, "smallest_eigenpairs: max_basis " + std::to_string(o_.max_basis) + " is below count + block_size (" +
                    std::to_string(std::min(n, k + b)) + ")");
@@ -243,13 +325,10 @@ Status Solver::run(Cholesky& chol, int32_t n, SymmetricEigenResult* result) {
     }
     if (done) {
       const double t0 = now();
-      // Locked columns first, then this run's Ritz vectors: n x k.
-      result->vectors.assign(static_cast<size_t>(n) * k, 0.0);
-      std::memcpy(result->vectors.data(), lz_.v.data(), sizeof(double) * n * lz_.locked);
-      std::vector<int32_t> cols(rc.want);
-      std::iota(cols.begin(), cols.end(), 0);
-      ritz_vectors(rc, cols, result->vectors.data() + static_cast<int64_t>(n) * lz_.locked);
+      lock_in_place(rc, rc.want);
       result->vectors_s += now() - t0;
+      GAB_RETURN_IF_ERROR(probe_for_missed(chol, result));
+      result->vectors.assign(lz_.v.begin(), lz_.v.begin() + static_cast<int64_t>(n) * k);
       break;
     }
     // Restart: lock the converged wanted pairs, start from the best others.
@@ -270,6 +349,7 @@ Status Solver::run(Cholesky& chol, int32_t n, SymmetricEigenResult* result) {
     y.assign(static_cast<size_t>(n) * cols.size(), 0.0);
     ritz_vectors(rc, cols, y.data());
     std::memcpy(lz_.column(lz_.locked), y.data(), sizeof(double) * n * lock.size());
+    for (int32_t t : lock) locked_theta_.push_back(rc.theta[t]);
     lz_.locked += static_cast<int32_t>(lock.size());
     if (lz_.locked + b > capacity) {
       return Status::Error(StatusCode::kResourceExhausted,

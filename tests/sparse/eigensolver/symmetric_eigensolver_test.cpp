@@ -193,6 +193,23 @@ TEST(SymmetricEigensolver, DisconnectedGraphHasOneZeroPerComponent) {
   EXPECT_GT(r.values[3], 1e-3);
 }
 
+TEST(SymmetricEigensolver, MoreComponentsThanTheBlockSize) {
+  // 20 triangles (eigenvalues 0, 3, 3 each) and 12 isolated vertices: 32
+  // zeros, more than a block of 8 can hold, then threes.
+  std::vector<std::pair<int32_t, int32_t>> edges;
+  for (int32_t t = 0; t < 20; ++t) {
+    edges.push_back({3 * t, 3 * t + 1});
+    edges.push_back({3 * t + 1, 3 * t + 2});
+    edges.push_back({3 * t, 3 * t + 2});
+  }
+  std::vector<double> expected(32, 0.0);
+  expected.resize(72, 3.0);
+  SymmetricEigenOptions o;
+  o.count = 36;
+  const SymmetricEigenResult r = solve_and_check(laplacian(72, edges), o, expected);
+  EXPECT_GT(r.probes, 0);
+}
+
 TEST(SymmetricEigensolver, RandomSpdMatchesJacobiOracle) {
   const CscMatrix a = testing_util::random_spd(90, 3.0, 7);
   const std::vector<double> expected = jacobi_eigenvalues(dense_of(a), 90);

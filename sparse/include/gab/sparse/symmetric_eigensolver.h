@@ -12,7 +12,7 @@
 // Method: A - sigma I (sigma < 0, so it is positive definite) is factored
 // once; Lanczos runs on its inverse, whose largest eigenvalues 1/(lambda -
 // sigma) belong to A's smallest. Blocks of block_size vectors, fully
-// reorthogonalized (every block against the whole basis, with the dense
+// reorthogonalized (every block against the whole basis, with SIMD
 // kernels); the projected band matrix's eigenvalues by band reduction and
 // implicit QL, its eigenvectors by inverse iteration. When the basis reaches
 // max_basis columns, the converged pairs are locked and the run restarts
@@ -22,9 +22,14 @@
 // (camel-head, count 1,000: 2,264), takes m solves, 2 n m^2 flops of
 // reorthogonalization and 2 n m count for the eigenvectors (about 8 s on
 // one core for that example: docs/tuning-engine.md). Memory: n (max_basis +
-// block_size) doubles for the basis, n count for the vectors, the factor. An eigenvalue of multiplicity above block_size may be
-// returned with fewer copies than it has (Krylov subspaces hold at most
-// block_size copies per run).
+// block_size) doubles for the basis, n count for the vectors, the factor.
+//
+// One block Krylov space holds at most block_size copies of a multiple
+// eigenvalue (a Laplacian has one zero per connected component), so once
+// all pairs converged, short runs orthogonal to them look for pairs above
+// the found ones and swap them in (SymmetricEigenResult::probes). A missed
+// eigenvalue within 1e-9 (relative) of the largest returned one is not
+// told apart from it.
 #pragma once
 
 #include <cstdint>
@@ -45,7 +50,7 @@ struct SymmetricEigenOptions {
   // is safely positive definite).
   double shift = 0.0;
   int32_t block_size = 8;     // vectors per Lanczos block (1..64)
-  int32_t max_basis = 0;      // basis columns held (>= count + block_size); 0: min(n, 3 count + 64)
+  int32_t max_basis = 0;      // basis columns held (>= count + block_size); 0: min(n, 2.5 count + 256)
   int32_t max_restarts = 20;  // runs after the first before giving up
   int32_t threads = 1;        // of the factorization and solves (AnalyzeOptions::threads)
   uint64_t seed = 1;          // of the random start block (results are deterministic)
@@ -59,6 +64,7 @@ struct SymmetricEigenResult {
   double shift = 0.0;             // the sigma used
   int32_t solves = 0;             // applications of (A - sigma I)^{-1} (vectors)
   int32_t restarts = 0;           // runs after the first
+  int32_t probes = 0;             // final probes that found a missed pair (see below)
   int32_t basis_columns = 0;      // the most basis columns held at once
   // Where the time went (seconds): the factorization (ordering included),
   // the Lanczos steps (solves and orthogonalization), the convergence
