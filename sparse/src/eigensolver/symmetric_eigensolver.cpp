@@ -115,7 +115,7 @@ class Solver {
   void check(int32_t remaining, bool boundary_only, RitzCheck* out);
   // The pair's bound on ||A x - lambda x|| over its target (converged at <= 1).
   double residual_ratio(double theta, double estimate) const;
-  // y (n x count) = Q S[:, cols] for the listed columns of out.s.
+  // The basis size at which to check next (see its definition).
   int32_t schedule(const RitzCheck& rc, int32_t b, int32_t* last_at, double* last_log) const;
   // Locks the run's wanted pairs 0..count-1 (all converged): their Ritz
   // vectors overwrite the run's first columns, row block by row block (a
@@ -127,6 +127,7 @@ class Solver {
   // block size (a graph with more components than block_size has more zero
   // eigenvalues than one block Krylov space holds).
   Status probe_for_missed(Cholesky& chol, SymmetricEigenResult* result);
+  // y (n x count) = Q S[:, cols] for the listed columns of rc.s.
   void ritz_vectors(const RitzCheck& rc, const std::vector<int32_t>& cols, double* y);
 
   const SymmetricEigenOptions& o_;
