@@ -10,15 +10,17 @@ Run (from the repository root, after building build/apps/gab and, with
 For every mesh (default: camel-head, bunny-small, feline and horse of
 ../shared/meshes, camel and fandisk_large of data/meshes):
 
-* spectral: `spectral_coder MESH --counts ... --bits 8,10,...,20` (every k up
-  to K and every b; K = min(n, 3000), 2000 above 30,000 vertices: the
+* spectral: `spectral_coder MESH --counts ... --bits 8,9,...,20` (every k up
+  to K and every b; K = n up to 4,000 vertices, else 3000, 2000 above 30,000: the
   eigendecomposition's cost, see docs/spectral-baseline.md). Plotted: the
   Pareto front over (k, b) per metric, and the front at b = 14 alone (K&G's
   bits).
 * gab: `gab compress -i MESH -o F --error E --json` at each E of --errors,
   with the default options (detail layer when it pays) and with
   `--detail off` (anchors alone; the same file when the default keeps no
-  detail layer, which is then not re-run), bits per vertex from
+  detail layer, which is then not re-run) and with `--solver global` (the
+  paper's global least squares, which Sorkine et al. set against spectral
+  compression; NAME.gab-global.json in the cache), bits per vertex from
   `geometry_bytes`; `gab decompress` and `gab diff MESH DECODED --json` for
   vertex RMS, L-inf and Metro RMS. Each compress runs under /usr/bin/time
   (wall, CPU seconds, peak MB).
@@ -28,11 +30,12 @@ For every mesh (default: camel-head, bunny-small, feline and horse of
   decoded PLY.
 
 With --cache DIR every part's measurements are kept there (NAME.jsonl for
-spectral_coder's output, NAME.gab.json, NAME.draco.json) and reused when
+spectral_coder's output, NAME.gab.json, NAME.gab-global.json,
+NAME.draco.json) and reused when
 present; --only gab,draco measures those parts alone (to run beside a long
 eigendecomposition). All errors are relative to the original's bounding-box diagonal. Writes one
 SVG per mesh (vertex RMS, L-inf and Metro RMS against bits per vertex of
-geometry, log error axis), a markdown file with the tables behind them, and
+geometry, log axes), a markdown file with the tables behind them, and
 with --json every number. Standard library only; one process at a time.
 """
 
@@ -57,8 +60,9 @@ DEFAULT_MESHES = [
     os.path.join(DATA, "camel.off"), os.path.join(DATA, "fandisk_large.off"),
 ]
 COUNTS = [50, 100, 200, 300, 500, 700, 1000, 1500, 2000, 3000]
-BITS = [8, 10, 12, 14, 16, 18, 20]
+BITS = list(range(8, 21))
 ERRORS = [2e-2, 1e-2, 5e-3, 3e-3, 2e-3, 1.4e-3, 1e-3, 7e-4, 5e-4, 3e-4, 1.5e-4, 7e-5, 3e-5]
+RATES = [0.5, 1, 2, 4, 8, 16]
 METRICS = [("rms_rel", "vertex RMS"), ("linf_rel", "vertex L-inf"), ("metro_rms_rel", "Metro RMS")]
 
 
@@ -86,17 +90,20 @@ def timed(cmd):
 # ---------------------------------------------------------------- spectral
 
 def spectral_kmax(n):
-    return min(n, 2000 if n > 30000 else 3000)
+    """The most eigenpairs asked for: the whole spectrum up to 4,000 vertices, else 3,000 (2,000 above 30,000)."""
+    if n <= 4000:
+        return n
+    return 2000 if n > 30000 else 3000
 
 
-def spectral(coder, path, cache):
+def spectral(coder, path, cache, kmax=None):
     name = mesh_name(path)
     cached = os.path.join(cache, name + ".jsonl") if cache else None
     if cached and os.path.exists(cached):
         with open(cached) as f:
             text = f.read()
     else:
-        kmax = spectral_kmax(vertex_count(path))
+        kmax = kmax or spectral_kmax(vertex_count(path))
         counts = [c for c in COUNTS if c < kmax] + [kmax]
         text, _, _, _ = timed([coder, path, "--counts", ",".join(map(str, counts)),
                                "--bits", ",".join(map(str, BITS))])
@@ -125,13 +132,13 @@ def cached(cache, filename, compute):
 
 # ---------------------------------------------------------------- gab
 
-def gab_points(gab, path, errors, work):
+def gab_points(gab, path, errors, work, modes=(("default", []), ("anchors", ["--detail", "off"]))):
     name = mesh_name(path)
     out = os.path.join(work, name + ".gab")
     dec = os.path.join(work, name + ".dec.off")
-    points = {"default": [], "anchors": []}
+    points = {mode: [] for mode, _ in modes}
     for e in errors:
-        for mode, extra in (("default", []), ("anchors", ["--detail", "off"])):
+        for mode, extra in modes:
             if mode == "anchors" and not points["default"][-1]["detail"]:
                 points["anchors"].append(dict(points["default"][-1], mode="anchors"))
                 continue
@@ -221,55 +228,64 @@ def crossings(c1, c2, key):
     hi = min(c1[-1]["bpv"], c2[-1]["bpv"])
     out, prev = [], None
     steps = 400
+    first = None
     for i in range(steps + 1):
         x = lo + (hi - lo) * i / steps
         a, b = log_error_at(c1, key, x), log_error_at(c2, key, x)
         if a is None or b is None:
             continue
         sign = a < b
+        if first is None:
+            first = (x, sign)
         if prev is not None and sign != prev[1]:
             out.append((0.5 * (x + prev[0]), "first" if prev[1] else "second"))
         prev = (x, sign)
+    if not out and first is not None:
+        return [(lo, hi, "first" if first[1] else "second")]  # no crossing: who is lower over [lo, hi]
     return out
 
 
 # ---------------------------------------------------------------- SVG
 
 COLORS = {"spectral": "#1f77b4", "spectral14": "#7fb8e0", "gab": "#d62728", "gab_anchors": "#ff9f1c",
+          "gab_global": "#9467bd",
           "draco": "#2ca02c"}
 LABELS = {"spectral": "spectral (best k, b)", "spectral14": "spectral, 14 bits", "gab": "gab (default)",
-          "gab_anchors": "gab, --detail off", "draco": "Draco -cl 10"}
-DASHED = {"spectral14", "gab_anchors"}
+          "gab_anchors": "gab, --detail off", "gab_global": "gab, --solver global", "draco": "Draco -cl 10"}
+DASHED = {"spectral14", "gab_anchors", "gab_global"}
 
 
-def svg_plot(name, n, series, path, xmax=18.0):
+def svg_plot(name, n, series, path, xmin=1.0 / 16, xmax=32.0):
     pw, ph, ml, mt, mb = 360, 300, 62, 40, 46
     width, height = 3 * (pw + ml) + 30, ph + mt + mb + 40
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
            f'font-family="sans-serif" font-size="12">',
            f'<rect width="{width}" height="{height}" fill="white"/>',
            f'<text x="{width / 2}" y="18" text-anchor="middle" font-size="15">{name} ({n:,} vertices): '
-           f'error over the bounding-box diagonal against bits per vertex of geometry</text>']
+           f'error over the bounding-box diagonal against bits per vertex of geometry (log scales)</text>']
     for panel, (key, label) in enumerate(METRICS):
         x0 = ml + panel * (pw + ml)
         curves = {s: front(pts, key) for s, pts in series.items()}
-        vals = [p[key] for c in curves.values() for p in c if p["bpv"] <= xmax and p[key] > 0]
+        vals = [p[key] for c in curves.values() for p in c if xmin <= p["bpv"] <= xmax and p[key] > 0]
         if not vals:
             continue
         ylo, yhi = math.floor(math.log10(min(vals))), math.ceil(math.log10(max(vals)))
         if yhi == ylo:
             yhi += 1
 
-        def sx(v):
-            return x0 + pw * v / xmax
+        def sx(v):  # log2 rate axis: the low rates, where spectral lives, get room
+            return x0 + pw * math.log2(max(v, xmin / 2) / xmin) / math.log2(xmax / xmin)
 
         def sy(e):
             return mt + ph * (yhi - math.log10(e)) / (yhi - ylo)
 
         out.append(f'<rect x="{x0}" y="{mt}" width="{pw}" height="{ph}" fill="none" stroke="#444"/>')
-        for t in range(0, int(xmax) + 1, 2):
+        t = xmin
+        while t <= xmax:
+            tick = f"1/{round(1 / t)}" if t < 1 else f"{t:g}"
             out.append(f'<line x1="{sx(t):.1f}" y1="{mt}" x2="{sx(t):.1f}" y2="{mt + ph}" stroke="#eee"/>')
-            out.append(f'<text x="{sx(t):.1f}" y="{mt + ph + 15}" text-anchor="middle">{t}</text>')
+            out.append(f'<text x="{sx(t):.1f}" y="{mt + ph + 15}" text-anchor="middle">{tick}</text>')
+            t *= 2
         for d in range(ylo, yhi + 1):
             y = mt + ph * (yhi - d) / (yhi - ylo)
             out.append(f'<line x1="{x0}" y1="{y:.1f}" x2="{x0 + pw}" y2="{y:.1f}" stroke="#ddd"/>')
@@ -315,7 +331,8 @@ def series_of(result):
     sp = result["spectral"]
     return {
         "spectral": sp, "spectral14": [p for p in sp if p["bits"] == 14],
-        "gab": result["gab"]["default"], "gab_anchors": result["gab"]["anchors"], "draco": result["draco"],
+        "gab": result["gab"]["default"], "gab_anchors": result["gab"]["anchors"],
+        "gab_global": result["gab"]["global"], "draco": result["draco"],
     }
 
 
@@ -340,17 +357,31 @@ def markdown(results, command, target):
                   f"{e['max_residual']:.1e}.", ""]
         sm = summary(r, target)
         lines += [f"Bits per vertex at {target:g} (log-linear between the front's points; - : not reached):", "",
-                  "| metric | spectral | spectral 14 bits | gab | gab --detail off | Draco |",
-                  "|---|---:|---:|---:|---:|---:|"]
+                  "| metric | spectral | spectral 14 bits | gab | gab --detail off | gab --solver global | Draco |",
+                  "|---|---:|---:|---:|---:|---:|---:|"]
         for key, label in METRICS:
             v = sm[key]
             lines.append(f"| {label} | {fmt(v['spectral'])} | {fmt(v['spectral14'])} | {fmt(v['gab'])} | "
-                         f"{fmt(v['gab_anchors'])} | {fmt(v['draco'])} |")
+                         f"{fmt(v['gab_anchors'])} | {fmt(v['gab_global'])} | {fmt(v['draco'])} |")
         lines.append("")
         s = series_of(r)
+        lines += ["Error at a rate (on each front, log-linear between its points; - : outside the rates it "
+                  "reaches), spectral / gab / Draco:", "",
+                  "| metric | " + " | ".join(f"{x:g} bpv" for x in RATES) + " |",
+                  "|---|" + "---:|" * len(RATES)]
+        for key, label in METRICS:
+            cells = []
+            for x in RATES:
+                vals = [log_error_at(front(s[m], key), key, x) for m in ("spectral", "gab", "draco")]
+                cells.append(" / ".join("-" if v is None else f"{10 ** v:.2e}" for v in vals))
+            lines.append(f"| {label} | " + " | ".join(cells) + " |")
+        lines.append("")
         for key, label in METRICS:
             cr = crossings(front(s["gab"], key), front(s["spectral"], key), key)
-            if cr:
+            if cr and len(cr[0]) == 3:
+                lo, hi, who = cr[0]
+                txt = f"none; {'gab' if who == 'first' else 'spectral'} lower over {lo:.2f}-{hi:.2f} bpv"
+            elif cr:
                 txt = "; ".join(f"{x:.2f} bpv ({'gab' if who == 'first' else 'spectral'} lower below it)"
                                 for x, who in cr)
             else:
@@ -362,10 +393,10 @@ def markdown(results, command, target):
             if "metro_rms_rel" in p:
                 lines.append(f"| {p['k']} | {p['bits']} | {p['bytes']:,} | {p['bpv']:.3f} | {p['rms_rel']:.3e} | "
                              f"{p['linf_rel']:.3e} | {p['metro_rms_rel']:.3e} |")
-        lines += ["", "gab (default; `--detail off` where it differs):", "",
+        lines += ["", "gab (default; `--detail off` where it differs; `--solver global`):", "",
                   "| --error | mode | anchors | q | detail | geometry bytes | bpv | vertex RMS | L-inf | Metro RMS "
                   "| encode wall s | CPU s | peak MB |", "|---:|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
-        for mode in ("default", "anchors"):
+        for mode in ("default", "anchors", "global"):
             for p in r["gab"][mode]:
                 if mode == "anchors" and not any(q["target"] == p["target"] and q["detail"]
                                                  for q in r["gab"]["default"]):
@@ -395,6 +426,7 @@ def main():
     ap.add_argument("--svg-dir", default=None, help="write spectral-NAME.svg here")
     ap.add_argument("--markdown", default=None, help="write the tables here")
     ap.add_argument("--json", default=None, help="write every number here")
+    ap.add_argument("--kmax", default="", help="NAME=K,...: the most eigenpairs for these meshes")
     ap.add_argument("--only", default="spectral,gab,draco",
                     help="measure these parts only (into --cache; the report needs all three)")
     args = ap.parse_args()
@@ -405,6 +437,7 @@ def main():
         return 0
     errors = [float(e) for e in args.errors.split(",")]
     parts = args.only.split(",")
+    kmax = {k: int(v) for k, v in (item.split("=") for item in args.kmax.split(",") if item)}
     qa, qb = (int(x) for x in args.qp.split("-"))
     results = []
     with tempfile.TemporaryDirectory() as work:
@@ -413,6 +446,8 @@ def main():
             if "gab" in parts:
                 print(f"{name}: gab", file=sys.stderr)
                 g = cached(args.cache, f"{name}.gab.json", lambda: gab_points(args.gab, path, errors, work))
+                g.update(cached(args.cache, f"{name}.gab-global.json", lambda: gab_points(
+                    args.gab, path, errors, work, modes=(("global", ["--solver", "global"]),))))
             if "draco" in parts:
                 print(f"{name}: Draco", file=sys.stderr)
                 d = cached(args.cache, f"{name}.draco.json",
@@ -420,7 +455,9 @@ def main():
             if "spectral" not in parts:
                 continue
             print(f"{name}: spectral", file=sys.stderr)
-            eigen, sp = spectral(args.coder, path, args.cache)
+            eigen, sp = spectral(args.coder, path, args.cache, kmax.get(name))
+            if "gab" not in parts or "draco" not in parts:
+                continue
             r = {"name": name, "path": path, "n": eigen["n"], "eigen": eigen, "spectral": sp, "gab": g, "draco": d}
             results.append(r)
             if args.svg_dir:
