@@ -7,8 +7,8 @@
 //   2. The mean removed, each coordinate function x, y, z projected on the
 //      eigenvectors: c_aj = v_j . (x_a - mean_a), j in frequency order.
 //   3. For every k and b asked for, a uniform quantizer per axis over the
-//      first k coefficients' largest magnitude r_a (K&G section 4 quantize
-//      to b bits over the coefficients' range): step_a = r_a / (2^(b-1) - 1),
+//      first k coefficients' largest magnitude r_a (K&G quantize to 14
+//      bits; here any b): step_a = r_a / (2^(b-1) - 1),
 //      q_aj = round(c_aj / step_a).
 //   4. The q_aj in frequency order (x, y, z of frequency j, then j + 1)
 //      through the codec's adaptive range coder: a signed adaptive
