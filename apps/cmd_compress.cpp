@@ -27,7 +27,7 @@ int run_compress(int argc, char** argv) {
   Args args;
   if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--error", "--linf", "--bits", "--weight", "--batch-fraction", "--batch", "--chunk-growth",
                    "--initial", "--threads", "--layout", "--detail", "--ordering", "--solver", "--order-out"},
-                  {"--json", "--geometry-only", "--refine", "--reorder", "--quiet"})) {
+                  {"--json", "--geometry-only", "--refine", "--reorder", "--quiet", "--strict"})) {
     return usage_error("compress", args.error());
   }
   if (!args.positionals().empty()) return usage_error("compress", "unexpected argument " + args.positionals()[0]);
@@ -108,6 +108,11 @@ int run_compress(int argc, char** argv) {
   MeshReadNotes read_notes;
   Status status = read_mesh_warning(in, &mesh, &read_notes);
   if (!status.ok()) return fail(status.message());
+  // --strict: data the file held and gab does not carry stops the compress
+  // before any work (the warning above named it; this is the failure).
+  if (args.has("--strict") && !read_notes.dropped.empty()) {
+    return fail(in + ": --strict: not carried: " + read_notes.dropped_summary());
+  }
   std::vector<uint8_t> file;
   EncodeStats stats;
   {

@@ -10,7 +10,7 @@ const std::vector<Command>& commands() {
       {"compress", run_compress,
        {"-i IN -o OUT.gab [--anchors K | --error E | --linf E] [--bits Q] [--weight W]",
         "[--geometry-only | --reorder] [--detail auto|on|off] [--solver auto|global|iterative]",
-        "[--refine] [--order-out FILE] [--threads T] [--json] [--quiet]",
+        "[--refine] [--order-out FILE] [--threads T] [--json] [--quiet] [--strict]",
         "(tuning: --batch-fraction F --chunk-growth G --initial K --layout smaller|levels|selection",
         "         --ordering auto|amd|nd)"},
        "compress a mesh's geometry with geometry-aware anchors (default --error 0.001: relative\n"
@@ -25,7 +25,9 @@ const std::vector<Command>& commands() {
        "or global (the paper's factored least squares: files about 10% smaller at 1e-3, decoding an\n"
        "order of magnitude slower in several times the memory; auto picks it for --refine, which needs it).\n"
        "--ordering: the global solver's factorizations' (speed only; recorded in the file; auto:\n"
-       "nested dissection from 100k vertices)"},
+       "nested dissection from 100k vertices). --strict: fail, before any work, when the input holds\n"
+       "data gab does not carry (normals, texture coordinates, colours, materials, polygons, ...;\n"
+       "otherwise a warning names them)"},
       {"decompress", run_decompress,
        {"-i IN.gab -o OUT [--anchors K] [--connectivity MESH] [--threads T] [--ordering auto|amd|nd]",
         "[--max-memory SIZE] [--json] [--quiet]"},

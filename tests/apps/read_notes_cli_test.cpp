@@ -3,7 +3,10 @@
 // "dropped" object. By running the gab binary.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "run_gab.h"
@@ -67,6 +70,30 @@ TEST(ReadNotesCliTest, NothingDroppedNoWarningAndAnEmptyObject) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, "");
   EXPECT_NE(r.out.find("\"dropped\": {}"), std::string::npos) << r.out;
+}
+
+// --strict: the warning, then the failure naming the same data, before any
+// output is written; an input with nothing dropped (a forgiven CRLF line end
+// is not data) compresses as without it.
+TEST(ReadNotesCliTest, StrictFailsOnDroppedDataOnly) {
+  const std::string in = write_scratch_file("cube_strict.obj", cube_with_attributes());
+  const std::string out = gab_test::scratch_path("cube_strict.gab");
+  std::remove(out.c_str());
+  const CommandResult r = run_gab("compress -i " + in + " -o " + out + " --strict");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(r.err, "gab: warning: " + in + kCubeWarning + "gab: error: " + in +
+                       ": --strict: not carried: 6 normals (vn), 4 texture coordinates (vt), 12 faces with vt "
+                       "indices (f v/vt), 12 faces with vn indices (f v//vn)\n");
+  EXPECT_NE(access(out.c_str(), F_OK), 0) << "--strict wrote " << out;
+
+  const std::string plain =
+      write_scratch_file("plain_strict.off", "OFF\r\n4 2 0\r\n0 0 0\r\n1 0 0\r\n1 1 0\r\n0 1 0\r\n3 0 1 2\r\n3 0 2 3\r\n");
+  const CommandResult ok = run_gab("compress -i " + plain + " -o " + gab_test::scratch_path("plain_strict.gab") +
+                                   " --strict --json");
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_EQ(ok.err, "");
+  EXPECT_NE(ok.out.find("\"dropped\": {}"), std::string::npos) << ok.out;
 }
 
 // assimp's Wuson.ply in kind: a "Created by" header line, normals, UVs.
