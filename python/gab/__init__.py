@@ -16,7 +16,8 @@ arrays in and out).
     chol.add_anchor(j, w)                    # now the factor of A + w^2 e_j e_j^T
 
 Every failure of the library raises GabError with its message; a file cut
-short decodes to its complete chunks with a TruncatedWarning; a bad argument
+short decodes to its complete chunks with a TruncatedWarning, a mesh file's
+data gab does not carry is named by a DroppedDataWarning; a bad argument
 raises TypeError or ValueError naming the call and the argument.
 """
 
@@ -58,14 +59,15 @@ from ._capi import (  # noqa: E402 (after numpy's check, so its message comes fi
     CompressOptions,
     CompressReport,
     DecompressOptions,
+    DroppedDataWarning,
     GabError,
     TruncatedWarning,
     check,
     message_buffer,
 )
 
-__all__ = ["Cholesky", "CompressStats", "GabError", "TruncatedWarning", "compress", "decompress", "read_mesh",
-           "version"]
+__all__ = ["Cholesky", "CompressStats", "DroppedDataWarning", "GabError", "TruncatedWarning", "compress", "decompress",
+           "read_mesh", "version"]
 
 _DETAIL = {"auto": 0, "on": 1, "off": 2}
 _SOLVER_NAMES = {1: "global", 2: "iterative"}  # GAB_SOLVER_*
@@ -164,7 +166,9 @@ def _mesh_outputs():
 
 def read_mesh(path):
     """Reads an .obj, .off or .ply file: (V, F), V (n, 3) float64, F (t, 3) int32
-    (polygons fan-triangulated)."""
+    (polygons fan-triangulated). When the file held more than positions and
+    triangles (normals, texture coordinates, colours, ...), a
+    DroppedDataWarning names it."""
     if not isinstance(path, (str, bytes, os.PathLike)):
         raise TypeError(f"gab.read_mesh: path must be a str, bytes or os.PathLike, got {type(path).__name__}")
     positions, n, triangles, t = _mesh_outputs()
@@ -172,7 +176,11 @@ def read_mesh(path):
     code = LIB.gab_read_mesh(os.fsencode(path), ctypes.byref(positions), ctypes.byref(n), ctypes.byref(triangles),
                              ctypes.byref(t), message, len(message))
     check(code, message)
-    return _take_mesh(positions, n, triangles, t)
+    mesh = _take_mesh(positions, n, triangles, t)
+    if message.value:
+        text = message.value.decode(errors="replace").partition(": ")[2]
+        warnings.warn(DroppedDataWarning(text), stacklevel=2)
+    return mesh
 
 
 @dataclasses.dataclass(frozen=True, eq=False)

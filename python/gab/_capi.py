@@ -26,6 +26,14 @@ class TruncatedWarning(UserWarning):
     makes it an exception."""
 
 
+class DroppedDataWarning(UserWarning):
+    """read_mesh: the file held data gab does not carry (normals, texture
+    coordinates, colours, materials, polygons' arity, ...); the mesh returned
+    is its positions and triangles, the message names what was left out.
+    warnings.simplefilter("error", gab.DroppedDataWarning) makes it an
+    exception (as `gab compress --strict`)."""
+
+
 GAB_W_TRUNCATED = 100
 
 

@@ -306,9 +306,24 @@ class CodecTest(unittest.TestCase):
             path = os.path.join(folder, "quad.off")
             with open(path, "w") as f:
                 f.write("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n")
-            V, F = gab.read_mesh(path)
+            with self.assertWarns(gab.DroppedDataWarning) as w:
+                V, F = gab.read_mesh(path)
+            self.assertEqual(str(w.warning), path + ": not carried: 1 polygons of 4 or more corners "
+                             "(fan-triangulated); gab keeps positions and triangles only")
             self.assertEqual(V.shape, (4, 3))
             self.assertEqual(F.tolist(), [[0, 1, 2], [0, 2, 3]])
+            obj = os.path.join(folder, "normals.obj")
+            with open(obj, "w") as f:
+                f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n")
+            with self.assertWarnsRegex(gab.DroppedDataWarning, r"not carried: 1 normals \(vn\), 1 faces with vn"):
+                gab.read_mesh(obj)
+            plain = os.path.join(folder, "plain.off")
+            with open(plain, "w") as f:
+                f.write("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+            with warnings.catch_warnings():
+                warnings.simplefilter("error")
+                V, F = gab.read_mesh(plain)
+            self.assertEqual(F.tolist(), [[0, 1, 2]])
             with self.assertRaises(gab.GabError) as e:
                 gab.read_mesh(os.path.join(folder, "missing.off"))
             self.assertEqual(e.exception.name, "GAB_E_IO")

@@ -668,7 +668,10 @@ TEST(CapiTest, ReadMeshReadsAFileAndNamesWhatIsWrong) {
   capi_mesh mesh{};
   char message[256];
   ASSERT_EQ(capi_read_mesh(path.c_str(), &mesh, message, sizeof message), GAB_OK) << message;
-  EXPECT_STREQ(message, "");
+  // The quad's arity is what the file held beyond triangles: said, the code still GAB_OK.
+  EXPECT_EQ(std::string(message), "gab_read_mesh: " + path +
+                                      ": not carried: 1 polygons of 4 or more corners (fan-triangulated); gab keeps "
+                                      "positions and triangles only");
   EXPECT_EQ(mesh.n, 4);
   EXPECT_EQ(mesh.t, 3);  // the quad fan-triangulated, and the triangle
   EXPECT_EQ(mesh.positions[7], 1.0);
@@ -683,6 +686,28 @@ TEST(CapiTest, ReadMeshReadsAFileAndNamesWhatIsWrong) {
   EXPECT_EQ(capi_read_mesh(nullptr, &mesh, message, sizeof message), GAB_E_INVALID_ARGUMENT);
   EXPECT_STREQ(message, "gab_read_mesh: path is NULL");
   EXPECT_EQ(capi_read_mesh("mesh.stl", &mesh, message, sizeof message), GAB_E_INVALID_ARGUMENT);
+}
+
+// What a file held beyond positions and triangles is named in the message of
+// a successful read (the CLI's warning), and nothing is said of a plain one.
+TEST(CapiTest, ReadMeshNamesWhatIsNotCarried) {
+  const std::string obj = gab_test::write_scratch_file(
+      "normals.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1/1 2/2/1 3/3/1\n");
+  capi_mesh mesh{};
+  char message[512];
+  ASSERT_EQ(capi_read_mesh(obj.c_str(), &mesh, message, sizeof message), GAB_OK) << message;
+  EXPECT_EQ(std::string(message), "gab_read_mesh: " + obj +
+                                      ": not carried: 1 normals (vn), 3 texture coordinates (vt), 1 faces with vt "
+                                      "indices (f v/vt), 1 faces with vn indices (f v//vn); gab keeps positions and "
+                                      "triangles only");
+  EXPECT_EQ(mesh.n, 3);
+  EXPECT_EQ(mesh.t, 1);
+  capi_free_mesh(&mesh);
+  const std::string plain = gab_test::write_scratch_file("plain.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  std::strcpy(message, "stale");
+  ASSERT_EQ(capi_read_mesh(plain.c_str(), &mesh, message, sizeof message), GAB_OK) << message;
+  EXPECT_STREQ(message, "");
+  capi_free_mesh(&mesh);
 }
 
 TEST(CapiTest, CholeskySolvesAndUpdatesLikeAFreshFactorization) {
