@@ -52,6 +52,7 @@
 #include "gab/mesh/mesh_io.h"
 #include "gab/mesh/metrics.h"
 #include "gab/sparse/symmetric_eigensolver.h"
+#include "uniform_laplacian.h"
 
 namespace {
 
@@ -84,25 +85,6 @@ std::vector<int> parse_list(const char* text) {
     if (*p == ',') ++p;
   }
   return out;
-}
-
-// Lower triangle of L = D - A (degrees on the diagonal, -1 per edge).
-gab::CscMatrix laplacian_lower(const gab::EdgeGraph& graph) {
-  const int32_t n = graph.num_vertices();
-  gab::CscMatrix lower;
-  lower.nrows = lower.ncols = n;
-  lower.colptr.assign(n + 1, 0);
-  for (int32_t v = 0; v < n; ++v) {
-    lower.rowind.push_back(v);
-    lower.values.push_back(graph.degree(v));
-    for (int32_t p = graph.offsets[v]; p < graph.offsets[v + 1]; ++p) {
-      if (graph.neighbors[p] <= v) continue;
-      lower.rowind.push_back(graph.neighbors[p]);
-      lower.values.push_back(-1.0);
-    }
-    lower.colptr[v + 1] = static_cast<int32_t>(lower.rowind.size());
-  }
-  return lower;
 }
 
 int bit_length(uint32_t v) {
@@ -301,7 +283,7 @@ int main(int argc, char** argv) {
   counts.erase(std::unique(counts.begin(), counts.end()), counts.end());
 
   // 1. The spectrum.
-  const gab::CscMatrix lower = laplacian_lower(gab::build_edge_graph(mesh));
+  const gab::CscMatrix lower = gab_bench::uniform_laplacian_lower(gab::build_edge_graph(mesh));
   options.count = counts.back();
   gab::SymmetricEigenResult eig;
   const double rss_before = peak_rss_mb();

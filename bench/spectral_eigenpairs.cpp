@@ -23,31 +23,12 @@
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/mesh_io.h"
 #include "gab/sparse/symmetric_eigensolver.h"
+#include "uniform_laplacian.h"
 
 namespace {
 
 double now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-// Lower triangle of D - A from the edge graph.
-gab::CscMatrix uniform_laplacian(const gab::EdgeGraph& g) {
-  const int32_t n = g.num_vertices();
-  gab::CscMatrix a;
-  a.nrows = a.ncols = n;
-  a.colptr.assign(n + 1, 0);
-  for (int32_t v = 0; v < n; ++v) {
-    a.rowind.push_back(v);
-    a.values.push_back(g.degree(v));
-    for (int32_t p = g.offsets[v]; p < g.offsets[v + 1]; ++p) {
-      if (g.neighbors[p] > v) {
-        a.rowind.push_back(g.neighbors[p]);
-        a.values.push_back(-1.0);
-      }
-    }
-    a.colptr[v + 1] = static_cast<int32_t>(a.rowind.size());
-  }
-  return a;
 }
 
 }  // namespace
@@ -74,7 +55,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "spectral_eigenpairs: %s\n", s.message().c_str());
     return 1;
   }
-  const gab::CscMatrix lap = uniform_laplacian(gab::build_edge_graph(mesh));
+  const gab::CscMatrix lap = gab_bench::uniform_laplacian_lower(gab::build_edge_graph(mesh));
   const int32_t n = lap.nrows;
   gab::SymmetricEigenResult r;
   const double t0 = now();
