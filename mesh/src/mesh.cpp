@@ -30,6 +30,13 @@ Status validate_mesh(const Mesh& mesh, const std::string& name) {
                      " out of range [0, " + std::to_string(n) + ")");
     }
   }
+  if (mesh.attributes.size() > static_cast<size_t>(kMaxMeshAttributes)) {
+    return invalid(std::to_string(mesh.attributes.size()) + " attributes, over the " +
+                   std::to_string(kMaxMeshAttributes) + " a mesh carries");
+  }
+  for (const MeshAttribute& a : mesh.attributes) {
+    GAB_RETURN_IF_ERROR(validate_attribute(a, n, mesh.num_triangles(), name));
+  }
   return Status::Ok();
 }
 

@@ -54,7 +54,6 @@ Status check_options(const EncodeOptions& o) {
   if (o.chunk_growth > 0 && !(o.chunk_growth > 1)) return bad("chunk growth must be above 1");
   if (!std::isfinite(o.chunk_growth)) return bad("chunk growth must be finite");
   if (o.refine_iterations < 1) return bad("refinement iterations must be positive");
-  if (o.reorder && o.geometry_only) return bad("a reordered file codes its connectivity: not with geometry only");
   if (o.solver != Solver::kAuto && o.solver != Solver::kGlobal && o.solver != Solver::kIterative) {
     return bad("unknown reconstruction operator");
   }
@@ -406,10 +405,13 @@ namespace {
 
 // Both encode_mesh: `owned`, when given, is `mesh` itself, whose arrays
 // the encoder may take instead of copying.
-Status encode_mesh_from(const Mesh& mesh, Mesh* owned, const EncodeOptions& options, std::vector<uint8_t>* file,
+Status encode_mesh_from(const Mesh& mesh, Mesh* owned, const EncodeOptions& given, std::vector<uint8_t>* file,
                         EncodeStats* stats) {
   const auto start = std::chrono::steady_clock::now();
-  GAB_RETURN_IF_ERROR(check_options(options));
+  GAB_RETURN_IF_ERROR(check_options(given));
+  // A geometry-only file is numbered as the mesh its decoder is given.
+  EncodeOptions options = given;
+  if (options.geometry_only) options.reorder = false;
   GAB_RETURN_IF_ERROR(validate_mesh(mesh, "mesh"));
   if (options.geometry_only) {
     GAB_RETURN_IF_ERROR(encode_numbered(mesh, options, {}, file, stats));

@@ -66,11 +66,14 @@ struct EncodeOptions {
   int bits = 0;
   double weight = 100;           // anchor weight w of the relaxed basis, in (0, 1e100]
   bool geometry_only = false;    // store a connectivity hash: the decoder must be given the same mesh
-  // Drop the input's vertex numbering (flag kGabFlagReordered): the decoded mesh is numbered in the
-  // connectivity coder's traversal order (EncodeStats::new_index maps input vertices to decoded ones), which
-  // saves the vertex order block (EncodeStats::order_bytes). Either way the triangles come back as a set: in
-  // the coder's order, each from the corner it chooses, orientation kept. Not with geometry_only.
-  bool reorder = false;
+  // Drop the input's vertex numbering (flag kGabFlagReordered; the default): the decoded mesh is numbered in
+  // the connectivity coder's traversal order (EncodeStats::new_index maps input vertices to decoded ones),
+  // its attributes with it, which saves the vertex order block (EncodeStats::order_bytes: 1-2 bytes a
+  // vertex). false keeps the input's numbering at that price, for data keyed by vertex index outside the
+  // file. Either way the triangles come back as a set: in the coder's order, each from the corner it
+  // chooses, orientation kept. A geometry-only file keeps the numbering of the mesh its decoder is given,
+  // whatever this says.
+  bool reorder = true;
   int32_t initial_anchors = 0;   // spread set size (at least one per component); 0: the encoder's
   // Greedy batch, a fraction (<= 1) of the anchors so far, fewer near an RMS target so the file does not
   // overshoot; 0: one anchor per step (the paper's); negative: the encoder's, by the reconstruction operator

@@ -10,8 +10,8 @@
 namespace gab {
 
 // Vertex v of `mesh` becomes vertex new_index[v] (a permutation of
-// 0..n-1): positions move, triangle indices are renamed, triangle order and
-// corner order stay. O(V + T).
+// 0..n-1): positions and per-vertex attributes move, triangle indices are
+// renamed, triangle order and corner order (and so per-corner attributes) stay. O(V + T).
 Mesh renumber_vertices(const Mesh& mesh, const std::vector<int32_t>& new_index);
 
 }  // namespace gab
