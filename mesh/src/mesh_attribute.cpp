@@ -49,21 +49,21 @@ void value_type_range(ValueType type, double* lo, double* hi) {
   *lo = -*hi;
 }
 
-namespace {
-
-bool valid_components(const MeshAttribute& a) {
-  switch (a.kind) {
+bool valid_attribute_components(AttributeKind kind, int32_t components) {
+  switch (kind) {
     case AttributeKind::kNormal:
-      return a.components == 3;
+      return components == 3;
     case AttributeKind::kTexCoord:
-      return a.components == 2 || a.components == 3;
+      return components == 2 || components == 3;
     case AttributeKind::kColor:
-      return a.components == 3 || a.components == 4;
+      return components == 3 || components == 4;
     case AttributeKind::kGeneric:
-      return a.components >= 1 && a.components <= 4;
+      return components >= 1 && components <= 4;
   }
   return false;
 }
+
+namespace {
 
 bool valid_generic_name(const std::string& name) {
   if (name.empty() || name.size() > 255) return false;
@@ -83,7 +83,7 @@ Status validate_attribute(const MeshAttribute& a, int64_t num_vertices, int64_t 
   auto invalid = [&where](const std::string& what) { return Status::Error(StatusCode::kInvalidArgument, where + what); };
   if (static_cast<uint8_t>(a.kind) > static_cast<uint8_t>(AttributeKind::kGeneric)) return invalid("unknown kind");
   if (static_cast<uint8_t>(a.type) > static_cast<uint8_t>(ValueType::kFloat64)) return invalid("unknown value type");
-  if (!valid_components(a)) return invalid(std::to_string(a.components) + " components, not what the kind holds");
+  if (!valid_attribute_components(a.kind, a.components)) return invalid(std::to_string(a.components) + " components, not what the kind holds");
   if (a.kind == AttributeKind::kGeneric ? !valid_generic_name(a.name) : !a.name.empty()) {
     return invalid(a.kind == AttributeKind::kGeneric
                        ? "a generic attribute's name is 1 to 255 letters, digits, '_', '-' or '.'"

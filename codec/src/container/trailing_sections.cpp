@@ -7,13 +7,12 @@
 
 namespace gab {
 
-Status skip_trailing_sections(ByteReader* in, int32_t sections, int32_t* skipped, bool* truncated) {
-  *skipped = 0;
+Status read_trailing_sections(ByteReader* in, int32_t sections, std::vector<TrailingSection>* out, bool* truncated) {
+  out->clear();
   for (int32_t i = 0; i < sections; ++i) {
     const std::string name = "section " + std::to_string(i);
-    const uint8_t* payload = nullptr;
-    size_t size = 0;
-    const FrameRead frame = read_framed(in, &payload, &size);
+    TrailingSection s;
+    const FrameRead frame = read_framed(in, &s.payload, &s.size);
     if (frame == FrameRead::kTruncated) {
       *truncated = true;
       return Status::Ok();
@@ -21,18 +20,23 @@ Status skip_trailing_sections(ByteReader* in, int32_t sections, int32_t* skipped
     if (frame == FrameRead::kCorrupt) {
       return Status::Error(StatusCode::kParseError, name + " is corrupt (checksum mismatch)");
     }
-    if (size < 2) return Status::Error(StatusCode::kParseError, name + " has no kind and flags");
-    if ((payload[1] & kGabSectionRequired) != 0) {
-      return Status::Error(StatusCode::kUnsupported, name + " is of kind " + std::to_string(payload[0]) +
-                                                         ", which this build does not know and the file requires");
-    }
-    ++*skipped;
+    if (s.size < 2) return Status::Error(StatusCode::kParseError, name + " has no kind and flags");
+    s.kind = s.payload[0];
+    s.flags = s.payload[1];
+    out->push_back(s);
   }
   if (in->remaining() != 0) {
     return Status::Error(StatusCode::kParseError, sections > 0 ? "trailing bytes after the last section"
                                                                : "trailing bytes after the last chunk");
   }
   return Status::Ok();
+}
+
+Status check_unknown_section(const TrailingSection& section, int32_t index) {
+  if ((section.flags & kGabSectionRequired) == 0) return Status::Ok();
+  return Status::Error(StatusCode::kUnsupported, "section " + std::to_string(index) + " is of kind " +
+                                                     std::to_string(section.kind) +
+                                                     ", which this build does not know and the file requires");
 }
 
 }  // namespace gab

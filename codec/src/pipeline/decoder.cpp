@@ -5,7 +5,8 @@
 //      each joining the reconstruction as it arrives
 //   -> the refinement chunk (anchors/refinement_chunk.h) -> the anchors' shape
 //   -> the detail chunk (detail/detail_chunk.h), predicted from that shape
-//   -> the trailing sections (container/trailing_sections.h), none known yet.
+//   -> the trailing sections (container/trailing_sections.h): the attributes
+//      (attributes/attribute_section.h), decoded for any level of detail.
 #include "gab/codec/decoder.h"
 
 #include <algorithm>
@@ -17,6 +18,8 @@
 #include "anchors/anchor_levels.h"
 #include "anchors/quantizer.h"
 #include "anchors/refinement_chunk.h"
+#include "attributes/attribute_section.h"
+#include "attributes/corner_table.h"
 #include "connectivity/connectivity_section.h"
 #include "container/framing.h"
 #include "container/gab_header.h"
@@ -303,6 +306,51 @@ Status apply_detail(ByteReader* in, const GabHeader& header, const Mesh& mesh, c
   return Status::Ok();
 }
 
+// The trailing sections of a file whose chunks start at `chunks_start`:
+// every chunk frame is walked again (a level of detail stops reading them
+// early) to reach them, and each attribute section decoded onto `mesh`. A
+// file that ends (or is damaged, for a level of detail that did not need
+// the chunk) before them has no attributes.
+Status decode_sections(const uint8_t* data, size_t size, size_t chunks_start, const GabHeader& header, Mesh* mesh,
+                       DecodeStats* stats) {
+  ByteReader in(data + chunks_start, size - chunks_start);
+  for (int32_t i = 0; i < header.chunks; ++i) {
+    const uint8_t* payload = nullptr;
+    size_t payload_size = 0;
+    const FrameRead frame = read_framed(&in, &payload, &payload_size);
+    if (frame == FrameRead::kTruncated) stats->truncated = true;
+    if (frame != FrameRead::kOk) return Status::Ok();
+  }
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<TrailingSection> sections;
+  GAB_RETURN_IF_ERROR(read_trailing_sections(&in, header.sections, &sections, &stats->truncated));
+  CornerTable table;
+  for (size_t i = 0; i < sections.size(); ++i) {
+    const TrailingSection& section = sections[i];
+    const int32_t index = static_cast<int32_t>(i);
+    if (section.kind != kGabSectionAttribute) {
+      GAB_RETURN_IF_ERROR(check_unknown_section(section, index));
+      ++stats->skipped_sections;
+      continue;
+    }
+    if (mesh->attributes.size() >= static_cast<size_t>(kMaxMeshAttributes)) {
+      return corrupt("more than " + std::to_string(kMaxMeshAttributes) + " attribute sections");
+    }
+    if (table.triangles == nullptr) table = build_corner_table(header.num_vertices, mesh->triangles);
+    MeshAttribute attribute;
+    const Status s = decode_attribute_section(section.payload, section.size, table, &attribute);
+    if (s.code() == StatusCode::kUnsupported) {
+      GAB_RETURN_IF_ERROR(check_unknown_section(section, index));
+      ++stats->skipped_sections;
+      continue;
+    }
+    if (!s.ok()) return corrupt("section " + std::to_string(i) + ": " + s.message());
+    mesh->attributes.push_back(std::move(attribute));
+  }
+  stats->attributes_s = seconds_since(start);
+  return Status::Ok();
+}
+
 }  // namespace
 
 Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& options, Mesh* mesh, DecodeStats* stats) {
@@ -331,6 +379,7 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
   Mesh out;
   ConnectivitySection connectivity;
   GAB_RETURN_IF_ERROR(read_connectivity_section(&in, header, &connectivity));
+  const size_t chunks_start = in.offset();
   const auto connectivity_start = std::chrono::steady_clock::now();
   GAB_RETURN_IF_ERROR(decode_connectivity_section(connectivity, header, options.connectivity, &out.triangles));
   stats->connectivity_s = seconds_since(connectivity_start);
@@ -392,10 +441,7 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
     GAB_RETURN_IF_ERROR(apply_detail(&in, header, out, graph, out.positions, &detailed, stats));
     if (stats->detail) out.positions.swap(detailed);
   }
-  const bool read_all = whole && (!header.detail() || detail);
-  if (!stats->truncated && read_all) {
-    GAB_RETURN_IF_ERROR(skip_trailing_sections(&in, header.sections, &stats->skipped_sections, &stats->truncated));
-  }
+  if (!stats->truncated) GAB_RETURN_IF_ERROR(decode_sections(data, size, chunks_start, header, &out, stats));
   // The header bounds the grid and the weight so that every file a writer
   // makes decodes to finite coordinates; a forged one must not hand out
   // others either.

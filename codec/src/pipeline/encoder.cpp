@@ -17,6 +17,10 @@
 #include <string>
 
 #include "anchors/refinement_chunk.h"
+#include "attributes/attribute_quantizer.h"
+#include "attributes/attribute_section.h"
+#include "attributes/corner_correspondence.h"
+#include "attributes/corner_table.h"
 #include "connectivity/connectivity_section.h"
 #include "container/framing.h"
 #include "container/gab_header.h"
@@ -68,6 +72,14 @@ Status check_options(const EncodeOptions& o) {
   if (o.final_steps16 < -1 || o.final_steps16 > kMostFinalSteps || o.final_most_steps < -1 ||
       o.final_most_steps > kMostFinalSteps) {
     return bad("final steps must be in 0.." + std::to_string(kMostFinalSteps) + " (or -1: the encoder's)");
+  }
+  if (o.normal_bits < 2 || o.normal_bits > kMaxNormalBits) {
+    return bad("normal bits must be in 2.." + std::to_string(kMaxNormalBits));
+  }
+  for (int bits : {o.texcoord_bits, o.color_bits, o.generic_bits}) {
+    if (bits < 1 || bits > kMaxGridBits) {
+      return bad("texture coordinate, colour and generic bits must be in 1.." + std::to_string(kMaxGridBits));
+    }
   }
   return check_codec_ordering(o.ordering);
 }
@@ -403,6 +415,56 @@ Status encode_numbered(const Mesh& mesh, const EncodeOptions& options, const Cod
 
 namespace {
 
+int bits_for(const MeshAttribute& a, const EncodeOptions& o) {
+  switch (a.kind) {
+    case AttributeKind::kNormal:
+      return o.normal_bits;
+    case AttributeKind::kTexCoord:
+      return o.texcoord_bits;
+    case AttributeKind::kColor:
+      return o.color_bits;
+    case AttributeKind::kGeneric:
+      break;
+  }
+  return o.generic_bits;
+}
+
+// The attributes of `mesh` (numbered and with its triangles as the decoder
+// returns them) coded in sections after the file's chunks: the header's
+// section count rewritten, the stats' sizes set. O(attribute values + T).
+Status append_attribute_sections(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* file,
+                                 EncodeStats* stats) {
+  if (mesh.attributes.empty()) return Status::Ok();
+  const CornerTable table = build_corner_table(mesh.num_vertices(), mesh.triangles);
+  std::vector<std::vector<uint8_t>> sections;
+  for (const MeshAttribute& a : mesh.attributes) {
+    AttributeCoding coding;
+    sections.push_back(encode_attribute_section(a, table, bits_for(a, options), &coding));
+    AttributeStats as;
+    as.label = attribute_label(a);
+    as.bits = coding.bits;
+    as.per_corner = coding.per_corner;
+    as.elements = coding.elements;
+    as.bytes = sections.back().size() + kGabFrameBytes;
+    as.max_error = coding.max_error;
+    stats->attribute_bytes += as.bytes;
+    stats->attributes.push_back(std::move(as));
+  }
+  ByteReader in(file->data(), file->size());
+  GabHeader header;
+  GAB_RETURN_IF_ERROR(read_gab_header(&in, file->size(), &header));
+  header.sections = static_cast<int32_t>(sections.size());
+  ByteWriter out;
+  write_gab_header(header, &out);
+  const size_t grown = out.size() - in.offset();  // the count's varint may take more bytes
+  out.bytes(file->data() + in.offset(), file->size() - in.offset());
+  for (const std::vector<uint8_t>& section : sections) write_framed(section.data(), section.size(), &out);
+  *file = out.take();
+  stats->geometry_bytes += grown;
+  stats->bytes = file->size();
+  return Status::Ok();
+}
+
 // Both encode_mesh: `owned`, when given, is `mesh` itself, whose arrays
 // the encoder may take instead of copying.
 Status encode_mesh_from(const Mesh& mesh, Mesh* owned, const EncodeOptions& given, std::vector<uint8_t>* file,
@@ -415,6 +477,7 @@ Status encode_mesh_from(const Mesh& mesh, Mesh* owned, const EncodeOptions& give
   GAB_RETURN_IF_ERROR(validate_mesh(mesh, "mesh"));
   if (options.geometry_only) {
     GAB_RETURN_IF_ERROR(encode_numbered(mesh, options, {}, file, stats));
+    GAB_RETURN_IF_ERROR(append_attribute_sections(mesh, options, file, stats));
   } else {
     // The geometry is coded on the mesh as the decoder returns it: in the
     // input's numbering unless reordered (the anchors code 0-6% smaller in
@@ -427,12 +490,29 @@ Status encode_mesh_from(const Mesh& mesh, Mesh* owned, const EncodeOptions& give
       numbered = renumber_vertices(mesh, coded.new_index);
     } else if (owned != nullptr) {
       numbered.positions = std::move(owned->positions);
+      numbered.attributes = std::move(owned->attributes);
     } else {
       numbered.positions = mesh.positions;
+      numbered.attributes = mesh.attributes;
+    }
+    // Per-corner attributes follow the triangles into the coder's order.
+    bool per_corner = false;
+    for (const MeshAttribute& a : numbered.attributes) per_corner = per_corner || a.per_corner();
+    if (per_corner) {
+      const std::vector<int32_t>& input = options.reorder ? numbered.triangles : mesh.triangles;
+      std::vector<int32_t> input_corner;
+      GAB_RETURN_IF_ERROR(match_corners(input, coded.triangles, &input_corner));
+      for (MeshAttribute& a : numbered.attributes) {
+        if (!a.per_corner()) continue;
+        std::vector<int32_t> corners(input_corner.size());
+        for (size_t c = 0; c < corners.size(); ++c) corners[c] = a.corners[input_corner[c]];
+        a.corners = std::move(corners);
+      }
     }
     if (owned != nullptr) *owned = Mesh();  // nothing of the input is read again
     numbered.triangles = std::move(coded.triangles);
     GAB_RETURN_IF_ERROR(encode_numbered(numbered, options, coded, file, stats));
+    GAB_RETURN_IF_ERROR(append_attribute_sections(numbered, options, file, stats));
     if (options.reorder) stats->new_index = std::move(coded.new_index);
   }
   stats->encode_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

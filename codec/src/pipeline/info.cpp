@@ -5,6 +5,7 @@
 #include "anchors/anchor_chunk.h"
 #include "anchors/anchor_levels.h"
 #include "anchors/refinement_chunk.h"
+#include "attributes/attribute_section.h"
 #include "connectivity/connectivity_section.h"
 #include "container/framing.h"
 #include "container/gab_header.h"
@@ -121,10 +122,29 @@ Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
     info->chunks_present = chunk + 1;
   }
   if (!info->truncated) {
-    int32_t skipped = 0;
-    GAB_RETURN_IF_ERROR(skip_trailing_sections(&in, header.sections, &skipped, &info->truncated));
+    const size_t sections_start = in.offset();
+    std::vector<TrailingSection> sections;
+    GAB_RETURN_IF_ERROR(read_trailing_sections(&in, header.sections, &sections, &info->truncated));
+    info->section_bytes = in.offset() - sections_start;
+    for (size_t i = 0; i < sections.size(); ++i) {
+      GabFileInfo::Section entry;
+      entry.kind = sections[i].kind;
+      entry.bytes = sections[i].size + kGabFrameBytes;
+      if (sections[i].kind == kGabSectionAttribute) {
+        AttributeDescription d;
+        const Status s = read_attribute_description(sections[i].payload, sections[i].size, &d);
+        if (s.code() == StatusCode::kParseError) return corrupt("section " + std::to_string(i) + ": " + s.message());
+        if (s.ok()) {
+          entry.attribute = attribute_label(d.attribute);
+          entry.per_corner = d.per_corner;
+          entry.elements = static_cast<int64_t>(d.elements);
+          entry.bits = d.quantizer.bits;
+        }
+      }
+      info->section_list.push_back(std::move(entry));
+    }
   }
-  info->geometry_bytes = size - info->connectivity_bytes - info->order_bytes;
+  info->geometry_bytes = size - info->connectivity_bytes - info->order_bytes - info->section_bytes;
   return Status::Ok();
 }
 

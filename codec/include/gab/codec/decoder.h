@@ -74,6 +74,7 @@ struct DecodeStats {
   double detail_s = 0;        // decoding the detail chunk (part of decode_s)
   int32_t refactorizations = 0;  // chunks added by refactoring rather than updates
   int32_t skipped_sections = 0;  // trailing sections of kinds this build does not know (gab_format.h)
+  double attributes_s = 0;       // decoding the attribute sections (part of decode_s)
   Ordering ordering = Ordering::kAmd;  // the factorization's ordering (never kAuto)
   Solver solver = Solver::kGlobal;     // the file's reconstruction operator (never kAuto)
   int64_t matrix_entries = 0;          // the least-squares matrix's lower triangle, bounded from the connectivity
@@ -81,7 +82,9 @@ struct DecodeStats {
   int64_t memory_limit = 0;            // the budget the decode ran under (DecodeOptions::max_memory resolved)
 };
 
-// Decodes `data` into `mesh` (positions and triangles).
+// Decodes `data` into `mesh`: positions, triangles and the attributes the
+// file carries (any level of detail decodes them whole: they depend on the
+// connectivity only).
 Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& options, Mesh* mesh, DecodeStats* stats);
 
 struct GabFileInfo {
@@ -113,6 +116,17 @@ struct GabFileInfo {
   size_t order_bytes = 0;              // the vertex order block with its framing (0 without)
   std::vector<size_t> chunk_bytes;     // framed size of each complete anchor chunk
   std::vector<int32_t> chunk_anchors;  // anchors each complete anchor chunk declares
+  // The trailing sections that have arrived (with a valid checksum), in file order.
+  struct Section {
+    int kind = 0;            // 1: an attribute (docs/format.md 6)
+    size_t bytes = 0;        // with its framing
+    std::string attribute;   // an attribute's label ("normals", "generic:quality"); "" for another kind
+    bool per_corner = false;
+    int64_t elements = 0;
+    int bits = 0;
+  };
+  std::vector<Section> section_list;
+  size_t section_bytes = 0;  // all of them with their framing (not in geometry_bytes)
 };
 
 // Reads the header and walks the chunk frames, checking every checksum,

@@ -106,6 +106,15 @@ struct EncodeOptions {
   int32_t final_sweeps = -1;
   int32_t final_steps16 = -1;
   int32_t final_most_steps = -1;
+  // The attributes' quantization (each coded in its own section after the geometry; docs/format.md 6).
+  // Normals: directions on a lattice of about 4^bits points (8: 0.45 degrees at most, Draco's -qn 8
+  // grid), 2..16. Texture coordinates, float colours and float generic attributes: a grid of 2^bits
+  // steps over the attribute's span, 1..31. Integer-typed values (PLY uchar colours, int properties)
+  // are coded exactly whatever these say.
+  int normal_bits = 8;
+  int texcoord_bits = 10;
+  int color_bits = 8;
+  int generic_bits = 16;
   std::function<void(int32_t, double)> progress;  // after every reconstruction: (anchors so far, relative RMS)
 };
 
@@ -116,6 +125,17 @@ struct GreedyStep {
   int32_t anchors;
   double rms_rel;
   double linf_rel;
+};
+
+// One attribute as coded (EncodeStats::attributes).
+struct AttributeStats {
+  std::string label;        // attribute_label: "normals", "texture_coordinates", "vertex_colors", "generic:NAME"
+  int bits = 0;             // its quantization's (integer-typed: the span's; exact)
+  bool per_corner = false;  // coded per corner, with seams; false: one value per vertex
+  int64_t elements = 0;     // values coded: vertices, or per corner the wedges of corners sharing one
+  size_t bytes = 0;         // its section with its framing
+  // The largest error of a decoded value against the input: degrees for normals, value units otherwise.
+  double max_error = 0;
 };
 
 struct EncodeStats {
@@ -139,7 +159,9 @@ struct EncodeStats {
   size_t order_bytes = 0;         // the vertex order block with its framing (0 when reordered or geometry only)
   bool reordered = false;         // the file is numbered in traversal order (EncodeOptions::reorder)
   std::vector<int32_t> new_index;  // reordered: the decoded mesh's number for each input vertex
-  size_t geometry_bytes = 0;      // everything else: header and chunks
+  size_t geometry_bytes = 0;      // header and chunks
+  size_t attribute_bytes = 0;     // the attribute sections with their framing
+  std::vector<AttributeStats> attributes;  // in the mesh's order
   double rms_rel = 0, linf_rel = 0;  // of the decoded shape against the input
   bool refined = false;              // the file ends with a refinement chunk
   bool levels = false;               // the file is in the level layout (FileLayout)

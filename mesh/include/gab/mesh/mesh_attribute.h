@@ -48,6 +48,10 @@ struct MeshAttribute {
 // "generic:NAME": the name the CLI, its JSON and the docs use.
 std::string attribute_label(const MeshAttribute& attribute);
 
+// Whether `kind` holds `components` values an element (normal 3, texture
+// coordinates 2 or 3, colour 3 or 4, generic 1 to 4).
+bool valid_attribute_components(AttributeKind kind, int32_t components);
+
 // Whether values of `type` are integers (the codec codes them exactly).
 bool is_integer_type(ValueType type);
 // The range of an integer `type` (for the float types: -/+ the largest double).

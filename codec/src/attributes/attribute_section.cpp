@@ -1,0 +1,496 @@
+#include "attributes/attribute_section.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+#include "attributes/attribute_quantizer.h"
+#include "container/byte_io.h"
+#include "entropy/int_coder.h"
+#include "entropy/range_coder.h"
+
+namespace gab {
+
+namespace {
+
+constexpr uint8_t kLayoutPerVertex = 0;
+constexpr uint8_t kLayoutPerCorner = 1;
+// The only predictor of this revision (docs/format.md 6.4); a later one
+// gets another code, which this build refuses as unsupported.
+constexpr uint8_t kPredictorParallelogram = 0;
+// Residual contexts per component: the bit length of the magnitude that
+// sets it, capped.
+constexpr int kBuckets = 8;
+
+Status corrupt(const std::string& what) { return Status::Error(StatusCode::kParseError, what); }
+
+int64_t floor_div(int64_t a, int64_t b) {  // b > 0
+  const int64_t q = a / b;
+  return (a % b != 0 && a < 0) ? q - 1 : q;
+}
+// a / b rounded half up, b > 0.
+int64_t round_div(int64_t a, int64_t b) { return floor_div(2 * a + b, 2 * b); }
+
+int bucket(int64_t m) {
+  int b = 0;
+  while (m > 0 && b < kBuckets - 1) {
+    m >>= 1;
+    ++b;
+  }
+  return b;
+}
+
+// A normal's frame: the lattice point `p` (the prediction) seen with its
+// largest component last and every component non-negative, by exact axis
+// permutations and sign flips, so the value coded near it is near the
+// middle of its octant and never across the octahedron's folds.
+struct NormalFrame {
+  explicit NormalFrame(const int32_t p[3]) {
+    int z = 2;
+    if (std::abs(p[1]) > std::abs(p[z])) z = 1;
+    if (std::abs(p[0]) > std::abs(p[z])) z = 0;
+    int i = 0;
+    for (int c = 0; c < 3; ++c) {
+      if (c != z) axis[i++] = c;
+    }
+    axis[2] = z;
+    for (int c = 0; c < 3; ++c) sign[c] = p[axis[c]] < 0 ? -1 : 1;
+  }
+  void to(const int32_t in[3], int32_t out[3]) const {
+    for (int c = 0; c < 3; ++c) out[c] = sign[c] * in[axis[c]];
+  }
+  void from(const int32_t in[3], int32_t out[3]) const {
+    for (int c = 0; c < 3; ++c) out[axis[c]] = sign[c] * in[c];
+  }
+  int axis[3];
+  int sign[3];
+};
+
+// The walk both sides make: elements as they are created (per corner: a
+// wedge of corners sharing a value; per vertex: the vertex), their values,
+// and the prediction of the next from them.
+class Walk {
+ public:
+  Walk(const CornerTable& t, const AttributeQuantizer& q, bool per_corner)
+      : t_(t), q_(q), k_(q.components), per_corner_(per_corner), element_(t.triangles->size(), -1) {
+    if (!per_corner) values_.assign(static_cast<size_t>(t.num_vertices) * k_, 0);
+  }
+
+  int32_t element(int32_t corner) const { return element_[corner]; }
+  const int32_t* value(int32_t e) const { return &values_[static_cast<size_t>(e) * k_]; }
+  int64_t elements() const { return per_corner_ ? static_cast<int64_t>(values_.size() / k_) : t_.num_vertices; }
+  std::vector<int32_t>& values() { return values_; }
+  std::vector<int32_t>& corner_elements() { return element_; }
+
+  // The prediction of the element of the corners `wedge` (at one vertex,
+  // none yet an element): the mean of the parallelograms across the
+  // triangles opposite them whose edge has no seam, else of the decoded
+  // neighbours in their triangles, else the last element.
+  void predict(const std::vector<int32_t>& wedge, int32_t* out) const {
+    int64_t sum[4] = {0, 0, 0, 0};
+    int64_t count = 0;
+    for (int32_t c : wedge) {
+      const int32_t a = CornerTable::next(c), b = CornerTable::prev(c);
+      const int32_t ea = element_[a], eb = element_[b];
+      if (ea < 0 || eb < 0) continue;
+      const int32_t a2 = t_.across[a];
+      if (a2 < 0 || element_[a2] != ea || element_[CornerTable::prev(a2)] != eb) continue;
+      const int32_t ed = element_[CornerTable::next(a2)];
+      if (ed < 0) continue;
+      for (int i = 0; i < k_; ++i) sum[i] += int64_t{value(ea)[i]} + value(eb)[i] - value(ed)[i];
+      ++count;
+    }
+    if (count == 0) {
+      for (int32_t c : wedge) {
+        for (int32_t x : {CornerTable::next(c), CornerTable::prev(c)}) {
+          if (element_[x] < 0) continue;
+          for (int i = 0; i < k_; ++i) sum[i] += value(element_[x])[i];
+          ++count;
+        }
+      }
+    }
+    if (q_.lattice()) {
+      if (count > 0 && (sum[0] != 0 || sum[1] != 0 || sum[2] != 0)) {
+        project_to_lattice(sum, q_.radius(), out);
+      } else if (last_ >= 0) {
+        std::copy(value(last_), value(last_) + 3, out);
+      } else {
+        out[0] = out[1] = 0;
+        out[2] = q_.radius();
+      }
+      return;
+    }
+    for (int i = 0; i < k_; ++i) {
+      int64_t p = 0;
+      if (count > 0) {
+        p = round_div(sum[i], count);
+      } else if (last_ >= 0) {
+        p = value(last_)[i];
+      } else {
+        p = (q_.max_index() + 1) / 2;
+      }
+      out[i] = static_cast<int32_t>(std::min<int64_t>(std::max<int64_t>(p, 0), q_.max_index()));
+    }
+  }
+
+  // The wedge's element is `value`: its corners take it.
+  void add(const std::vector<int32_t>& wedge, int32_t vertex, const int32_t* value) {
+    int32_t e = vertex;
+    if (per_corner_) {
+      e = static_cast<int32_t>(values_.size() / k_);
+      values_.insert(values_.end(), value, value + k_);
+    } else {
+      std::copy(value, value + k_, values_.begin() + static_cast<std::ptrdiff_t>(e) * k_);
+    }
+    for (int32_t c : wedge) element_[c] = e;
+    last_ = e;
+  }
+
+ private:
+  const CornerTable& t_;
+  const AttributeQuantizer& q_;
+  const int k_;
+  const bool per_corner_;
+  std::vector<int32_t> element_;
+  std::vector<int32_t> values_;
+  int32_t last_ = -1;
+};
+
+// Vertex v's corners grouped into wedges by `joined(c)` (the corner across
+// from c shares c's value), in the order of their first corner.
+template <typename Joined>
+void wedges_of(const CornerTable& t, int32_t v, Joined joined, std::vector<std::vector<int32_t>>* wedges) {
+  wedges->clear();
+  const int32_t first = t.corner_offsets[v], count = t.corner_offsets[v + 1] - first;
+  if (count == 0) return;
+  // Union-find over the vertex's corners (local positions).
+  std::vector<int32_t> parent(count);
+  for (int32_t i = 0; i < count; ++i) parent[i] = i;
+  auto find = [&](int32_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  auto local = [&](int32_t corner) {
+    return static_cast<int32_t>(std::lower_bound(t.corners.begin() + first, t.corners.begin() + first + count, corner) -
+                                (t.corners.begin() + first));
+  };
+  for (int32_t i = 0; i < count; ++i) {
+    const int32_t c = t.corners[first + i];
+    if (t.across[c] >= 0 && joined(c)) {
+      const int32_t a = find(i), b = find(local(t.across[c]));
+      if (a != b) parent[std::max(a, b)] = std::min(a, b);
+    }
+  }
+  std::vector<int32_t> slot(count, -1);
+  for (int32_t i = 0; i < count; ++i) {
+    const int32_t r = find(i);
+    if (slot[r] < 0) {
+      slot[r] = static_cast<int32_t>(wedges->size());
+      wedges->emplace_back();
+    }
+    (*wedges)[slot[r]].push_back(t.corners[first + i]);
+  }
+}
+
+// The contexts of the residual coders.
+struct ResidualModels {
+  explicit ResidualModels(int components) : residual(components * kBuckets), seam(3), below(1) {}
+  SIntCoder residual;
+  std::vector<BitModel> seam;  // by the edge's other end: not yet walked, joined, a seam
+  BitModel below;              // a normal's last component is negative
+  int32_t previous_max = 0;
+};
+
+// The seam context of corner c's pair: what the edge's other end says.
+int seam_context(const Walk& walk, int32_t c, const CornerTable& t) {
+  const int32_t other = CornerTable::next(c), other_across = CornerTable::prev(t.across[c]);
+  const int32_t a = walk.element(other), b = walk.element(other_across);
+  if (a < 0 || b < 0) return 0;
+  return a == b ? 1 : 2;
+}
+
+// Residual contexts: component 0 by the previous element's largest
+// residual, later ones by this element's so far.
+int residual_context(int c, const int32_t* r, int32_t previous_max) {
+  int64_t m = previous_max;
+  if (c > 0) {
+    m = 0;
+    for (int i = 0; i < c; ++i) m = std::max<int64_t>(m, std::llabs(r[i]));
+  }
+  return c * kBuckets + bucket(m);
+}
+
+void write_description(const MeshAttribute& a, const AttributeQuantizer& q, bool per_corner, int64_t elements,
+                       ByteWriter* out) {
+  out->u8(kGabSectionAttribute);
+  out->u8(0);  // flags: optional (a decoder that does not know it skips it)
+  out->u8(static_cast<uint8_t>(a.kind));
+  out->u8(static_cast<uint8_t>(a.type));
+  out->u8(static_cast<uint8_t>(a.components));
+  out->u8(per_corner ? kLayoutPerCorner : kLayoutPerVertex);
+  out->u8(kPredictorParallelogram);
+  out->u8(static_cast<uint8_t>(q.bits));
+  out->u8(static_cast<uint8_t>(a.name.size()));
+  out->bytes(reinterpret_cast<const uint8_t*>(a.name.data()), a.name.size());
+  if (!q.lattice()) {
+    for (int c = 0; c < a.components; ++c) out->f64(q.origin[c]);
+    out->f64(q.step);
+  }
+  out->varint(static_cast<uint64_t>(elements));
+}
+
+double angle_degrees(const double* a, const double* b) {
+  const double la = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+  const double lb = std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+  if (!(la > 0) || !(lb > 0)) return 0;
+  const double cosine = (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (la * lb);
+  return std::acos(std::min(1.0, std::max(-1.0, cosine))) * (180.0 / 3.14159265358979323846);
+}
+
+}  // namespace
+
+std::vector<uint8_t> encode_attribute_section(const MeshAttribute& a, const CornerTable& t, int bits,
+                                              AttributeCoding* coding) {
+  const AttributeQuantizer q = AttributeQuantizer::fit(a, bits);
+  const int k = a.components;
+  const size_t ku = static_cast<size_t>(k);
+  // Every input element quantized once; a corner's value is its element's.
+  std::vector<int32_t> input(a.values.size());
+  for (int64_t e = 0; e < a.num_elements(); ++e) q.quantize(&a.values[e * k], &input[e * k]);
+  auto corner_value = [&](int32_t c) {
+    return &input[ku * static_cast<size_t>(a.per_corner() ? a.corners[c] : t.vertex(c))];
+  };
+  bool per_corner = false;
+  if (a.per_corner()) {
+    for (int32_t v = 0; v < t.num_vertices && !per_corner; ++v) {
+      for (int32_t p = t.corner_offsets[v] + 1; p < t.corner_offsets[v + 1]; ++p) {
+        if (!std::equal(corner_value(t.corners[p]), corner_value(t.corners[p]) + k,
+                        corner_value(t.corners[t.corner_offsets[v]]))) {
+          per_corner = true;
+          break;
+        }
+      }
+    }
+  }
+
+  Walk walk(t, q, per_corner);
+  ResidualModels models(k);
+  RangeEncoder enc;
+  std::vector<std::vector<int32_t>> wedges;
+  int32_t pred[4], r[4], actual[4];
+  for (int32_t v : t.visit) {
+    auto joined = [&](int32_t c) { return std::equal(corner_value(c), corner_value(c) + k, corner_value(t.across[c])); };
+    if (per_corner) {
+      for (int32_t p = t.corner_offsets[v]; p < t.corner_offsets[v + 1]; ++p) {
+        const int32_t c = t.corners[p];
+        if (t.across[c] < 0) continue;
+        enc.encode(&models.seam[seam_context(walk, c, t)], joined(c) ? 0 : 1);
+      }
+      wedges_of(t, v, joined, &wedges);
+    } else {
+      wedges.assign(1, std::vector<int32_t>(t.corners.begin() + t.corner_offsets[v],
+                                            t.corners.begin() + t.corner_offsets[v + 1]));
+    }
+    for (const std::vector<int32_t>& wedge : wedges) {
+      walk.predict(wedge, pred);
+      if (!wedge.empty()) {
+        std::copy(corner_value(wedge[0]), corner_value(wedge[0]) + k, actual);
+      } else if (!a.per_corner()) {
+        std::copy(&input[ku * v], &input[ku * v] + k, actual);
+      } else {
+        std::copy(pred, pred + k, actual);  // a vertex in no triangle: nothing to keep
+      }
+      if (q.lattice()) {
+        const NormalFrame frame(pred);
+        int32_t p2[3], a2[3];
+        frame.to(pred, p2);
+        frame.to(actual, a2);
+        for (int c = 0; c < 2; ++c) {
+          r[c] = a2[c] - p2[c];
+          models.residual.encode(&enc, r[c], residual_context(c, r, models.previous_max));
+        }
+        if (q.radius() - std::abs(a2[0]) - std::abs(a2[1]) > 0) enc.encode(&models.below, a2[2] < 0 ? 1 : 0);
+        models.previous_max = std::max(std::abs(r[0]), std::abs(r[1]));
+      } else {
+        int32_t m = 0;
+        for (int c = 0; c < k; ++c) {
+          r[c] = actual[c] - pred[c];
+          models.residual.encode(&enc, r[c], residual_context(c, r, models.previous_max));
+          m = std::max(m, std::abs(r[c]));
+        }
+        models.previous_max = m;
+      }
+      walk.add(wedge, v, actual);
+    }
+  }
+
+  ByteWriter out;
+  write_description(a, q, per_corner, walk.elements(), &out);
+  const std::vector<uint8_t> stream = enc.finish();
+  out.bytes(stream.data(), stream.size());
+
+  if (coding != nullptr) {
+    *coding = AttributeCoding();
+    coding->bits = q.bits;
+    coding->per_corner = per_corner;
+    coding->elements = walk.elements();
+    // The error of every input element that reaches the output.
+    double decoded[4];
+    for (int64_t e = 0; e < a.num_elements(); ++e) {
+      q.dequantize(&input[e * k], decoded);
+      const double* original = &a.values[e * k];
+      if (q.lattice()) {
+        coding->max_error = std::max(coding->max_error, angle_degrees(original, decoded));
+      } else {
+        for (int c = 0; c < k; ++c) coding->max_error = std::max(coding->max_error, std::fabs(original[c] - decoded[c]));
+      }
+    }
+  }
+  return out.take();
+}
+
+Status read_attribute_description(const uint8_t* payload, size_t size, AttributeDescription* d) {
+  ByteReader in(payload, size);
+  uint8_t section = 0, flags = 0, kind = 0, type = 0, components = 0, layout = 0, predictor = 0, bits = 0, name_size = 0;
+  const bool head = in.u8(&section) && in.u8(&flags) && in.u8(&kind) && in.u8(&type) && in.u8(&components) &&
+                    in.u8(&layout) && in.u8(&predictor) && in.u8(&bits) && in.u8(&name_size);
+  if (!head || section != kGabSectionAttribute) return corrupt("attribute section: its description is cut short");
+  if (kind > static_cast<uint8_t>(AttributeKind::kGeneric)) {
+    return Status::Error(StatusCode::kUnsupported, "attribute section: kind " + std::to_string(kind) + " is unknown");
+  }
+  if (type > static_cast<uint8_t>(ValueType::kFloat64)) {
+    return Status::Error(StatusCode::kUnsupported,
+                         "attribute section: value type " + std::to_string(type) + " is unknown");
+  }
+  if (predictor != kPredictorParallelogram) {
+    return Status::Error(StatusCode::kUnsupported,
+                         "attribute section: predictor " + std::to_string(predictor) + " is unknown");
+  }
+  MeshAttribute& a = d->attribute;
+  a = MeshAttribute();
+  a.kind = static_cast<AttributeKind>(kind);
+  a.type = static_cast<ValueType>(type);
+  a.components = components;
+  if (!valid_attribute_components(a.kind, a.components)) {
+    return corrupt("attribute section: " + std::to_string(components) + " components for " + attribute_label(a));
+  }
+  if (layout > kLayoutPerCorner) return corrupt("attribute section: layout " + std::to_string(layout) + " is unknown");
+  d->per_corner = layout == kLayoutPerCorner;
+  const uint8_t* name = nullptr;
+  if (!in.bytes(name_size, &name)) return corrupt("attribute section: its name is cut short");
+  a.name.assign(reinterpret_cast<const char*>(name), name_size);
+  AttributeQuantizer& q = d->quantizer;
+  q = AttributeQuantizer();
+  q.kind = a.kind;
+  q.components = a.components;
+  q.bits = bits;
+  if (q.lattice() ? (bits < 2 || bits > kMaxNormalBits) : (bits < 1 || bits > kMaxGridBits)) {
+    return corrupt("attribute section: " + std::to_string(bits) + " bits is out of range");
+  }
+  if (!q.lattice()) {
+    for (int c = 0; c < a.components; ++c) {
+      if (!in.f64(&q.origin[c])) return corrupt("attribute section: its grid is cut short");
+    }
+    if (!in.f64(&q.step)) return corrupt("attribute section: its grid is cut short");
+    const double far = static_cast<double>(q.max_index()) * q.step;
+    bool finite = std::isfinite(q.step) && q.step >= 0 && std::isfinite(far);
+    for (int c = 0; c < a.components; ++c) finite = finite && std::isfinite(q.origin[c]) && std::isfinite(q.origin[c] + far);
+    if (!finite) return corrupt("attribute section: its grid is not finite");
+  }
+  if (!in.varint(&d->elements)) return corrupt("attribute section: its element count is cut short");
+  d->stream_offset = in.offset();
+  return Status::Ok();
+}
+
+Status decode_attribute_section(const uint8_t* payload, size_t size, const CornerTable& t, MeshAttribute* out) {
+  AttributeDescription d;
+  GAB_RETURN_IF_ERROR(read_attribute_description(payload, size, &d));
+  MeshAttribute a = std::move(d.attribute);
+  const AttributeQuantizer& q = d.quantizer;
+  const bool per_corner = d.per_corner;
+  const uint64_t declared = d.elements;
+  const size_t corners = t.triangles->size();
+  if (per_corner ? declared > corners : declared != static_cast<uint64_t>(t.num_vertices)) {
+    return corrupt("attribute section: " + std::to_string(declared) + " elements for " +
+                   std::to_string(t.num_vertices) + " vertices and " + std::to_string(corners) + " corners");
+  }
+  // Each element costs at least one decision a component: a stream too
+  // short for the declared count is refused before any work.
+  const uint8_t* stream = payload + d.stream_offset;
+  const size_t stream_size = size - d.stream_offset;
+  if (declared * static_cast<uint64_t>(a.components) > max_decisions(stream_size)) {
+    return corrupt("attribute section: its stream is too short for " + std::to_string(declared) + " elements");
+  }
+
+  const int k = a.components;
+  Walk walk(t, q, per_corner);
+  ResidualModels models(k);
+  RangeDecoder dec(stream, stream_size);
+  std::vector<std::vector<int32_t>> wedges;
+  std::vector<char> seam(per_corner ? corners : 0, 0);
+  int32_t pred[4], r[4], actual[4];
+  for (int32_t v : t.visit) {
+    if (per_corner) {
+      for (int32_t p = t.corner_offsets[v]; p < t.corner_offsets[v + 1]; ++p) {
+        const int32_t c = t.corners[p];
+        if (t.across[c] >= 0) seam[c] = static_cast<char>(dec.decode(&models.seam[seam_context(walk, c, t)]));
+      }
+      wedges_of(t, v, [&](int32_t c) { return seam[c] == 0; }, &wedges);
+    } else {
+      wedges.assign(1, std::vector<int32_t>(t.corners.begin() + t.corner_offsets[v],
+                                            t.corners.begin() + t.corner_offsets[v + 1]));
+    }
+    for (const std::vector<int32_t>& wedge : wedges) {
+      if (walk.elements() >= static_cast<int64_t>(declared) && per_corner) {
+        return corrupt("attribute section: more elements than its declared " + std::to_string(declared));
+      }
+      walk.predict(wedge, pred);
+      if (q.lattice()) {
+        const NormalFrame frame(pred);
+        int32_t p2[3], a2[3];
+        frame.to(pred, p2);
+        for (int c = 0; c < 2; ++c) {
+          r[c] = models.residual.decode(&dec, residual_context(c, r, models.previous_max));
+          const int64_t x = int64_t{p2[c]} + r[c];
+          if (x < -q.radius() || x > q.radius()) return corrupt("attribute section: a normal is off its lattice");
+          a2[c] = static_cast<int32_t>(x);
+        }
+        const int64_t rest = int64_t{q.radius()} - std::abs(a2[0]) - std::abs(a2[1]);
+        if (rest < 0) return corrupt("attribute section: a normal is off its lattice");
+        a2[2] = static_cast<int32_t>(rest > 0 && dec.decode(&models.below) ? -rest : rest);
+        models.previous_max = std::max(std::abs(r[0]), std::abs(r[1]));
+        frame.from(a2, actual);
+      } else {
+        int32_t m = 0;
+        for (int c = 0; c < k; ++c) {
+          r[c] = models.residual.decode(&dec, residual_context(c, r, models.previous_max));
+          const int64_t x = int64_t{pred[c]} + r[c];
+          if (x < 0 || x > q.max_index()) return corrupt("attribute section: a value is off its grid");
+          actual[c] = static_cast<int32_t>(x);
+          m = std::max<int32_t>(m, r[c] == INT32_MIN ? INT32_MAX : std::abs(r[c]));
+        }
+        models.previous_max = m;
+      }
+      walk.add(wedge, v, actual);
+    }
+    if (dec.overrun()) return corrupt("attribute section: its stream is cut short");
+  }
+  if (walk.elements() != static_cast<int64_t>(declared)) {
+    return corrupt("attribute section: " + std::to_string(walk.elements()) + " elements where it declares " +
+                   std::to_string(declared));
+  }
+  if (dec.bytes_consumed() != stream_size) return corrupt("attribute section: bytes after its stream");
+
+  const int64_t elements = walk.elements();
+  a.values.resize(static_cast<size_t>(elements) * k);
+  const std::vector<int32_t>& values = walk.values();
+  for (int64_t e = 0; e < elements; ++e) q.dequantize(&values[e * k], &a.values[e * k]);
+  if (per_corner) a.corners = std::move(walk.corner_elements());
+  const Status s = validate_attribute(a, t.num_vertices, static_cast<int64_t>(corners / 3), "attribute section");
+  if (!s.ok()) return corrupt(s.message());
+  *out = std::move(a);
+  return Status::Ok();
+}
+
+}  // namespace gab

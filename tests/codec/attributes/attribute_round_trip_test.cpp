@@ -1,0 +1,263 @@
+// Attributes through the whole codec (encode_mesh, decode_mesh): every kind,
+// per vertex and per corner with seams, in either vertex numbering, at any
+// level of detail, and what a file cut inside a section keeps.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "attributes/corner_correspondence.h"
+#include "common/gab_files.h"
+#include "common/test_meshes.h"
+#include "gab/codec/decoder.h"
+#include "gab/codec/encoder.h"
+
+namespace gab {
+namespace {
+
+using testing_util::bumpy_torus;
+using testing_util::decode_or_die;
+using testing_util::encode_or_die;
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Area-weighted vertex normals of the mesh's triangles.
+MeshAttribute vertex_normals(const Mesh& m) {
+  MeshAttribute a;
+  a.kind = AttributeKind::kNormal;
+  a.components = 3;
+  a.values.assign(m.positions.size(), 0.0);
+  for (int32_t t = 0; t < m.num_triangles(); ++t) {
+    const double* p[3];
+    for (int k = 0; k < 3; ++k) p[k] = &m.positions[3 * static_cast<size_t>(m.triangles[3 * t + k])];
+    const double e1[3] = {p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]};
+    const double e2[3] = {p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
+    const double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+    for (int k = 0; k < 3; ++k) {
+      for (int c = 0; c < 3; ++c) a.values[3 * static_cast<size_t>(m.triangles[3 * t + k]) + c] += n[c];
+    }
+  }
+  return a;
+}
+
+// The torus's (u, v) parameters per corner, with the seams where they wrap
+// (a corner of a triangle across the wrap takes 1, not 0): n x m quads.
+MeshAttribute torus_uvs(int n, int m) {
+  MeshAttribute a;
+  a.kind = AttributeKind::kTexCoord;
+  a.components = 2;
+  // Elements: the (n + 1) x (m + 1) grid of parameters.
+  for (int i = 0; i <= n; ++i) {
+    for (int j = 0; j <= m; ++j) a.values.insert(a.values.end(), {static_cast<double>(i) / n, static_cast<double>(j) / m});
+  }
+  auto e = [m](int i, int j) { return i * (m + 1) + j; };
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < m; ++j) {
+      a.corners.insert(a.corners.end(), {e(i, j), e(i + 1, j), e(i + 1, j + 1), e(i, j), e(i + 1, j + 1), e(i, j + 1)});
+    }
+  }
+  return a;
+}
+
+MeshAttribute byte_colors(const Mesh& m) {
+  MeshAttribute a;
+  a.kind = AttributeKind::kColor;
+  a.type = ValueType::kUint8;
+  a.components = 3;
+  for (int32_t v = 0; v < m.num_vertices(); ++v) {
+    const double* p = &m.positions[3 * static_cast<size_t>(v)];
+    for (int c = 0; c < 3; ++c) a.values.push_back(std::floor(127.5 + 127 * std::sin(2 * p[c] + c)));
+  }
+  return a;
+}
+
+MeshAttribute generic(const Mesh& m, const std::string& name, ValueType type) {
+  MeshAttribute a;
+  a.kind = AttributeKind::kGeneric;
+  a.type = type;
+  a.name = name;
+  a.components = 1;
+  for (int32_t v = 0; v < m.num_vertices(); ++v) {
+    const double x = std::cos(3 * m.positions[3 * static_cast<size_t>(v)]) * 1000;
+    a.values.push_back(type == ValueType::kInt32 ? std::floor(x) : x / 7);
+  }
+  return a;
+}
+
+Mesh attributed_torus() {
+  Mesh m = bumpy_torus(40, 24);
+  m.attributes.push_back(vertex_normals(m));
+  m.attributes.push_back(torus_uvs(40, 24));
+  m.attributes.push_back(byte_colors(m));
+  m.attributes.push_back(generic(m, "quality", ValueType::kFloat32));
+  m.attributes.push_back(generic(m, "segment", ValueType::kInt32));
+  return m;
+}
+
+double angle_degrees(const double* a, const double* b) {
+  const double la = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+  const double lb = std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+  const double c = (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (la * lb);
+  return std::acos(std::min(1.0, std::max(-1.0, c))) * 180 / kPi;
+}
+
+// The input element's value at each decoded corner (or vertex) against the
+// decoded one: the largest error (degrees for normals).
+double largest_error(const Mesh& input, const Mesh& decoded, const std::vector<int32_t>& new_index, size_t which) {
+  const MeshAttribute& a = input.attributes[which];
+  const MeshAttribute& d = decoded.attributes[which];
+  const size_t k = static_cast<size_t>(a.components);
+  std::vector<int32_t> input_corner;
+  std::vector<int32_t> renamed(input.triangles.size());
+  for (size_t i = 0; i < renamed.size(); ++i) renamed[i] = new_index.empty() ? input.triangles[i] : new_index[input.triangles[i]];
+  EXPECT_TRUE(match_corners(renamed, decoded.triangles, &input_corner).ok());
+  double worst = 0;
+  for (size_t c = 0; c < decoded.triangles.size(); ++c) {
+    const int32_t ci = input_corner[c];
+    const int32_t v_in = input.triangles[ci];
+    const double* x = &a.values[k * static_cast<size_t>(a.per_corner() ? a.corners[ci] : v_in)];
+    const double* y = &d.values[k * static_cast<size_t>(d.per_corner() ? d.corners[c] : decoded.triangles[c])];
+    if (a.kind == AttributeKind::kNormal) {
+      worst = std::max(worst, angle_degrees(x, y));
+    } else {
+      for (size_t i = 0; i < k; ++i) worst = std::max(worst, std::fabs(x[i] - y[i]));
+    }
+  }
+  return worst;
+}
+
+TEST(AttributeRoundTrip, EveryKindComesBackWithinItsQuantizationInEitherNumbering) {
+  const Mesh input = attributed_torus();
+  for (bool reorder : {true, false}) {
+    SCOPED_TRACE(reorder ? "traversal order" : "kept order");
+    EncodeOptions o;
+    o.target_rms_rel = 1e-3;
+    o.reorder = reorder;
+    EncodeStats stats;
+    const std::vector<uint8_t> file = encode_or_die(input, o, &stats);
+    ASSERT_EQ(stats.attributes.size(), 5u);
+    DecodeStats ds;
+    const Mesh out = decode_or_die(file, DecodeOptions(), &ds);
+    ASSERT_EQ(out.attributes.size(), 5u);
+    EXPECT_GT(stats.attribute_bytes, 0u);
+    EXPECT_EQ(stats.bytes, file.size());
+    EXPECT_EQ(stats.connectivity_bytes + stats.order_bytes + stats.geometry_bytes + stats.attribute_bytes, stats.bytes);
+    // Normals: the 8-bit lattice (step 1/128 of the octahedron) is within about one step, 0.6 degrees.
+    EXPECT_EQ(stats.attributes[0].label, "normals");
+    EXPECT_FALSE(stats.attributes[0].per_corner);
+    EXPECT_LE(largest_error(input, out, stats.new_index, 0), stats.attributes[0].max_error + 1e-9);
+    EXPECT_LT(stats.attributes[0].max_error, 0.6);
+    // UVs: per corner, the torus's two seams kept, half a 10-bit step of the span 1.
+    EXPECT_EQ(stats.attributes[1].label, "texture_coordinates");
+    EXPECT_TRUE(stats.attributes[1].per_corner);
+    EXPECT_TRUE(out.attributes[1].per_corner());
+    EXPECT_EQ(stats.attributes[1].elements, 41 * 25);
+    EXPECT_LE(largest_error(input, out, stats.new_index, 1), 0.5 / 1023 + 1e-12);
+    // Byte colours and integer properties: exact.
+    EXPECT_EQ(stats.attributes[2].label, "vertex_colors");
+    EXPECT_EQ(largest_error(input, out, stats.new_index, 2), 0.0);
+    EXPECT_EQ(out.attributes[2].type, ValueType::kUint8);
+    EXPECT_EQ(stats.attributes[4].label, "generic:segment");
+    EXPECT_EQ(largest_error(input, out, stats.new_index, 4), 0.0);
+    EXPECT_EQ(out.attributes[4].name, "segment");
+    // A float property: half a 16-bit step of its span.
+    const double span = 2000.0 / 7;
+    EXPECT_LE(largest_error(input, out, stats.new_index, 3), 0.5 * span / 65535 * 1.0001);
+  }
+}
+
+TEST(AttributeRoundTrip, ALevelOfDetailDecodesTheAttributesWhole) {
+  const Mesh input = attributed_torus();
+  EncodeOptions o;
+  o.target_rms_rel = 1e-3;
+  EncodeStats stats;
+  const std::vector<uint8_t> file = encode_or_die(input, o, &stats);
+  DecodeStats ds;
+  const Mesh whole = decode_or_die(file, DecodeOptions(), &ds);
+  DecodeOptions lod;
+  lod.max_anchors = 5;
+  const Mesh coarse = decode_or_die(file, lod, &ds);
+  EXPECT_LT(ds.anchors, stats.anchors);
+  ASSERT_EQ(coarse.attributes.size(), whole.attributes.size());
+  for (size_t i = 0; i < whole.attributes.size(); ++i) {
+    EXPECT_EQ(coarse.attributes[i].values, whole.attributes[i].values);
+    EXPECT_EQ(coarse.attributes[i].corners, whole.attributes[i].corners);
+  }
+}
+
+TEST(AttributeRoundTrip, AFileCutInsideASectionKeepsTheSectionsBeforeIt) {
+  const Mesh input = attributed_torus();
+  EncodeOptions o;
+  o.target_rms_rel = 1e-3;
+  EncodeStats stats;
+  const std::vector<uint8_t> file = encode_or_die(input, o, &stats);
+  // Cut inside the last section: four attributes and the whole shape.
+  const size_t cut = file.size() - stats.attributes.back().bytes / 2;
+  Mesh out;
+  DecodeStats ds;
+  ASSERT_TRUE(decode_mesh(file.data(), cut, DecodeOptions(), &out, &ds).ok());
+  EXPECT_TRUE(ds.truncated);
+  EXPECT_EQ(out.attributes.size(), 4u);
+  EXPECT_EQ(ds.anchors, stats.anchors);
+  // Cut before the sections: none.
+  const size_t geometry_end = file.size() - stats.attribute_bytes;
+  ASSERT_TRUE(decode_mesh(file.data(), geometry_end, DecodeOptions(), &out, &ds).ok());
+  EXPECT_TRUE(ds.truncated);
+  EXPECT_TRUE(out.attributes.empty());
+}
+
+TEST(AttributeRoundTrip, PerCornerValuesWithoutSeamsAreCodedPerVertex) {
+  Mesh m = bumpy_torus(20, 12);
+  MeshAttribute normals = vertex_normals(m);
+  // The same normals given per corner (OBJ's f v//vn with vn per vertex).
+  normals.corners = m.triangles;
+  m.attributes.push_back(normals);
+  EncodeOptions o;
+  o.target_rms_rel = 1e-3;
+  EncodeStats stats;
+  const std::vector<uint8_t> file = encode_or_die(m, o, &stats);
+  ASSERT_EQ(stats.attributes.size(), 1u);
+  EXPECT_FALSE(stats.attributes[0].per_corner);
+  DecodeStats ds;
+  const Mesh out = decode_or_die(file, DecodeOptions(), &ds);
+  ASSERT_EQ(out.attributes.size(), 1u);
+  EXPECT_FALSE(out.attributes[0].per_corner());
+  EXPECT_LE(largest_error(m, out, stats.new_index, 0), stats.attributes[0].max_error + 1e-9);
+}
+
+TEST(AttributeRoundTrip, GabInfoListsTheSections) {
+  const Mesh input = attributed_torus();
+  EncodeOptions o;
+  o.target_rms_rel = 1e-3;
+  EncodeStats stats;
+  const std::vector<uint8_t> file = encode_or_die(input, o, &stats);
+  GabFileInfo info;
+  ASSERT_TRUE(read_gab_info(file.data(), file.size(), &info).ok());
+  ASSERT_EQ(info.section_list.size(), 5u);
+  EXPECT_EQ(info.sections, 5);
+  EXPECT_EQ(info.section_bytes, stats.attribute_bytes);
+  EXPECT_EQ(info.section_list[1].attribute, "texture_coordinates");
+  EXPECT_TRUE(info.section_list[1].per_corner);
+  EXPECT_EQ(info.section_list[1].elements, 41 * 25);
+  EXPECT_EQ(info.section_list[1].bits, 10);
+  EXPECT_EQ(info.section_list[3].attribute, "generic:quality");
+  EXPECT_EQ(info.geometry_bytes, stats.geometry_bytes);
+}
+
+TEST(AttributeRoundTrip, OptionErrors) {
+  Mesh m = bumpy_torus(8, 6);
+  std::vector<uint8_t> file;
+  EncodeStats stats;
+  EncodeOptions o;
+  o.max_anchors = 10;
+  o.normal_bits = 17;
+  EXPECT_EQ(encode_mesh(m, o, &file, &stats).message(), "normal bits must be in 2..16");
+  o.normal_bits = 8;
+  o.texcoord_bits = 0;
+  EXPECT_EQ(encode_mesh(m, o, &file, &stats).message(), "texture coordinate, colour and generic bits must be in 1..31");
+}
+
+}  // namespace
+}  // namespace gab
