@@ -67,6 +67,15 @@ struct NormalFrame {
   int sign[3];
 };
 
+// A vertex's corners that share one element.
+struct Wedge {
+  const int32_t* first;
+  const int32_t* last;
+  const int32_t* begin() const { return first; }
+  const int32_t* end() const { return last; }
+  bool empty() const { return first == last; }
+};
+
 // The walk both sides make: elements as they are created (per corner: a
 // wedge of corners sharing a value; per vertex: the vertex), their values,
 // and the prediction of the next from them.
@@ -87,7 +96,7 @@ class Walk {
   // none yet an element): the mean of the parallelograms across the
   // triangles opposite them whose edge has no seam, else of the decoded
   // neighbours in their triangles, else the last element.
-  void predict(const std::vector<int32_t>& wedge, int32_t* out) const {
+  void predict(const Wedge& wedge, int32_t* out) const {
     int64_t sum[4] = {0, 0, 0, 0};
     int64_t count = 0;
     for (int32_t c : wedge) {
@@ -135,7 +144,7 @@ class Walk {
   }
 
   // The wedge's element is `value`: its corners take it.
-  void add(const std::vector<int32_t>& wedge, int32_t vertex, const int32_t* value) {
+  void add(const Wedge& wedge, int32_t vertex, const int32_t* value) {
     int32_t e = vertex;
     if (per_corner_) {
       e = static_cast<int32_t>(values_.size() / k_);
@@ -158,40 +167,72 @@ class Walk {
 };
 
 // Vertex v's corners grouped into wedges by `joined(c)` (the corner across
-// from c shares c's value), in the order of their first corner.
-template <typename Joined>
-void wedges_of(const CornerTable& t, int32_t v, Joined joined, std::vector<std::vector<int32_t>>* wedges) {
-  wedges->clear();
-  const int32_t first = t.corner_offsets[v], count = t.corner_offsets[v + 1] - first;
-  if (count == 0) return;
-  // Union-find over the vertex's corners (local positions).
-  std::vector<int32_t> parent(count);
-  for (int32_t i = 0; i < count; ++i) parent[i] = i;
-  auto find = [&](int32_t i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  };
-  auto local = [&](int32_t corner) {
-    return static_cast<int32_t>(std::lower_bound(t.corners.begin() + first, t.corners.begin() + first + count, corner) -
-                                (t.corners.begin() + first));
-  };
-  for (int32_t i = 0; i < count; ++i) {
-    const int32_t c = t.corners[first + i];
-    if (t.across[c] >= 0 && joined(c)) {
-      const int32_t a = find(i), b = find(local(t.across[c]));
-      if (a != b) parent[std::max(a, b)] = std::min(a, b);
+// from c shares c's value), in the order of their first corner. The
+// scratch is kept across vertices: no allocation once it has grown.
+class WedgeSplitter {
+ public:
+  template <typename Joined>
+  const std::vector<Wedge>& split(const CornerTable& t, int32_t v, Joined joined) {
+    const int32_t first = t.corner_offsets[v], count = t.corner_offsets[v + 1] - first;
+    const int32_t* corners = t.corners.data() + first;
+    wedges_.clear();
+    if (count == 0) {
+      wedges_.push_back({corners, corners});
+      return wedges_;
     }
-  }
-  std::vector<int32_t> slot(count, -1);
-  for (int32_t i = 0; i < count; ++i) {
-    const int32_t r = find(i);
-    if (slot[r] < 0) {
-      slot[r] = static_cast<int32_t>(wedges->size());
-      wedges->emplace_back();
+    parent_.resize(count);
+    for (int32_t i = 0; i < count; ++i) parent_[i] = i;
+    auto find = [&](int32_t i) {
+      while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
+      return i;
+    };
+    bool any = false;
+    for (int32_t i = 0; i < count; ++i) {
+      const int32_t c = corners[i];
+      if (t.across[c] >= 0 && joined(c)) {
+        const int32_t j = static_cast<int32_t>(std::lower_bound(corners, corners + count, t.across[c]) - corners);
+        const int32_t a = find(i), b = find(j);
+        if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+      } else {
+        any = true;
+      }
     }
-    (*wedges)[slot[r]].push_back(t.corners[first + i]);
+    if (!any) {  // every pair joined: one wedge, the vertex's corners
+      wedges_.push_back({corners, corners + count});
+      return wedges_;
+    }
+    // Corners grouped by root, roots in the order of their first corner.
+    slot_.assign(count, -1);
+    sizes_.clear();
+    for (int32_t i = 0; i < count; ++i) {
+      const int32_t r = find(i);
+      if (slot_[r] < 0) {
+        slot_[r] = static_cast<int32_t>(sizes_.size());
+        sizes_.push_back(0);
+      }
+      ++sizes_[slot_[r]];
+    }
+    grouped_.resize(count);
+    starts_.assign(sizes_.size() + 1, 0);
+    for (size_t w = 0; w < sizes_.size(); ++w) starts_[w + 1] = starts_[w] + sizes_[w];
+    fill_.assign(starts_.begin(), starts_.end() - 1);
+    for (int32_t i = 0; i < count; ++i) grouped_[fill_[slot_[find(i)]]++] = corners[i];
+    for (size_t w = 0; w < sizes_.size(); ++w) {
+      wedges_.push_back({grouped_.data() + starts_[w], grouped_.data() + starts_[w + 1]});
+    }
+    return wedges_;
   }
-}
+
+  // All of v's corners as one wedge (per-vertex layout).
+  const std::vector<Wedge>& whole(const CornerTable& t, int32_t v) {
+    wedges_.assign(1, {t.corners.data() + t.corner_offsets[v], t.corners.data() + t.corner_offsets[v + 1]});
+    return wedges_;
+  }
+
+ private:
+  std::vector<int32_t> parent_, slot_, sizes_, grouped_, starts_, fill_;
+  std::vector<Wedge> wedges_;
+};
 
 // The contexts of the residual coders.
 struct ResidualModels {
@@ -277,7 +318,7 @@ std::vector<uint8_t> encode_attribute_section(const MeshAttribute& a, const Corn
   Walk walk(t, q, per_corner);
   ResidualModels models(k);
   RangeEncoder enc;
-  std::vector<std::vector<int32_t>> wedges;
+  WedgeSplitter splitter;
   int32_t pred[4], r[4], actual[4];
   for (int32_t v : t.visit) {
     auto joined = [&](int32_t c) { return std::equal(corner_value(c), corner_value(c) + k, corner_value(t.across[c])); };
@@ -287,15 +328,11 @@ std::vector<uint8_t> encode_attribute_section(const MeshAttribute& a, const Corn
         if (t.across[c] < 0) continue;
         enc.encode(&models.seam[seam_context(walk, c, t)], joined(c) ? 0 : 1);
       }
-      wedges_of(t, v, joined, &wedges);
-    } else {
-      wedges.assign(1, std::vector<int32_t>(t.corners.begin() + t.corner_offsets[v],
-                                            t.corners.begin() + t.corner_offsets[v + 1]));
     }
-    for (const std::vector<int32_t>& wedge : wedges) {
+    for (const Wedge& wedge : per_corner ? splitter.split(t, v, joined) : splitter.whole(t, v)) {
       walk.predict(wedge, pred);
       if (!wedge.empty()) {
-        std::copy(corner_value(wedge[0]), corner_value(wedge[0]) + k, actual);
+        std::copy(corner_value(*wedge.first), corner_value(*wedge.first) + k, actual);
       } else if (!a.per_corner()) {
         std::copy(&input[ku * v], &input[ku * v] + k, actual);
       } else {
@@ -427,8 +464,9 @@ Status decode_attribute_section(const uint8_t* payload, size_t size, const Corne
   Walk walk(t, q, per_corner);
   ResidualModels models(k);
   RangeDecoder dec(stream, stream_size);
-  std::vector<std::vector<int32_t>> wedges;
+  WedgeSplitter splitter;
   std::vector<char> seam(per_corner ? corners : 0, 0);
+  auto joined = [&](int32_t c) { return seam[c] == 0; };
   int32_t pred[4], r[4], actual[4];
   for (int32_t v : t.visit) {
     if (per_corner) {
@@ -436,12 +474,8 @@ Status decode_attribute_section(const uint8_t* payload, size_t size, const Corne
         const int32_t c = t.corners[p];
         if (t.across[c] >= 0) seam[c] = static_cast<char>(dec.decode(&models.seam[seam_context(walk, c, t)]));
       }
-      wedges_of(t, v, [&](int32_t c) { return seam[c] == 0; }, &wedges);
-    } else {
-      wedges.assign(1, std::vector<int32_t>(t.corners.begin() + t.corner_offsets[v],
-                                            t.corners.begin() + t.corner_offsets[v + 1]));
     }
-    for (const std::vector<int32_t>& wedge : wedges) {
+    for (const Wedge& wedge : per_corner ? splitter.split(t, v, joined) : splitter.whole(t, v)) {
       if (walk.elements() >= static_cast<int64_t>(declared) && per_corner) {
         return corrupt("attribute section: more elements than its declared " + std::to_string(declared));
       }

@@ -24,28 +24,31 @@ CornerTable build_corner_table(int32_t n, const std::vector<int32_t>& triangles)
   // next of the other corner). Non-manifold and boundary edges join none.
   // O(T log degree), whatever the degrees.
   t.across.assign(triangles.size(), -1);
-  std::vector<int32_t> offsets(static_cast<size_t>(n) + 1, 0), edges;
-  auto low = [&](int32_t c) { return std::min(triangles[c], triangles[CornerTable::next(c)]); };
-  auto high = [&](int32_t c) { return std::max(triangles[c], triangles[CornerTable::next(c)]); };
+  std::vector<int32_t> offsets(static_cast<size_t>(n) + 1, 0);
   for (int32_t c = 0; c < corners; ++c) {
-    if (triangles[c] != triangles[CornerTable::next(c)]) ++offsets[low(c) + 1];
+    const int32_t v = triangles[c], w = triangles[CornerTable::next(c)];
+    if (v != w) ++offsets[std::min(v, w) + 1];
   }
   for (int32_t v = 0; v < n; ++v) offsets[v + 1] += offsets[v];
-  edges.resize(offsets[n]);
+  // Each entry: the upper end in the high half, the corner in the low one,
+  // so a group sorts as plain integers.
+  std::vector<uint64_t> edges(static_cast<size_t>(offsets[n]));
   {
     std::vector<int32_t> fill(offsets.begin(), offsets.end() - 1);
     for (int32_t c = 0; c < corners; ++c) {
-      if (triangles[c] != triangles[CornerTable::next(c)]) edges[fill[low(c)]++] = c;
+      const int32_t v = triangles[c], w = triangles[CornerTable::next(c)];
+      if (v == w) continue;
+      edges[fill[std::min(v, w)]++] = (static_cast<uint64_t>(std::max(v, w)) << 32) | static_cast<uint32_t>(c);
     }
   }
   for (int32_t v = 0; v < n; ++v) {
     const auto first = edges.begin() + offsets[v], last = edges.begin() + offsets[v + 1];
-    std::sort(first, last, [&](int32_t a, int32_t b) { return high(a) != high(b) ? high(a) < high(b) : a < b; });
+    std::sort(first, last);
     for (auto run = first; run != last;) {
       auto end = run;
-      while (end != last && high(*end) == high(*run)) ++end;
+      while (end != last && (*end >> 32) == (*run >> 32)) ++end;
       if (end - run == 2) {
-        const int32_t a = run[0], b = run[1];
+        const int32_t a = static_cast<int32_t>(run[0] & 0xFFFFFFFFu), b = static_cast<int32_t>(run[1] & 0xFFFFFFFFu);
         if (triangles[a] != triangles[b]) {  // one each way
           t.across[a] = CornerTable::next(b);
           t.across[b] = CornerTable::next(a);
