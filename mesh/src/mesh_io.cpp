@@ -126,13 +126,13 @@ Status read_mesh(const std::string& path, Mesh* mesh, MeshReadNotes* notes) {
   return parse_mesh(bytes, format, path, mesh, notes);
 }
 
-Status write_mesh(const std::string& path, const Mesh& mesh, const PlyWriteOptions& ply) {
+Status write_mesh(const std::string& path, const Mesh& mesh, const PlyWriteOptions& ply, MeshWriteNotes* notes) {
   MeshFormat format;
   GAB_RETURN_IF_ERROR(mesh_format_from_path(path, &format));
   switch (format) {
-    case MeshFormat::kObj: return write_obj(path, mesh);
-    case MeshFormat::kOff: return write_off(path, mesh);
-    case MeshFormat::kPly: return write_ply(path, mesh, ply);
+    case MeshFormat::kObj: return write_obj(path, mesh, notes);
+    case MeshFormat::kOff: return write_off(path, mesh, notes);
+    case MeshFormat::kPly: return write_ply(path, mesh, ply, notes);
   }
   return Status::Error(StatusCode::kInvalidArgument, path + ": unknown mesh format");
 }

@@ -1,10 +1,14 @@
-// OBJ reader and writer. tinyobjloader (its streaming callback API) does the
-// parsing. It reports no positions and reads malformed numbers as 0, so a
-// first pass over the text, splitting lines exactly as tinyobjloader does
-// ('\n', '\r\n' or '\r'), records the line of every `v` and `f` record and
-// checks them, so that errors can name lines and nothing malformed slips
-// through as a zero. The k-th face tinyobjloader reports is then the k-th `f`
-// line of that pass.
+// OBJ reader. tinyobjloader (its streaming callback API) does the parsing of
+// positions and faces. It reports no positions and reads malformed numbers
+// as 0, so a first pass over the text, splitting lines exactly as
+// tinyobjloader does ('\n', '\r\n' or '\r'), records the line of every `v`
+// and `f` record and checks them, so that errors can name lines and nothing
+// malformed slips through as a zero. The k-th face tinyobjloader reports is
+// then the k-th `f` line of that pass. The same pass reads the `vn` and `vt`
+// records and the colours of `v x y z r g b` itself (tinyobjloader's
+// callbacks give no colours, and its numbers are not correctly rounded);
+// the faces' vt and vn indices come from tinyobjloader with the v index and
+// are resolved against the records the pass counted before each face.
 #include "gab/mesh/obj_io.h"
 
 #include <tiny_obj_loader.h>
@@ -14,6 +18,7 @@
 #include <sstream>
 #include <vector>
 
+#include "attribute_text.h"
 #include "gab/mesh/file_io.h"
 #include "text_scanner.h"
 
@@ -27,25 +32,34 @@ using mesh_detail::printable;
 
 std::vector<std::string_view> split_blanks(std::string_view s);
 
+// The records of one kind of face index: vt (texture coordinates) or vn
+// (normals), as the line scan reads them.
+struct ObjElements {
+  int components = 3;           // values kept per record (vt: 3, u v w)
+  std::vector<double> values;   // `components` per record
+  std::vector<int64_t> before;  // per face: records defined before its line
+  int64_t first_not_finite = 0; // line of the first record with a value that is not finite (0: none)
+
+  int64_t count() const { return static_cast<int64_t>(values.size()) / components; }
+};
+
 struct ObjLines {
   std::vector<int64_t> vertex_line;  // line of each `v` record
   std::vector<int64_t> face_line;    // line of each `f` record
+  ObjElements texcoords, normals;
+  std::vector<double> colors;        // r g b of each `v x y z r g b` record
+  int64_t colors_not_finite = 0;     // line of the first colour that is not finite (0: none)
 };
 
 // Records a Mesh does not carry, counted by the same pass.
 struct ObjDropped {
-  int64_t normals = 0, texcoords = 0, parameter = 0, colors = 0, weights = 0;
-  int64_t face_texcoords = 0, face_normals = 0, polygons = 0;
+  int64_t parameter = 0, weights = 0, polygons = 0;
   int64_t lines = 0, points = 0, groups = 0, objects = 0, smoothing = 0, libraries = 0, materials = 0;
   int64_t other = 0;
   std::string first_other;  // keyword of the first other record
 
   void note(std::string_view key, std::string_view args) {
-    if (key == "vn") {
-      ++normals;
-    } else if (key == "vt") {
-      ++texcoords;
-    } else if (key == "vp") {
+    if (key == "vp") {
       ++parameter;
     } else if (key == "l") {
       ++lines;
@@ -69,13 +83,8 @@ struct ObjDropped {
   }
 
   void report(MeshReadNotes* notes) const {
-    notes->drop("normals", "normals (vn)", normals);
-    notes->drop("texture_coordinates", "texture coordinates (vt)", texcoords);
     notes->drop("parameter_vertices", "parameter-space vertices (vp)", parameter);
-    notes->drop("vertex_colors", "vertex colours (v x y z r g b)", colors);
     notes->drop("vertex_weights", "vertex weights (v x y z w)", weights);
-    notes->drop("face_texture_indices", "faces with vt indices (f v/vt)", face_texcoords);
-    notes->drop("face_normal_indices", "faces with vn indices (f v//vn)", face_normals);
     notes->drop("polygons", "polygons of 4 or more corners (fan-triangulated)", polygons);
     notes->drop("lines", "lines (l)", lines);
     notes->drop("points", "points (p)", points);
@@ -100,20 +109,26 @@ std::vector<std::string_view> split_blanks(std::string_view s) {
   return out;
 }
 
-// One face corner "v", "v/vt", "v//vn" or "v/vt/vn": false unless every part
-// is an integer of at most 10 digits (vt, vn may be empty) and v is a
-// nonzero int32 (so tinyobjloader's atoi cannot overflow). has[0], has[1]:
-// whether the vt, vn parts are there.
-bool parse_corner(std::string_view token, int64_t* v, bool has[2]) {
+// An index part of a face corner: an integer of at most 11 characters
+// within int32 (so tinyobjloader's atoi cannot overflow).
+bool parse_index(std::string_view s, int64_t* v) {
+  return s.size() <= 11 && parse_int(s, v) && *v <= INT32_MAX && *v >= -INT32_MAX;
+}
+
+// One face corner "v", "v/vt", "v//vn" or "v/vt/vn" into index[0..2]
+// (v, vt, vn; 0 where a part is absent or empty). False unless every part
+// written is an index; written[part]: whether the part has text.
+bool parse_corner(std::string_view token, int64_t index[3], bool written[3]) {
   size_t slash = token.find('/');
-  has[0] = has[1] = false;
-  if (!parse_int(token.substr(0, slash), v) || *v == 0 || *v > INT32_MAX || *v < -INT32_MAX) return false;
-  for (int part = 0; part < 2 && slash != std::string_view::npos; ++part) {
+  index[1] = index[2] = 0;
+  written[0] = true;
+  written[1] = written[2] = false;
+  if (!parse_index(token.substr(0, slash), &index[0])) return false;
+  for (int part = 1; part < 3 && slash != std::string_view::npos; ++part) {
     const size_t next = token.find('/', slash + 1);
     const std::string_view s = token.substr(slash + 1, next == std::string_view::npos ? next : next - slash - 1);
-    int64_t ignored;
-    if (!s.empty() && (s.size() > 11 || !parse_int(s, &ignored))) return false;
-    has[part] = !s.empty();
+    written[part] = !s.empty();
+    if (written[part] && !parse_index(s, &index[part])) return false;
     slash = next;
   }
   return slash == std::string_view::npos;
@@ -121,6 +136,98 @@ bool parse_corner(std::string_view token, int64_t* v, bool has[2]) {
 
 Status line_error(const std::string& name, int64_t line, const std::string& what) {
   return Status::Error(StatusCode::kParseError, name + ":" + std::to_string(line) + ": " + what);
+}
+
+// Reads `count` numbers of `w` from `first` into `out` (the caller checked
+// there are that many); the first bad one is an error naming `what` and the
+// record's index.
+Status parse_values(const std::vector<std::string_view>& w, size_t first, size_t count, const std::string& name,
+                    int64_t line, const std::string& what, double* out, bool* finite) {
+  for (size_t c = 0; c < count; ++c) {
+    if (!parse_real(w[first + c], &out[c])) {
+      return line_error(name, line, what + ": bad value '" + printable(w[first + c]) + "'");
+    }
+    *finite = *finite && std::isfinite(out[c]);
+  }
+  return Status::Ok();
+}
+
+// A `vn` (3 values) or `vt` (u [v [w]]) record.
+Status scan_element(const std::vector<std::string_view>& w, bool texcoord, const std::string& name, int64_t line,
+                    ObjElements* e) {
+  const int64_t index = e->count();
+  const std::string what = (texcoord ? "texture coordinate " : "normal ") + std::to_string(index);
+  const size_t need = texcoord ? 1 : 3;
+  if (w.size() < need) {
+    return line_error(name, line, what + ": needs " + (texcoord ? "1 to 3 values" : "3 values") + ", has " +
+                                      std::to_string(w.size()));
+  }
+  if (index >= INT32_MAX) return line_error(name, line, "more than 2^31-1 " + std::string(texcoord ? "vt" : "vn") + " records");
+  double v[3] = {0, 0, 0};
+  bool finite = true;
+  GAB_RETURN_IF_ERROR(parse_values(w, 0, w.size() < 3 ? w.size() : 3, name, line, what, v, &finite));
+  if (!finite && e->first_not_finite == 0) e->first_not_finite = line;
+  e->values.insert(e->values.end(), v, v + 3);
+  return Status::Ok();
+}
+
+Status scan_vertex(const std::vector<std::string_view>& w, const std::string& name, int64_t line, ObjLines* lines,
+                   ObjDropped* dropped) {
+  const int64_t v = static_cast<int64_t>(lines->vertex_line.size());
+  if (w.size() < 3) {
+    return line_error(name, line, "vertex " + std::to_string(v) + ": needs 3 coordinates, has " + std::to_string(w.size()));
+  }
+  for (int c = 0; c < 3; ++c) {
+    double x;
+    if (!parse_real(w[c], &x)) {
+      return line_error(name, line, "vertex " + std::to_string(v) + ": bad coordinate '" + printable(w[c]) + "'");
+    }
+    if (!std::isfinite(x)) return line_error(name, line, "vertex " + std::to_string(v) + ": coordinate is not finite");
+  }
+  if (lines->vertex_line.size() >= static_cast<size_t>(INT32_MAX)) return line_error(name, line, "more than 2^31-1 vertices");
+  // tinyobjloader reads "v x y z w"; "v x y z r g b" is the common colour extension.
+  if (w.size() >= 6) {
+    double rgb[3];
+    bool finite = true;
+    GAB_RETURN_IF_ERROR(parse_values(w, 3, 3, name, line, "vertex " + std::to_string(v) + " colour", rgb, &finite));
+    if (!finite && lines->colors_not_finite == 0) lines->colors_not_finite = line;
+    lines->colors.insert(lines->colors.end(), rgb, rgb + 3);
+  } else if (w.size() >= 4) {
+    ++dropped->weights;
+  }
+  lines->vertex_line.push_back(line);
+  return Status::Ok();
+}
+
+Status scan_face(const std::vector<std::string_view>& w, const std::string& name, int64_t line, ObjLines* lines,
+                 ObjDropped* dropped) {
+  const int64_t f = static_cast<int64_t>(lines->face_line.size());
+  const std::string face = "face " + std::to_string(f);
+  if (w.size() < 3) {
+    return line_error(name, line, face + " has " + std::to_string(w.size()) + " vertices (need 3 or more)");
+  }
+  static const char* const kPart[3] = {"vertex", "texture coordinate", "normal"};
+  for (std::string_view corner : w) {
+    int64_t index[3];
+    bool written[3];
+    if (corner == "0" || corner.substr(0, 2) == "0/") {
+      return line_error(name, line, face + ": vertex index 0 (OBJ indices start at 1)");
+    }
+    if (!parse_corner(corner, index, written) || index[0] == 0) {
+      return line_error(name, line, face + ": bad vertex index '" + printable(corner) + "'");
+    }
+    // tinyobjloader reads an index 0 as "absent": say it is wrong instead.
+    for (int part = 1; part < 3; ++part) {
+      if (written[part] && index[part] == 0) {
+        return line_error(name, line, face + ": " + kPart[part] + " index 0 (OBJ indices start at 1)");
+      }
+    }
+  }
+  dropped->polygons += w.size() > 3;
+  lines->face_line.push_back(line);
+  lines->texcoords.before.push_back(lines->texcoords.count());
+  lines->normals.before.push_back(lines->normals.count());
+  return Status::Ok();
 }
 
 Status scan_lines(std::string_view text, const std::string& name, ObjLines* lines, ObjDropped* dropped) {
@@ -142,70 +249,40 @@ Status scan_lines(std::string_view text, const std::string& name, ObjLines* line
     if (i == line.size() || line[i] == '#') continue;
     size_t key_end = i;
     while (key_end < line.size() && line[key_end] != ' ' && line[key_end] != '\t') ++key_end;
-    const std::string_view key_word = line.substr(i, key_end - i);
-    if (key_word != "v" && key_word != "f") {
-      dropped->note(key_word, line.substr(key_end));
+    const std::string_view key = line.substr(i, key_end - i);
+    const bool known = key == "v" || key == "f" || key == "vn" || key == "vt";
+    if (!known) {
+      dropped->note(key, line.substr(key_end));
       continue;
     }
-    if (key_end == line.size()) continue;  // a bare "v" or "f": tinyobjloader skips it
-    const char key = line[i];
-    const std::vector<std::string_view> w = split_blanks(line.substr(i + 2));
-    if (key == 'v') {
-      const int64_t v = static_cast<int64_t>(lines->vertex_line.size());
-      if (w.size() < 3) {
-        return line_error(name, line_no, "vertex " + std::to_string(v) + ": needs 3 coordinates, has " +
-                                             std::to_string(w.size()));
-      }
-      for (int c = 0; c < 3; ++c) {
-        double x;
-        if (!parse_real(w[c], &x)) {
-          return line_error(name, line_no, "vertex " + std::to_string(v) + ": bad coordinate '" + printable(w[c]) + "'");
-        }
-        if (!std::isfinite(x)) return line_error(name, line_no, "vertex " + std::to_string(v) + ": coordinate is not finite");
-      }
-      if (lines->vertex_line.size() >= static_cast<size_t>(INT32_MAX)) {
-        return line_error(name, line_no, "more than 2^31-1 vertices");
-      }
-      // tinyobjloader reads "v x y z w" and the common "v x y z r g b".
-      if (w.size() >= 6) {
-        ++dropped->colors;
-      } else if (w.size() >= 4) {
-        ++dropped->weights;
-      }
-      lines->vertex_line.push_back(line_no);
+    if (key_end == line.size()) continue;  // a bare keyword: tinyobjloader skips it
+    const std::vector<std::string_view> w = split_blanks(line.substr(key_end));
+    if (key == "v") {
+      GAB_RETURN_IF_ERROR(scan_vertex(w, name, line_no, lines, dropped));
+    } else if (key == "f") {
+      GAB_RETURN_IF_ERROR(scan_face(w, name, line_no, lines, dropped));
     } else {
-      const int64_t f = static_cast<int64_t>(lines->face_line.size());
-      if (w.size() < 3) {
-        return line_error(name, line_no, "face " + std::to_string(f) + " has " + std::to_string(w.size()) +
-                                             " vertices (need 3 or more)");
-      }
-      bool face_has[2] = {false, false};  // vt, vn indices
-      for (std::string_view corner : w) {
-        int64_t v;
-        bool has[2];
-        if (corner == "0" || corner.substr(0, 2) == "0/") {
-          return line_error(name, line_no, "face " + std::to_string(f) + ": vertex index 0 (OBJ indices start at 1)");
-        }
-        if (!parse_corner(corner, &v, has)) {
-          return line_error(name, line_no, "face " + std::to_string(f) + ": bad vertex index '" + printable(corner) + "'");
-        }
-        face_has[0] = face_has[0] || has[0];
-        face_has[1] = face_has[1] || has[1];
-      }
-      dropped->face_texcoords += face_has[0];
-      dropped->face_normals += face_has[1];
-      dropped->polygons += w.size() > 3;
-      lines->face_line.push_back(line_no);
+      GAB_RETURN_IF_ERROR(scan_element(w, key == "vt", name, line_no, key == "vt" ? &lines->texcoords : &lines->normals));
     }
   }
   return Status::Ok();
 }
+
+// The corners' elements of one kind of face index, in triangle order (-1:
+// the corner has none), and the faces without one.
+struct CornerIndices {
+  std::vector<int32_t> element;
+  int64_t faces_without = 0;
+  int64_t first_face_without = -1;
+  int64_t faces_with = 0;
+};
 
 // Receives tinyobjloader's callbacks; the first error wins and stops output.
 struct Collector {
   const std::string* name;
   const ObjLines* lines;
   Mesh mesh;
+  CornerIndices texcoords, normals;
   int64_t faces = 0;
   Status status;
 
@@ -216,6 +293,32 @@ struct Collector {
     c.mesh.positions.push_back(z);
   }
 
+  // The 0-based index of a raw OBJ index `raw` (1-based, or negative:
+  // relative to the `so_far` records before the face) into `total` records.
+  // An error names `what` ("vertex", "texture coordinate", "normal").
+  Status resolve(int64_t raw, int64_t so_far, int64_t total, int64_t f, int64_t line, const char* what,
+                 int32_t* out) const {
+    int64_t v;
+    if (raw > 0) {
+      // Absolute indices may point to records defined further down.
+      if (raw > total) {
+        return line_error(*name, line, "face " + std::to_string(f) + ": " + what + " index " + std::to_string(raw) +
+                                           " out of range [1, " + std::to_string(total) + "]");
+      }
+      v = raw - 1;
+    } else {
+      // Relative: -1 is the last record defined before this line.
+      v = so_far + raw;
+      if (v < 0) {
+        return line_error(*name, line, "face " + std::to_string(f) + ": relative " + what + " index " +
+                                           std::to_string(raw) + " reaches before the first " + what + " (" +
+                                           std::to_string(so_far) + " defined so far)");
+      }
+    }
+    *out = static_cast<int32_t>(v);
+    return Status::Ok();
+  }
+
   static void face(void* self, tinyobj::index_t* corners, int count) {
     Collector& c = *static_cast<Collector*>(self);
     const int64_t f = c.faces++;
@@ -224,45 +327,117 @@ struct Collector {
       c.status = Status::Error(StatusCode::kParseError, *c.name + ": tinyobjloader reported more faces than the file has");
       return;
     }
-    const int64_t line = c.lines->face_line[f];
-    const int64_t total = static_cast<int64_t>(c.lines->vertex_line.size());
-    const int64_t so_far = c.mesh.num_vertices();
-    int32_t first = 0, prev = 0;
+    c.status = c.add_face(f, corners, count);
+  }
+
+  Status add_face(int64_t f, const tinyobj::index_t* corners, int count) {
+    const int64_t line = lines->face_line[f];
+    bool has_texcoord = false, has_normal = false, lacks_texcoord = false, lacks_normal = false;
+    int32_t first[3] = {0, -1, -1}, prev[3] = {0, -1, -1};
     for (int k = 0; k < count; ++k) {
-      const int64_t raw = corners[k].vertex_index;
-      int64_t v;
-      if (raw > 0) {
-        // Absolute indices may point to vertices defined further down.
-        if (raw > total) {
-          c.status = line_error(*c.name, line, "face " + std::to_string(f) + ": vertex index " + std::to_string(raw) +
-                                                   " out of range [1, " + std::to_string(total) + "]");
-          return;
-        }
-        v = raw - 1;
-      } else {
-        // Relative: -1 is the last vertex defined before this line.
-        v = so_far + raw;
-        if (raw == 0 || v < 0) {
-          c.status = line_error(*c.name, line, "face " + std::to_string(f) + ": relative vertex index " +
-                                                   std::to_string(raw) + " reaches before the first vertex (" +
-                                                   std::to_string(so_far) + " defined so far)");
-          return;
-        }
+      int32_t idx[3] = {0, -1, -1};  // v, vt, vn
+      GAB_RETURN_IF_ERROR(resolve(corners[k].vertex_index, mesh.num_vertices(),
+                                  static_cast<int64_t>(lines->vertex_line.size()), f, line, "vertex", &idx[0]));
+      if (corners[k].texcoord_index != 0) {
+        GAB_RETURN_IF_ERROR(resolve(corners[k].texcoord_index, lines->texcoords.before[f], lines->texcoords.count(), f,
+                                    line, "texture coordinate", &idx[1]));
       }
-      const int32_t idx = static_cast<int32_t>(v);
-      if (k == 0) first = idx;
+      if (corners[k].normal_index != 0) {
+        GAB_RETURN_IF_ERROR(resolve(corners[k].normal_index, lines->normals.before[f], lines->normals.count(), f, line,
+                                    "normal", &idx[2]));
+      }
+      (idx[1] >= 0 ? has_texcoord : lacks_texcoord) = true;
+      (idx[2] >= 0 ? has_normal : lacks_normal) = true;
+      if (k == 0) std::copy(idx, idx + 3, first);
       if (k >= 2) {
-        c.mesh.triangles.push_back(first);
-        c.mesh.triangles.push_back(prev);
-        c.mesh.triangles.push_back(idx);
+        // Fan triangulation (c0, c_{k-1}, c_k): each corner keeps its own vt and vn.
+        for (const int32_t* corner : {first, prev, idx}) {
+          mesh.triangles.push_back(corner[0]);
+          texcoords.element.push_back(corner[1]);
+          normals.element.push_back(corner[2]);
+        }
       }
-      prev = idx;
+      std::copy(idx, idx + 3, prev);
     }
-    if (c.mesh.triangles.size() / 3 > static_cast<size_t>(INT32_MAX)) {
-      c.status = line_error(*c.name, line, "more than 2^31-1 triangles");
-    }
+    count_face(has_texcoord, lacks_texcoord, f, &texcoords);
+    count_face(has_normal, lacks_normal, f, &normals);
+    if (mesh.triangles.size() / 3 > static_cast<size_t>(INT32_MAX)) return line_error(*name, line, "more than 2^31-1 triangles");
+    return Status::Ok();
+  }
+
+  static void count_face(bool has, bool lacks, int64_t f, CornerIndices* c) {
+    c->faces_with += has;
+    if (!lacks) return;
+    if (c->faces_without++ == 0) c->first_face_without = f;
   }
 };
+
+// The normals or texture coordinates, per corner, when the faces refer to
+// them; what is not carried is noted. Corners without an index (faces that
+// have none where others have them) refer to one element added after the
+// file's, all zeros, and a warning says so.
+void add_corner_attribute(AttributeKind kind, const ObjElements& records, CornerIndices* corners,
+                          const ObjLines& lines, const std::string& name, Mesh* mesh, MeshReadNotes* notes) {
+  const bool texcoord = kind == AttributeKind::kTexCoord;
+  const std::string words = texcoord ? "texture coordinates (vt" : "normals (vn";
+  const std::string key = texcoord ? "texture_coordinates" : "normals";
+  if (corners->faces_with == 0) {
+    notes->drop(key, words + "; no face refers to them)", records.count());
+    return;
+  }
+  if (records.first_not_finite != 0) {
+    notes->drop(key, words + "; line " + std::to_string(records.first_not_finite) + " has a value that is not finite)",
+                records.count());
+    return;
+  }
+  MeshAttribute a;
+  a.kind = kind;
+  // vt: u v, with w only when one is nonzero.
+  a.components = 3;
+  if (texcoord) {
+    bool any_w = false;
+    for (size_t i = 2; i < records.values.size(); i += 3) any_w = any_w || records.values[i] != 0.0;
+    a.components = any_w ? 3 : 2;
+  }
+  const size_t k = static_cast<size_t>(a.components);
+  a.values.reserve(records.values.size() / 3 * k + k);
+  for (size_t i = 0; i < records.values.size(); i += 3) a.values.insert(a.values.end(), &records.values[i], &records.values[i] + k);
+  a.corners = std::move(corners->element);
+  if (corners->faces_without > 0) {
+    const int32_t added = static_cast<int32_t>(records.count());
+    a.values.insert(a.values.end(), k, 0.0);
+    for (int32_t& e : a.corners) e = e < 0 ? added : e;
+    notes->warn(name + ":" + std::to_string(lines.face_line[corners->first_face_without]) + ": " +
+                std::to_string(corners->faces_without) + " faces have no " + (texcoord ? "vt" : "vn") +
+                " index; their corners refer to " + (texcoord ? "texture coordinate " : "normal ") +
+                std::to_string(added + 1) + " (all zeros), added after the file's " + std::to_string(added));
+  }
+  a.type = mesh_detail::settle_decimal_values(&a.values);
+  mesh->attributes.push_back(std::move(a));
+}
+
+// Per-vertex colours when every vertex has them; else noted.
+void add_colors(const ObjLines& lines, Mesh* mesh, MeshReadNotes* notes) {
+  const int64_t colored = static_cast<int64_t>(lines.colors.size() / 3);
+  if (colored == 0) return;
+  if (colored != mesh->num_vertices()) {
+    notes->drop("vertex_colors", "vertex colours (v x y z r g b; not on every vertex)", colored);
+    return;
+  }
+  if (lines.colors_not_finite != 0) {
+    notes->drop("vertex_colors",
+                "vertex colours (v x y z r g b; line " + std::to_string(lines.colors_not_finite) +
+                    " has a value that is not finite)",
+                colored);
+    return;
+  }
+  MeshAttribute a;
+  a.kind = AttributeKind::kColor;
+  a.components = 3;
+  a.values = lines.colors;
+  a.type = mesh_detail::settle_decimal_values(&a.values);
+  mesh->attributes.push_back(std::move(a));
+}
 
 }  // namespace
 
@@ -306,11 +481,13 @@ Status parse_obj(std::string_view text, const std::string& name, Mesh* mesh, Mes
                         "vertex " + std::to_string(i / 3) + ": coordinate overflows tinyobjloader's number parser");
     }
   }
+  MeshReadNotes seen;
+  add_corner_attribute(AttributeKind::kNormal, lines.normals, &c.normals, lines, name, &c.mesh, &seen);
+  add_corner_attribute(AttributeKind::kTexCoord, lines.texcoords, &c.texcoords, lines, name, &c.mesh, &seen);
+  add_colors(lines, &c.mesh, &seen);
+  dropped.report(&seen);
   *mesh = std::move(c.mesh);
-  if (notes != nullptr) {
-    *notes = MeshReadNotes();
-    dropped.report(notes);
-  }
+  if (notes != nullptr) *notes = std::move(seen);
   return Status::Ok();
 }
 
@@ -318,30 +495,6 @@ Status read_obj(const std::string& path, Mesh* mesh, MeshReadNotes* notes) {
   std::string bytes;
   GAB_RETURN_IF_ERROR(read_file(path, &bytes));
   return parse_obj(bytes, path, mesh, notes);
-}
-
-std::string format_obj(const Mesh& mesh) {
-  std::string out = "# written by gab\n";
-  out.reserve(out.size() + static_cast<size_t>(mesh.num_vertices()) * (2 + 3 * (mesh_detail::kMaxRealChars + 1)) +
-              static_cast<size_t>(mesh.num_triangles()) * (2 + 3 * (mesh_detail::kMaxIndexChars + 1)));
-  for (size_t i = 0; i < mesh.positions.size(); ++i) {
-    if (i % 3 == 0) out += "v";
-    out += ' ';
-    mesh_detail::append_real(&out, mesh.positions[i]);
-    if (i % 3 == 2) out += '\n';
-  }
-  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-    if (t % 3 == 0) out += "f";
-    out += ' ';
-    mesh_detail::append_int(&out, static_cast<int64_t>(mesh.triangles[t]) + 1);
-    if (t % 3 == 2) out += '\n';
-  }
-  return out;
-}
-
-Status write_obj(const std::string& path, const Mesh& mesh) {
-  GAB_RETURN_IF_ERROR(validate_mesh(mesh, path));
-  return write_output_file(path, format_obj(mesh));
 }
 
 }  // namespace gab

@@ -1,11 +1,14 @@
-// OFF reader and writer. The format is free-form text (Geomview's OFF(5)
-// manual page): a record may span lines, so the parser walks tokens while
-// counting lines for its messages; optional per-vertex and per-face extras
-// sit at the end of a record's line and are skipped with the line.
+// OFF reader. The format is free-form text (Geomview's OFF(5) manual
+// page): a record may span lines, so the parser walks tokens while counting
+// lines for its messages. The per-vertex data the header's prefixes announce
+// (normals, a colour, texture coordinates) sits on the vertex's line after
+// its coordinates, and a colour has 3 or 4 values, so those are read by
+// line; a face's colour after its indices is skipped with the line.
 #include "gab/mesh/off_io.h"
 
 #include <cmath>
 
+#include "attribute_text.h"
 #include "gab/mesh/file_io.h"
 #include "text_scanner.h"
 
@@ -38,13 +41,108 @@ bool parse_keyword(std::string_view key, OffHeader* h) {
   return key.substr(i) == "OFF";
 }
 
-// The vertex extras the header announces, as dropped data: each vertex
-// carries one of each.
-void note_vertex_extras(const OffHeader& h, std::string_view keyword, int64_t nv, MeshReadNotes* notes) {
-  const std::string form = "(" + std::string(keyword) + ")";
-  if (h.normals) notes->drop("normals", "normals " + form, nv);
-  if (h.texture) notes->drop("texture_coordinates", "texture coordinates " + form, nv);
-  if (h.colors) notes->drop("vertex_colors", "vertex colours " + form, nv);
+// The per-vertex data the header announces, as read: x y z [nx ny nz]
+// [r g b [a]] [s t] on each vertex's line.
+struct OffVertexData {
+  std::vector<double> normals, colors, texcoords;
+  int color_components = 0;                 // 3 or 4, as the first vertex says
+  bool colors_integers = true;              // every colour value an integer token in 0..255
+  bool colors_above_one = false;            // some colour value above 1
+  int64_t not_finite_line[3] = {0, 0, 0};   // normals, colours, texture coordinates: first line with one
+};
+
+// The values a vertex line has after its coordinates, for messages: "nx ny nz r g b [a] s t".
+std::string layout(const OffHeader& h) {
+  std::string out;
+  if (h.normals) out += "nx ny nz";
+  if (h.colors) out += std::string(out.empty() ? "" : " ") + "r g b [a]";
+  if (h.texture) out += std::string(out.empty() ? "" : " ") + "s t";
+  return out;
+}
+
+// Reads the rest of vertex v's line into `data`.
+Status read_vertex_data(const OffHeader& h, std::string_view keyword, int64_t v, TextScanner* tok,
+                        std::vector<std::string_view>* words, OffVertexData* data) {
+  words->clear();
+  std::string_view t;
+  while (!tok->at_line_end() && tok->next(&t)) words->push_back(t);
+  const size_t fixed = (h.normals ? 3 : 0) + (h.texture ? 2 : 0);
+  const size_t n = words->size();
+  const bool count_ok = h.colors ? n == fixed + 3 || n == fixed + 4 : n == fixed;
+  const std::string vertex = "vertex " + std::to_string(v);
+  if (!count_ok) {
+    const std::string need = h.colors ? std::to_string(fixed + 3) + " or " + std::to_string(fixed + 4) : std::to_string(fixed);
+    return tok->error_here(vertex + ": " + std::to_string(n) + " values after the coordinates, " + printable(keyword) +
+                           " needs " + need + " (" + layout(h) + ")");
+  }
+  const int color_components = h.colors ? static_cast<int>(n - fixed) : 0;
+  if (h.colors && data->color_components == 0) data->color_components = color_components;
+  if (color_components != data->color_components) {
+    return tok->error_here(vertex + ": " + std::to_string(color_components) + " colour values where vertex 0 has " +
+                           std::to_string(data->color_components));
+  }
+  size_t at = 0;
+  auto take = [&](size_t count, std::vector<double>* out, int kind, const char* what) -> Status {
+    for (size_t i = 0; i < count; ++i, ++at) {
+      double x;
+      if (!parse_real((*words)[at], &x)) {
+        return tok->error_here(vertex + ": bad " + what + " '" + printable((*words)[at]) + "'");
+      }
+      if (!std::isfinite(x) && data->not_finite_line[kind] == 0) data->not_finite_line[kind] = tok->line();
+      if (kind == 1) {
+        int64_t i64;
+        data->colors_integers = data->colors_integers && parse_int((*words)[at], &i64) && i64 >= 0 && i64 <= 255;
+        data->colors_above_one = data->colors_above_one || x > 1;
+      }
+      out->push_back(x);
+    }
+    return Status::Ok();
+  };
+  if (h.normals) GAB_RETURN_IF_ERROR(take(3, &data->normals, 0, "normal value"));
+  if (h.colors) GAB_RETURN_IF_ERROR(take(static_cast<size_t>(color_components), &data->colors, 1, "colour value"));
+  if (h.texture) GAB_RETURN_IF_ERROR(take(2, &data->texcoords, 2, "texture coordinate"));
+  return Status::Ok();
+}
+
+// The attributes from `data`, in the order normals, colours, texture
+// coordinates; one with a value that is not finite is noted instead.
+void add_vertex_data(const OffHeader& h, std::string_view keyword, OffVertexData* data, int64_t nv, Mesh* mesh,
+                     MeshReadNotes* notes) {
+  struct Part {
+    bool present;
+    AttributeKind kind;
+    std::vector<double>* values;
+    int components;
+    const char* key;
+    const char* words;
+  };
+  const Part parts[3] = {
+      {h.normals, AttributeKind::kNormal, &data->normals, 3, "normals", "normals"},
+      {h.colors, AttributeKind::kColor, &data->colors, data->color_components, "vertex_colors", "vertex colours"},
+      {h.texture, AttributeKind::kTexCoord, &data->texcoords, 2, "texture_coordinates", "texture coordinates"},
+  };
+  for (int i = 0; i < 3; ++i) {
+    const Part& p = parts[i];
+    if (!p.present) continue;
+    if (data->not_finite_line[i] != 0) {
+      notes->drop(p.key, std::string(p.words) + " (" + printable(keyword) + "; line " +
+                             std::to_string(data->not_finite_line[i]) + " has a value that is not finite)",
+                  nv);
+      continue;
+    }
+    MeshAttribute a;
+    a.kind = p.kind;
+    a.components = p.components;
+    a.values = std::move(*p.values);
+    // Colours are integers 0..255 when every value is one and some is above
+    // 1 (Geomview reads a colour with no value above 1 as fractions).
+    if (p.kind == AttributeKind::kColor && data->colors_integers && data->colors_above_one) {
+      a.type = ValueType::kUint8;
+    } else {
+      a.type = mesh_detail::settle_decimal_values(&a.values);
+    }
+    mesh->attributes.push_back(std::move(a));
+  }
 }
 
 }  // namespace
@@ -85,7 +183,11 @@ Status parse_off(std::string_view text, const std::string& name, Mesh* mesh, Mes
   if (nv > INT32_MAX) return tok.error("more than 2^31-1 vertices");
 
   MeshReadNotes seen;
-  note_vertex_extras(h, printable(t0), nv, &seen);
+  OffVertexData data;
+  if (h.normals) data.normals.reserve(static_cast<size_t>(nv) * 3);
+  if (h.colors) data.colors.reserve(static_cast<size_t>(nv) * 3);
+  if (h.texture) data.texcoords.reserve(static_cast<size_t>(nv) * 2);
+  std::vector<std::string_view> words;
   Mesh m;
   m.positions.resize(static_cast<size_t>(nv) * 3);
   const int dims = h.homogeneous ? 4 : 3;
@@ -109,7 +211,10 @@ Status parse_off(std::string_view text, const std::string& name, Mesh* mesh, Mes
       }
     }
     for (int c = 0; c < 3; ++c) m.positions[static_cast<size_t>(v) * 3 + c] = x[c];
-    if (vertex_extras) tok.skip_line();
+    if (vertex_extras) {
+      GAB_RETURN_IF_ERROR(read_vertex_data(h, t0, v, &tok, &words, &data));
+      tok.skip_line();
+    }
   }
 
   m.triangles.reserve(static_cast<size_t>(nf) * 3);
@@ -157,6 +262,7 @@ Status parse_off(std::string_view text, const std::string& name, Mesh* mesh, Mes
     if (!tok.at_line_end()) ++face_colors;  // OFF(5): a colour may follow the indices
     tok.skip_line();
   }
+  add_vertex_data(h, t0, &data, nv, &m, &seen);
   seen.drop("polygons", "polygons of 4 or more corners (fan-triangulated)", polygons);
   seen.drop("face_colors", "face colours (after the indices)", face_colors);
   *mesh = std::move(m);
@@ -168,35 +274,6 @@ Status read_off(const std::string& path, Mesh* mesh, MeshReadNotes* notes) {
   std::string bytes;
   GAB_RETURN_IF_ERROR(read_file(path, &bytes));
   return parse_off(bytes, path, mesh, notes);
-}
-
-std::string format_off(const Mesh& mesh) {
-  using mesh_detail::append_int;
-  using mesh_detail::append_real;
-  std::string out = "OFF\n";
-  out.reserve(64 + mesh.positions.size() * (mesh_detail::kMaxRealChars + 1) +
-              static_cast<size_t>(mesh.num_triangles()) * (2 + 3 * (mesh_detail::kMaxIndexChars + 1)));
-  append_int(&out, mesh.num_vertices());
-  out += ' ';
-  append_int(&out, mesh.num_triangles());
-  out += " 0\n";
-  for (size_t i = 0; i < mesh.positions.size(); ++i) {
-    append_real(&out, mesh.positions[i]);
-    out += i % 3 == 2 ? '\n' : ' ';
-  }
-  for (size_t i = 0; i < mesh.triangles.size(); i += 3) {
-    out += "3 ";
-    for (int c = 0; c < 3; ++c) {
-      append_int(&out, mesh.triangles[i + c]);
-      out += c == 2 ? '\n' : ' ';
-    }
-  }
-  return out;
-}
-
-Status write_off(const std::string& path, const Mesh& mesh) {
-  GAB_RETURN_IF_ERROR(validate_mesh(mesh, path));
-  return write_output_file(path, format_off(mesh));
 }
 
 }  // namespace gab

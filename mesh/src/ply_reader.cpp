@@ -2,11 +2,17 @@
 // encodings; a Source (binary cursor or ASCII token scanner) supplies the
 // values, so the checks and the messages are written once. Every count is
 // checked against the bytes that remain before anything is sized from it.
+// The properties kept as attributes are planned from the header
+// (ply_attributes.h); their values are checked as they come, and an
+// attribute with one it cannot keep is noted as dropped, not an error.
 #include <cmath>
 #include <cstring>
+#include <unordered_map>
 
 #include "gab/mesh/file_io.h"
 #include "gab/mesh/ply_io.h"
+#include "attribute_text.h"
+#include "ply_attributes.h"
 #include "ply_header.h"
 #include "text_scanner.h"
 
@@ -142,6 +148,7 @@ struct Roles {
   int xyz[3] = {-1, -1, -1};  // its x, y, z properties
   int face = -1, face_list = -1;
   int strips = -1, strips_list = -1;
+  mesh_detail::PlyAttributes attributes;  // the properties kept as attributes
 };
 
 int index_list(const PlyElement& e) {
@@ -153,27 +160,21 @@ Status header_error(const std::string& name, int64_t line, const std::string& wh
   return Status::Error(StatusCode::kParseError, name + ":" + std::to_string(line) + ": " + what);
 }
 
-// The common names of per-vertex data a Mesh does not carry: key, label,
-// the property names that make it.
-struct VertexDataKind {
-  const char* key;
-  const char* label;
-  std::vector<const char*> names;
-};
-
-const std::vector<VertexDataKind>& vertex_data_kinds() {
-  static const std::vector<VertexDataKind> kinds = {
-      {"normals", "normals", {"nx", "ny", "nz"}},
-      {"texture_coordinates", "texture coordinates", {"s", "t", "u", "v", "texture_u", "texture_v", "texture_s", "texture_t"}},
-      {"vertex_colors", "vertex colours", {"red", "green", "blue", "alpha"}},
-  };
-  return kinds;
+// Face colours: the names a face property of colour may have.
+bool is_color_name(const std::string& p) {
+  for (const char* n : {"red", "green", "blue", "alpha", "r", "g", "b", "a", "diffuse_red", "diffuse_green",
+                        "diffuse_blue", "diffuse_alpha"}) {
+    if (p == n) return true;
+  }
+  return false;
 }
 
 // What the header declares that the decoder skips, into `notes`: vertex
-// properties other than x y z (by common kind, else by name), face and
-// strip properties other than the index list (colours by kind), other
-// elements by name. Counts are the elements that carry the data.
+// properties that are no attribute's (past kMaxMeshAttributes, or named as
+// no attribute can be), by name; face and strip properties other than the
+// index list and the per-corner texture coordinates (colours together,
+// others by name); other elements by name. Counts are the elements that
+// carry the data.
 void note_skipped(const PlyHeader& h, const Roles& roles, MeshReadNotes* notes) {
   for (size_t ei = 0; ei < h.elements.size(); ++ei) {
     const PlyElement& e = h.elements[ei];
@@ -183,37 +184,21 @@ void note_skipped(const PlyHeader& h, const Roles& roles, MeshReadNotes* notes) 
       continue;
     }
     const int kept = index == roles.face ? roles.face_list : index == roles.strips ? roles.strips_list : -1;
-    std::vector<std::string> kind_names(vertex_data_kinds().size());  // the names seen of each kind
-    std::vector<int> named;                                          // the others, by name
+    const std::vector<mesh_detail::PlySlot>* slots =
+        index == roles.vertex ? &roles.attributes.vertex : index == roles.face ? &roles.attributes.face : nullptr;
+    std::string color_names;  // a face's colour properties
+    std::vector<int> named;   // the others, by name
     for (size_t pi = 0; pi < e.properties.size(); ++pi) {
-      const std::string& p = e.properties[pi].name;
-      if (static_cast<int>(pi) == kept) continue;
-      if (index == roles.vertex && (static_cast<int>(pi) == roles.xyz[0] || static_cast<int>(pi) == roles.xyz[1] ||
-                                    static_cast<int>(pi) == roles.xyz[2])) {
-        continue;
-      }
-      bool grouped = false;
-      for (size_t k = 0; k < vertex_data_kinds().size() && !grouped; ++k) {
-        // Faces have colours too; their normals or UVs would be odd enough to name.
-        if (index != roles.vertex && k != 2) continue;
-        for (const char* n : vertex_data_kinds()[k].names) {
-          if (p != n) continue;
-          kind_names[k] += (kind_names[k].empty() ? "" : " ") + p;
-          grouped = true;
-          break;
-        }
-      }
-      if (!grouped) named.push_back(static_cast<int>(pi));
-    }
-    for (size_t k = 0; k < kind_names.size(); ++k) {
-      if (kind_names[k].empty()) continue;
-      const VertexDataKind& kind = vertex_data_kinds()[k];
-      if (index == roles.vertex) {
-        notes->drop(kind.key, std::string(kind.label) + " (" + kind_names[k] + ")", e.count);
+      const int p = static_cast<int>(pi);
+      if (p == kept || (slots != nullptr && !slots->empty() && (*slots)[pi].plan >= 0)) continue;
+      if (index == roles.vertex && (p == roles.xyz[0] || p == roles.xyz[1] || p == roles.xyz[2])) continue;
+      if (index != roles.vertex && is_color_name(e.properties[pi].name)) {
+        color_names += (color_names.empty() ? "" : " ") + e.properties[pi].name;
       } else {
-        notes->drop("face_colors", printable(e.name) + " colours (" + kind_names[k] + ")", e.count);
+        named.push_back(p);
       }
     }
+    if (!color_names.empty()) notes->drop("face_colors", printable(e.name) + " colours (" + color_names + ")", e.count);
     for (int pi : named) {
       const std::string p = printable(e.properties[pi].name);
       notes->drop(printable(e.name) + "." + p, printable(e.name) + " property '" + p + "'", e.count);
@@ -273,10 +258,31 @@ Status plan(const PlyHeader& h, size_t body_size, const std::string& name, Roles
     }
     need += static_cast<uint64_t>(e.count) * min_bytes;
   }
+  roles->attributes = mesh_detail::plan_ply_attributes(h, roles->vertex, roles->xyz, roles->face, roles->strips >= 0);
   return Status::Ok();
 }
 
 constexpr size_t kMaxTriangleIndices = static_cast<size_t>(INT32_MAX) / 3 * 3;
+
+// One planned attribute's values as the body gives them, or why they
+// cannot be kept (the first problem met; the rest of its values are read
+// and ignored).
+struct AttributeValues {
+  int32_t components = 0;
+  std::vector<double> values;
+  std::vector<int32_t> corners;  // per corner (the faces' texcoord lists)
+  std::string problem;
+};
+
+// Per-corner texture coordinates: equal (u, v) pairs share an element, so
+// that a vertex whose corners agree is no seam.
+struct UvKey {
+  uint64_t u, v;
+  bool operator==(const UvKey& o) const { return u == o.u && v == o.v; }
+};
+struct UvKeyHash {
+  size_t operator()(const UvKey& k) const { return std::hash<uint64_t>()(k.u * 0x9E3779B97F4A7C15ull ^ k.v); }
+};
 
 template <class Source>
 class BodyDecoder {
@@ -289,11 +295,22 @@ class BodyDecoder {
   Status run() {
     m_.positions.assign(static_cast<size_t>(nv_) * 3, 0.0);
     if (roles_.face >= 0) m_.triangles.reserve(static_cast<size_t>(h_.elements[roles_.face].count) * 3);
+    const std::vector<mesh_detail::PlyAttributePlan>& plans = roles_.attributes.plans;
+    values_.resize(plans.size());
+    for (size_t a = 0; a < plans.size(); ++a) {
+      values_[a].components = plans[a].attribute.components;
+      if (!plans[a].list && !is_face_plan(static_cast<int>(a))) {
+        values_[a].values.assign(static_cast<size_t>(nv_) * static_cast<size_t>(values_[a].components), 0.0);
+      }
+    }
     for (size_t ei = 0; ei < h_.elements.size(); ++ei) {
       const PlyElement& e = h_.elements[ei];
       if (e.properties.empty()) continue;  // nothing stored; the count costs no bytes
+      const bool is_face = static_cast<int>(ei) == roles_.face;
       for (int64_t i = 0; i < e.count; ++i) {
         double xyz[3] = {0, 0, 0};
+        polygon_.clear();
+        uv_.clear();
         for (size_t pi = 0; pi < e.properties.size(); ++pi) {
           const PlyProperty& p = e.properties[pi];
           Status s = p.is_list ? list(e, static_cast<int>(ei), i, static_cast<int>(pi))
@@ -306,11 +323,35 @@ class BodyDecoder {
             m_.positions[static_cast<size_t>(i) * 3 + c] = xyz[c];
           }
         }
+        if (is_face) GAB_RETURN_IF_ERROR(finish_face(e, i));
       }
     }
     if (m_.triangles.empty()) return Status::Error(StatusCode::kParseError, name_ + ": mesh has no faces");
     return Status::Ok();
   }
+
+  // The attributes into the mesh, in plan order; the ones with a problem
+  // into `notes` instead.
+  void finish(MeshReadNotes* notes) {
+    const std::vector<mesh_detail::PlyAttributePlan>& plans = roles_.attributes.plans;
+    for (size_t a = 0; a < plans.size(); ++a) {
+      const mesh_detail::PlyAttributePlan& plan = plans[a];
+      AttributeValues& v = values_[a];
+      if (!v.problem.empty()) {
+        const bool open = !plan.label.empty() && plan.label.back() == '(';
+        const int64_t count = is_face_plan(static_cast<int>(a)) ? h_.elements[roles_.face].count : nv_;
+        notes->drop(plan.key, plan.label + (open ? "" : "; ") + v.problem + ")", count);
+        continue;
+      }
+      MeshAttribute attribute = plan.attribute;
+      attribute.components = v.components;
+      attribute.values = std::move(v.values);
+      attribute.corners = std::move(v.corners);
+      m_.attributes.push_back(std::move(attribute));
+    }
+  }
+
+  int64_t polygons() const { return polygons_; }
 
  private:
   Status fail(const PlyElement& e, int64_t i, const std::string& what) const {
@@ -324,6 +365,35 @@ class BodyDecoder {
     return fail(e, i, "bad value '" + src_.last_token() + "' for property '" + printable(p.name) + "'");
   }
 
+  bool is_face_plan(int plan) const {
+    for (const mesh_detail::PlySlot& s : roles_.attributes.face) {
+      if (s.plan == plan) return true;
+    }
+    return false;
+  }
+
+  // Reads one value of property `p` for an attribute into *x; `problem`
+  // gets why the attribute cannot keep it (a value that is not finite, or
+  // an ASCII value its declared type cannot hold), unless it has one.
+  Status attribute_value(const PlyElement& e, int64_t i, const PlyProperty& p, AttributeValues* a, double* x) {
+    const Read r = src_.real(p.type, x);
+    if (r != Read::kOk) return end_or_bad(r, e, i, p);
+    if (!a->problem.empty()) return Status::Ok();
+    const std::string where = printable(e.name) + " " + std::to_string(i) + ": ";
+    if (!std::isfinite(*x)) {
+      a->problem = where + "a value that is not finite";
+    } else if (p.type == PlyType::kFloat32) {
+      if (!mesh_detail::round_to_float(*x, x)) a->problem = where + "a value beyond float's range";
+    } else if (ply_type_is_integral(p.type)) {
+      double lo, hi;
+      value_type_range(mesh_detail::value_type(p.type), &lo, &hi);
+      if (*x < lo || *x > hi || *x != std::floor(*x)) {
+        a->problem = where + "a value that is not a " + mesh_detail::ply_type_name(mesh_detail::value_type(p.type));
+      }
+    }
+    return Status::Ok();
+  }
+
   Status scalar(const PlyElement& e, int ei, int64_t i, int pi, double* xyz) {
     const PlyProperty& p = e.properties[pi];
     if (ei == roles_.vertex) {
@@ -332,9 +402,39 @@ class BodyDecoder {
         const Read r = src_.real(p.type, &xyz[c]);
         return r == Read::kOk ? Status::Ok() : end_or_bad(r, e, i, p);
       }
+      const mesh_detail::PlySlot slot = roles_.attributes.vertex[pi];
+      if (slot.plan >= 0) {
+        AttributeValues& a = values_[slot.plan];
+        double x;
+        GAB_RETURN_IF_ERROR(attribute_value(e, i, p, &a, &x));
+        if (a.problem.empty()) a.values[static_cast<size_t>(i) * a.components + slot.component] = x;
+        return Status::Ok();
+      }
     }
     const Read r = src_.skip(p.type, 1);
     return r == Read::kOk ? Status::Ok() : end_or_bad(r, e, i, p);
+  }
+
+  // A vertex list property kept as a generic of as many components as the
+  // first vertex's list has items (1 to 4): every vertex must have as many.
+  Status vertex_list(const PlyElement& e, int64_t i, const PlyProperty& p, int64_t count, AttributeValues* a) {
+    if (a->problem.empty()) {
+      if (i == 0 && (count < 1 || count > 4)) {
+        a->problem = "vertex 0: " + std::to_string(count) + " items (a generic attribute holds 1 to 4)";
+      } else if (i == 0) {
+        a->components = static_cast<int32_t>(count);
+        a->values.assign(static_cast<size_t>(nv_) * static_cast<size_t>(count), 0.0);
+      } else if (count != a->components) {
+        a->problem = "vertex " + std::to_string(i) + ": " + std::to_string(count) + " items where vertex 0 has " +
+                     std::to_string(a->components);
+      }
+    }
+    for (int64_t k = 0; k < count; ++k) {
+      double x;
+      GAB_RETURN_IF_ERROR(attribute_value(e, i, p, a, &x));
+      if (a->problem.empty()) a->values[static_cast<size_t>(i * a->components + k)] = x;
+    }
+    return Status::Ok();
   }
 
   Status list(const PlyElement& e, int ei, int64_t i, int pi) {
@@ -348,6 +448,18 @@ class BodyDecoder {
     }
     const bool is_face = ei == roles_.face && pi == roles_.face_list;
     const bool is_strip = ei == roles_.strips && pi == roles_.strips_list;
+    if (ei == roles_.vertex && roles_.attributes.vertex[pi].plan >= 0) {
+      return vertex_list(e, i, p, count, &values_[roles_.attributes.vertex[pi].plan]);
+    }
+    if (ei == roles_.face && !roles_.attributes.face.empty() && roles_.attributes.face[pi].plan >= 0) {
+      AttributeValues& a = values_[roles_.attributes.face[pi].plan];
+      for (int64_t k = 0; k < count; ++k) {
+        double x;
+        GAB_RETURN_IF_ERROR(attribute_value(e, i, p, &a, &x));
+        uv_.push_back(x);
+      }
+      return Status::Ok();
+    }
     if (!is_face && !is_strip) {
       r = src_.skip(p.type, count);
       return r == Read::kOk ? Status::Ok() : end_or_bad(r, e, i, p);
@@ -357,8 +469,8 @@ class BodyDecoder {
                                                         std::to_string(count) + " vertices (need 3 or more)");
     }
     if (is_face && count > 3) ++polygons_;
-    int32_t first = 0, a = 0, b = 0;  // fan origin / the strip's previous two
-    int64_t run = 0;                   // position in the current strip
+    int32_t a = 0, b = 0;  // the strip's previous two
+    int64_t run = 0;       // position in the current strip
     for (int64_t k = 0; k < count; ++k) {
       int64_t v;
       r = src_.integer(p.type, &v);
@@ -373,28 +485,60 @@ class BodyDecoder {
       }
       const int32_t c = static_cast<int32_t>(v);
       if (is_face) {
-        if (k == 0) first = c;
-        if (k >= 2) push(first, b, c);
-        b = c;
-      } else {
-        // Strip triangle j = run - 2 is (s_j, s_j+1, s_j+2) for even j and
-        // (s_j+1, s_j, s_j+2) for odd j, so all faces share one orientation.
-        // Repeated vertices are a strip's way of turning or stitching, not
-        // faces: drop those zero-area triangles.
-        if (run >= 2 && a != b && b != c && a != c) {
-          if ((run - 2) % 2 == 0) {
-            push(a, b, c);
-          } else {
-            push(b, a, c);
-          }
-        }
-        a = b;
-        b = c;
-        ++run;
+        polygon_.push_back(c);  // triangulated with its texture coordinates at the face's end
+        continue;
       }
+      // Strip triangle j = run - 2 is (s_j, s_j+1, s_j+2) for even j and
+      // (s_j+1, s_j, s_j+2) for odd j, so all faces share one orientation.
+      // Repeated vertices are a strip's way of turning or stitching, not
+      // faces: drop those zero-area triangles.
+      if (run >= 2 && a != b && b != c && a != c) {
+        if ((run - 2) % 2 == 0) {
+          push(a, b, c);
+        } else {
+          push(b, a, c);
+        }
+      }
+      a = b;
+      b = c;
+      ++run;
       if (m_.triangles.size() > kMaxTriangleIndices) return fail(e, i, "more than 2^31-1 triangles");
     }
     return Status::Ok();
+  }
+
+  // Face i's polygon fan-triangulated (v0, v_{k-1}, v_k); with per-corner
+  // texture coordinates, each triangle corner gets its polygon corner's.
+  Status finish_face(const PlyElement& e, int64_t i) {
+    const size_t k = polygon_.size();
+    for (size_t c = 2; c < k; ++c) push(polygon_[0], polygon_[c - 1], polygon_[c]);
+    if (m_.triangles.size() > kMaxTriangleIndices) return fail(e, i, "more than 2^31-1 triangles");
+    for (const mesh_detail::PlySlot& s : roles_.attributes.face) {
+      if (s.plan < 0) continue;
+      AttributeValues& a = values_[s.plan];
+      if (!a.problem.empty()) continue;
+      if (uv_.size() != 2 * k) {
+        a.problem = "face " + std::to_string(i) + ": " + std::to_string(uv_.size()) + " values for " +
+                    std::to_string(k) + " corners";
+        continue;
+      }
+      for (size_t c = 2; c < k; ++c) {
+        for (size_t corner : {size_t{0}, c - 1, c}) a.corners.push_back(uv_element(&a, uv_[2 * corner], uv_[2 * corner + 1]));
+      }
+    }
+    return Status::Ok();
+  }
+
+  int32_t uv_element(AttributeValues* a, double u, double v) {
+    UvKey key;
+    std::memcpy(&key.u, &u, sizeof(u));
+    std::memcpy(&key.v, &v, sizeof(v));
+    const auto found = uv_elements_.emplace(key, static_cast<int32_t>(a->values.size() / 2));
+    if (found.second) {
+      a->values.push_back(u);
+      a->values.push_back(v);
+    }
+    return found.first->second;
   }
 
   void push(int32_t a, int32_t b, int32_t c) {
@@ -403,18 +547,17 @@ class BodyDecoder {
     m_.triangles.push_back(c);
   }
 
-
- public:
-  int64_t polygons() const { return polygons_; }
-
- private:
   Source& src_;
   const PlyHeader& h_;
   const Roles& roles_;
   const std::string& name_;
   Mesh& m_;
   int64_t nv_ = 0;
-  int64_t polygons_ = 0;  // faces of 4 or more corners
+  int64_t polygons_ = 0;              // faces of 4 or more corners
+  std::vector<AttributeValues> values_;  // per plan
+  std::vector<int32_t> polygon_;      // the current face's vertices
+  std::vector<double> uv_;            // the current face's texture coordinates
+  std::unordered_map<UvKey, int32_t, UvKeyHash> uv_elements_;
 };
 
 }  // namespace
@@ -433,11 +576,13 @@ Status parse_ply(std::string_view bytes, const std::string& name, Mesh* mesh, Me
     AsciiSource src(body, h.body_line, name);
     BodyDecoder<AsciiSource> decoder(&src, h, roles, name, &m);
     GAB_RETURN_IF_ERROR(decoder.run());
+    decoder.finish(&seen);
     polygons = decoder.polygons();
   } else {
     BinarySource src(body, h.encoding == PlyEncoding::kBinaryBigEndian, name);
     BodyDecoder<BinarySource> decoder(&src, h, roles, name, &m);
     GAB_RETURN_IF_ERROR(decoder.run());
+    decoder.finish(&seen);
     polygons = decoder.polygons();
     // What the header declares is the whole body: more bytes than a line
     // end or blanks mean a header that does not describe the file.

@@ -18,7 +18,8 @@ using gab_test::json_number;
 using gab_test::run_gab;
 using gab_test::write_scratch_file;
 
-// Draco's cube_att.obj in kind: 8 v, 6 vn, 4 vt, 12 faces v/vt/vn.
+// Draco's cube_att.obj in kind (8 v, 6 vn, 4 vt, 12 faces v/vt/vn: carried,
+// not named), with a group, a material and a line (not carried).
 std::string cube_with_attributes() {
   std::string text;
   for (int i = 0; i < 8; ++i) {
@@ -26,6 +27,7 @@ std::string cube_with_attributes() {
   }
   text += "vn 0 0 1\nvn 0 0 -1\nvn 0 1 0\nvn 0 -1 0\nvn 1 0 0\nvn -1 0 0\nvt 0 0\nvt 0 1\nvt 1 0\nvt 1 1\n";
   // Two triangles per side of the cube: corners (v, vt, vn), 1-based.
+  text += "g cube\nusemtl red\nl 1 2\n";
   const int sides[6][4] = {{1, 3, 4, 2}, {5, 6, 8, 7}, {1, 2, 6, 5}, {3, 7, 8, 4}, {1, 5, 7, 3}, {2, 4, 8, 6}};
   for (int s = 0; s < 6; ++s) {
     const int* q = sides[s];
@@ -38,8 +40,7 @@ std::string cube_with_attributes() {
 }
 
 const std::string kCubeWarning =
-    ": not carried: 6 normals (vn), 4 texture coordinates (vt), 12 faces with vt indices (f v/vt), 12 faces with vn "
-    "indices (f v//vn); gab keeps positions and triangles only\n";
+    ": not carried: 1 lines (l), 1 groups (g), 1 material uses (usemtl); gab keeps positions and triangles only\n";
 
 TEST(ReadNotesCliTest, CompressWarnsOnceAndJsonHasDropped) {
   const std::string in = write_scratch_file("cube_att.obj", cube_with_attributes());
@@ -47,8 +48,7 @@ TEST(ReadNotesCliTest, CompressWarnsOnceAndJsonHasDropped) {
   const CommandResult r = run_gab("compress -i " + in + " -o " + out + " --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, "gab: warning: " + in + kCubeWarning);
-  EXPECT_NE(r.out.find("\"dropped\": {\"normals\": 6, \"texture_coordinates\": 4, \"face_texture_indices\": 12, "
-                       "\"face_normal_indices\": 12}"),
+  EXPECT_NE(r.out.find("\"dropped\": {\"lines\": 1, \"groups\": 1, \"material_uses\": 1}"),
             std::string::npos)
       << r.out;
   // The keys that were there stay.
@@ -83,8 +83,7 @@ TEST(ReadNotesCliTest, StrictFailsOnDroppedDataOnly) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(r.out, "");
   EXPECT_EQ(r.err, "gab: warning: " + in + kCubeWarning + "gab: error: " + in +
-                       ": --strict: not carried: 6 normals (vn), 4 texture coordinates (vt), 12 faces with vt "
-                       "indices (f v/vt), 12 faces with vn indices (f v//vn)\n");
+                       ": --strict: not carried: 1 lines (l), 1 groups (g), 1 material uses (usemtl)\n");
   EXPECT_NE(access(out.c_str(), F_OK), 0) << "--strict wrote " << out;
 
   const std::string plain =
@@ -96,7 +95,8 @@ TEST(ReadNotesCliTest, StrictFailsOnDroppedDataOnly) {
   EXPECT_NE(ok.out.find("\"dropped\": {}"), std::string::npos) << ok.out;
 }
 
-// assimp's Wuson.ply in kind: a "Created by" header line, normals, UVs.
+// assimp's Wuson.ply in kind: a "Created by" header line, normals, UVs (carried,
+// not named), and a quad.
 const std::string kCreatedByPly =
     "ply\r\nformat ascii 1.0\r\nCreated by Blender3D 247 - www.blender3d.com\r\nelement vertex 4\r\n"
     "property float x\r\nproperty float y\r\nproperty float z\r\nproperty float nx\r\nproperty float ny\r\n"
@@ -109,8 +109,8 @@ TEST(ReadNotesCliTest, UnknownPlyHeaderLineIsAWarningNotAnError) {
   const CommandResult r = run_gab("compress -i " + in + " -o " + gab_test::scratch_path("created_by.gab"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, "gab: warning: " + in + ":3: unknown header line 'Created by Blender3D 247 - www.b...' skipped\n"
-                   "gab: warning: " + in + ": not carried: 4 normals (nx ny nz), 4 texture coordinates (s t), 1 "
-                   "polygons of 4 or more corners (fan-triangulated); gab keeps positions and triangles only\n");
+                   "gab: warning: " + in + ": not carried: 1 polygons of 4 or more corners (fan-triangulated); gab "
+                   "keeps positions and triangles only\n");
 }
 
 TEST(ReadNotesCliTest, EveryCommandThatReadsAMeshWarnsPerInput) {

@@ -1,6 +1,7 @@
 // What every reader fuzzer asserts beyond "no crash": a failure carries a
 // message naming the input, and a success is a valid mesh that survives a
-// write -> read round trip unchanged.
+// write -> read round trip unchanged, its attributes too (split at their
+// seams where the format holds one value per vertex).
 #pragma once
 
 #include <cmath>
@@ -39,6 +40,20 @@ inline bool same_mesh(const gab::Mesh& a, const gab::Mesh& b, double tolerance) 
   for (size_t i = 0; i < a.positions.size(); ++i) {
     const double slack = tolerance * std::fabs(a.positions[i]) + (tolerance > 0 ? 1e-300 : 0.0);
     if (!(std::fabs(a.positions[i] - b.positions[i]) <= slack)) return false;
+  }
+  return true;
+}
+
+// The same attributes, value for value, in the same order.
+inline bool same_attributes(const gab::Mesh& a, const gab::Mesh& b) {
+  if (a.attributes.size() != b.attributes.size()) return false;
+  for (size_t i = 0; i < a.attributes.size(); ++i) {
+    const gab::MeshAttribute& x = a.attributes[i];
+    const gab::MeshAttribute& y = b.attributes[i];
+    if (x.kind != y.kind || x.type != y.type || x.name != y.name || x.components != y.components ||
+        x.values != y.values || x.corners != y.corners) {
+      return false;
+    }
   }
   return true;
 }

@@ -13,6 +13,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     gab::Mesh again;
     gab_fuzz::require(gab::parse_obj(gab::format_obj(mesh), name, &again).ok(), "written OBJ does not read");
     gab_fuzz::require(gab_fuzz::same_mesh(mesh, again, 1e-14), "OBJ round trip changed the mesh");
+    gab_fuzz::require(gab_fuzz::same_attributes(mesh, again), "OBJ round trip changed the attributes");
   }
   return 0;
 }

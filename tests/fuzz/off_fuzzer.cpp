@@ -11,6 +11,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     gab::Mesh again;
     gab_fuzz::require(gab::parse_off(gab::format_off(mesh), name, &again).ok(), "written OFF does not read");
     gab_fuzz::require(gab_fuzz::same_mesh(mesh, again, 0.0), "OFF round trip changed the mesh");
+    gab_fuzz::require(gab_fuzz::same_attributes(mesh, again), "OFF round trip changed the attributes");
   }
   return 0;
 }

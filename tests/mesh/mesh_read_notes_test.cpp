@@ -1,5 +1,6 @@
 // What the readers did not keep (MeshReadNotes) and what they forgave:
-// exact counts per format, the line ends real exporters write (LF, CRLF, a
+// exact counts per format (normals, texture coordinates, colours and other
+// PLY vertex properties are carried as attributes, and not named), the line ends real exporters write (LF, CRLF, a
 // lone CR, also in a binary PLY's header), unknown PLY header lines. The
 // inputs are written here, after the features of Draco's test files
 // (cube_att.obj, test_pos_color.ply, Box.ply and delim_test.ply: Rhino's CR
@@ -43,7 +44,7 @@ std::string with_line_ends(const std::string& text, const std::string& end) {
   return out;
 }
 
-// An OBJ with every kind of record a Mesh does not carry.
+// An OBJ with every kind of record, carried or not.
 const std::string kObjEverything =
     "# a cube corner, with everything\n"
     "mtllib cube.mtl\n"
@@ -77,17 +78,24 @@ TEST(MeshReadNotesTest, ObjCountsEveryKindItDoesNotCarry) {
   ASSERT_TRUE(parse(kObjEverything, MeshFormat::kObj, &mesh, &notes).ok());
   EXPECT_EQ(mesh.num_vertices(), 4);
   EXPECT_EQ(mesh.num_triangles(), 5);
+  // vn and vt are carried (per corner); colours are not on every vertex.
+  ASSERT_EQ(mesh.attributes.size(), 2u);
+  EXPECT_EQ(attribute_label(mesh.attributes[0]), "normals");
+  EXPECT_EQ(attribute_label(mesh.attributes[1]), "texture_coordinates");
   EXPECT_EQ(counts(notes),
-            "normals=2 texture_coordinates=3 parameter_vertices=1 vertex_colors=3 vertex_weights=1 "
-            "face_texture_indices=2 face_normal_indices=2 polygons=1 lines=1 points=1 groups=1 objects=1 "
+            "vertex_colors=3 parameter_vertices=1 vertex_weights=1 polygons=1 lines=1 points=1 groups=1 objects=1 "
             "smoothing_groups=1 material_libraries=1 material_uses=2 other_records=1");
   EXPECT_EQ(notes.dropped_summary(),
-            "2 normals (vn), 3 texture coordinates (vt), 1 parameter-space vertices (vp), 3 vertex colours (v x y z r g "
-            "b), 1 vertex weights (v x y z w), 2 faces with vt indices (f v/vt), 2 faces with vn indices (f v//vn), 1 "
-            "polygons of 4 or more corners (fan-triangulated), 1 lines (l), 1 points (p), 1 groups (g), 1 object names "
-            "(o), 1 smoothing groups (s), 1 material libraries (mtllib), 2 material uses (usemtl), 1 other records (the "
-            "first 'curv')");
-  EXPECT_TRUE(notes.warnings.empty());
+            "3 vertex colours (v x y z r g b; not on every vertex), 1 parameter-space vertices (vp), 1 vertex weights "
+            "(v x y z w), 1 polygons of 4 or more corners (fan-triangulated), 1 lines (l), 1 points (p), 1 groups (g), "
+            "1 object names (o), 1 smoothing groups (s), 1 material libraries (mtllib), 2 material uses (usemtl), 1 "
+            "other records (the first 'curv')");
+  // Faces without vn or vt refer to an added element of zeros, and say so.
+  ASSERT_EQ(notes.warnings.size(), 2u);
+  EXPECT_EQ(notes.warnings[0],
+            "in:21: 2 faces have no vn index; their corners refer to normal 3 (all zeros), added after the file's 2");
+  EXPECT_EQ(notes.warnings[1], "in:19: 2 faces have no vt index; their corners refer to texture coordinate 4 (all "
+                               "zeros), added after the file's 3");
 }
 
 // Draco's cube_att.obj in kind: v, vn, vt, faces v/vt/vn.
@@ -159,20 +167,22 @@ const std::string kPlyEverything =
     "0 1\n1 2\n2 0\n"
     "7\n";
 
-TEST(MeshReadNotesTest, PlyCountsPropertiesByKindOrNameAndOtherElements) {
+TEST(MeshReadNotesTest, PlyCountsFacePropertiesAndOtherElements) {
   Mesh mesh;
   MeshReadNotes notes;
   const Status s = parse(kPlyEverything, MeshFormat::kPly, &mesh, &notes);
   ASSERT_TRUE(s.ok()) << s.message();
   EXPECT_EQ(mesh.num_vertices(), 4);
   EXPECT_EQ(mesh.num_triangles(), 3);
-  EXPECT_EQ(counts(notes),
-            "normals=4 texture_coordinates=4 vertex_colors=4 vertex.quality=4 face_colors=2 face.flags=2 "
-            "element.edge=3 element.material=1 polygons=1");
+  // Every vertex property is carried: normals, texture coordinates,
+  // colours, and 'quality' as a generic attribute.
+  std::string labels;
+  for (const MeshAttribute& a : mesh.attributes) labels += attribute_label(a) + " ";
+  EXPECT_EQ(labels, "normals texture_coordinates vertex_colors generic:quality ");
+  EXPECT_EQ(counts(notes), "face_colors=2 face.flags=2 element.edge=3 element.material=1 polygons=1");
   EXPECT_EQ(notes.dropped_summary(),
-            "4 normals (nx ny nz), 4 texture coordinates (s t), 4 vertex colours (red green blue alpha), 4 vertex "
-            "property 'quality', 2 face colours (red green blue), 2 face property 'flags', 3 'edge' elements, 1 "
-            "'material' elements, 1 polygons of 4 or more corners (fan-triangulated)");
+            "2 face colours (red green blue), 2 face property 'flags', 3 'edge' elements, 1 'material' elements, 1 "
+            "polygons of 4 or more corners (fan-triangulated)");
   EXPECT_TRUE(notes.warnings.empty());
 }
 
@@ -186,7 +196,10 @@ TEST(MeshReadNotesTest, PlyTextureCoordinatesUnderEachCommonName) {
     Mesh mesh;
     MeshReadNotes notes;
     ASSERT_TRUE(parse(text, MeshFormat::kPly, &mesh, &notes).ok()) << uv;
-    EXPECT_EQ(notes.dropped_summary(), "3 texture coordinates (" + uv + ")");
+    EXPECT_TRUE(notes.empty()) << notes.dropped_summary();
+    ASSERT_EQ(mesh.attributes.size(), 1u) << uv;
+    EXPECT_EQ(mesh.attributes[0].kind, AttributeKind::kTexCoord) << uv;
+    EXPECT_EQ(mesh.attributes[0].values, (std::vector<double>{0, 0, 1, 0, 0, 1})) << uv;
   }
 }
 
@@ -220,10 +233,12 @@ TEST(MeshReadNotesTest, ManyUnknownHeaderLinesKeepFewWarnings) {
   EXPECT_EQ(notes.warnings.back(), "in:10: unknown header line 'junk 7' skipped");
 }
 
+// Past kMaxMeshAttributes (64) generic attributes, properties are dropped,
+// and the notes name at most 32 kinds.
 TEST(MeshReadNotesTest, PlyWithManyPropertiesNamesAtMost32Kinds) {
   std::string text = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
   std::string zeros;
-  for (int i = 0; i < 40; ++i) {
+  for (int i = 0; i < 100; ++i) {
     text += "property uchar p" + std::to_string(i) + "\n";
     zeros += " 0";
   }
@@ -232,10 +247,13 @@ TEST(MeshReadNotesTest, PlyWithManyPropertiesNamesAtMost32Kinds) {
   Mesh mesh;
   MeshReadNotes notes;
   ASSERT_TRUE(parse(text, MeshFormat::kPly, &mesh, &notes).ok());
+  ASSERT_EQ(mesh.attributes.size(), static_cast<size_t>(kMaxMeshAttributes));
+  EXPECT_EQ(mesh.attributes.back().name, "p63");
   ASSERT_EQ(notes.dropped.size(), MeshReadNotes::kMaxNamedKinds + 1);
-  EXPECT_EQ(notes.dropped[31].key, "vertex.p31");
+  EXPECT_EQ(notes.dropped[0].key, "vertex.p64");
+  EXPECT_EQ(notes.dropped[31].key, "vertex.p95");
   EXPECT_EQ(notes.dropped[32].key, "other");
-  EXPECT_EQ(notes.dropped[32].count, 8 * 3);
+  EXPECT_EQ(notes.dropped[32].count, 4 * 3);
 }
 
 // The little-endian float whose first byte is 0x0A ('\n').
@@ -273,7 +291,11 @@ TEST(MeshReadNotesTest, BinaryPlyHeaderWithLfCrlfOrCrLines) {
     EXPECT_EQ(mesh.positions[0], static_cast<double>(newline_float()));
     EXPECT_EQ(mesh.positions[3], 2.0);
     EXPECT_EQ(mesh.num_triangles(), 2);
-    EXPECT_EQ(counts(notes), "vertex.transparency=4 polygons=1");
+    EXPECT_EQ(counts(notes), "polygons=1");
+    ASSERT_EQ(mesh.attributes.size(), 1u);
+    EXPECT_EQ(attribute_label(mesh.attributes[0]), "generic:transparency");
+    EXPECT_EQ(mesh.attributes[0].type, ValueType::kUint8);
+    EXPECT_EQ(mesh.attributes[0].values, (std::vector<double>{1, 1, 1, 1}));
   }
 }
 
@@ -297,9 +319,10 @@ TEST(MeshReadNotesTest, OffVertexExtrasFaceColoursAndPolygons) {
   ASSERT_TRUE(parse(coff, MeshFormat::kOff, &lf, &lf_notes).ok());
   EXPECT_EQ(lf.num_triangles(), 4);
   EXPECT_EQ(lf_notes.dropped_summary(),
-            "4 vertex colours (COFF), 1 polygons of 4 or more corners (fan-triangulated), 2 face colours (after the "
-            "indices)");
-  EXPECT_EQ(counts(lf_notes), "vertex_colors=4 polygons=1 face_colors=2");
+            "1 polygons of 4 or more corners (fan-triangulated), 2 face colours (after the indices)");
+  EXPECT_EQ(counts(lf_notes), "polygons=1 face_colors=2");
+  ASSERT_EQ(lf.attributes.size(), 1u);
+  EXPECT_EQ(attribute_label(lf.attributes[0]), "vertex_colors");
   for (const std::string end : {"\r\n", "\r"}) {
     Mesh mesh;
     MeshReadNotes notes;
@@ -307,23 +330,27 @@ TEST(MeshReadNotesTest, OffVertexExtrasFaceColoursAndPolygons) {
     ASSERT_TRUE(s.ok()) << s.message();
     EXPECT_EQ(mesh.positions, lf.positions);
     EXPECT_EQ(mesh.triangles, lf.triangles);
+    ASSERT_EQ(mesh.attributes.size(), 1u);
+    EXPECT_EQ(mesh.attributes[0].values, lf.attributes[0].values);
     EXPECT_EQ(counts(notes), counts(lf_notes));
   }
   const std::string tri_faces = "3 0 1 2\n";
   struct Case {
     std::string keyword, vertex_extra, expected;
   };
-  for (const Case& c : {Case{"NOFF", " 0 0 1", "3 normals (NOFF)"},
-                        Case{"STOFF", " 0.5 0.5", "3 texture coordinates (STOFF)"},
-                        Case{"CNOFF", " 0 0 1 0.1 0.2 0.3", "3 normals (CNOFF), 3 vertex colours (CNOFF)"},
-                        Case{"STCNOFF", " 0 0 1 0.1 0.2 0.3 0 0",
-                             "3 normals (STCNOFF), 3 texture coordinates (STCNOFF), 3 vertex colours (STCNOFF)"}}) {
+  // The prefixes' data is carried, not named.
+  for (const Case& c : {Case{"NOFF", " 0 0 1", "normals "}, Case{"STOFF", " 0.5 0.5", "texture_coordinates "},
+                        Case{"CNOFF", " 0 0 1 0.1 0.2 0.3", "normals vertex_colors "},
+                        Case{"STCNOFF", " 0 0 1 0.1 0.2 0.3 0 0", "normals vertex_colors texture_coordinates "}}) {
     const std::string text = c.keyword + "\n3 1 0\n0 0 0" + c.vertex_extra + "\n1 0 0" + c.vertex_extra + "\n0 1 0" +
                              c.vertex_extra + "\n" + tri_faces;
     Mesh mesh;
     MeshReadNotes notes;
     ASSERT_TRUE(parse(text, MeshFormat::kOff, &mesh, &notes).ok()) << c.keyword;
-    EXPECT_EQ(notes.dropped_summary(), c.expected);
+    EXPECT_TRUE(notes.empty()) << c.keyword << ": " << notes.dropped_summary();
+    std::string labels;
+    for (const MeshAttribute& a : mesh.attributes) labels += attribute_label(a) + " ";
+    EXPECT_EQ(labels, c.expected) << c.keyword;
   }
   // Errors name the right line with CR line ends.
   Mesh mesh;
@@ -351,14 +378,12 @@ TEST(MeshReadNotesTest, AssimpTestModels) {
   MeshReadNotes notes;
   ASSERT_TRUE(read_mesh(std::string(kAssimpModels) + "/OBJ/spider.obj", &mesh, &notes).ok());
   EXPECT_EQ(mesh.num_vertices(), 762);
-  EXPECT_EQ(counts(notes),
-            "normals=747 texture_coordinates=302 face_texture_indices=1368 face_normal_indices=1368 groups=19 "
-            "smoothing_groups=169 material_libraries=1 material_uses=19");
+  EXPECT_EQ(counts(notes), "groups=19 smoothing_groups=169 material_libraries=1 material_uses=19");
   // Refused before: "unknown header keyword 'Created'".
   const std::string wuson = std::string(kAssimpModels) + "/PLY/Wuson.ply";
   const Status s = read_mesh(wuson, &mesh, &notes);
   ASSERT_TRUE(s.ok()) << s.message();
-  EXPECT_EQ(counts(notes), "normals=11184 texture_coordinates=11184");
+  EXPECT_EQ(counts(notes), "");
   ASSERT_EQ(notes.warnings.size(), 1u);
   EXPECT_EQ(notes.warnings[0], wuson + ":3: unknown header line 'Created by Blender3D 247 - www.b...' skipped");
 }
