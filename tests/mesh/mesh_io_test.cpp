@@ -99,6 +99,44 @@ TEST(MeshIoTest, LegalOddMeshesRoundTrip) {
   }
 }
 
+// write_mesh passes the format's notes: what it could not hold, and the
+// vertices split where per-corner data has seams (PLY and OFF; OBJ keeps
+// texture coordinates per corner).
+TEST(MeshIoTest, WriteMeshReportsWhatTheFormatCannotHold) {
+  Mesh m = testing_util::grid(1, 1);  // triangles (0 1 3) (0 3 2)
+  MeshAttribute uv;
+  uv.kind = AttributeKind::kTexCoord;
+  uv.components = 2;
+  uv.values = {0, 0, 1, 0, 1, 1, 0, 1, 0.5, 0.5};
+  uv.corners = {0, 1, 2, 4, 2, 3};  // vertex 0 on a seam
+  MeshAttribute quality;
+  quality.kind = AttributeKind::kGeneric;
+  quality.name = "quality";
+  quality.values = {1, 2, 3, 4};
+  m.attributes = {uv, quality};
+  const struct {
+    const char* ext;
+    const char* not_written;
+    int64_t split;
+  } cases[] = {{".obj", "4 generic attribute 'quality' (OBJ has no place for it)", 0},
+               {".off", "4 generic attribute 'quality' (OFF has no place for it)", 1},
+               {".ply", "", 1}};
+  for (const auto& c : cases) {
+    const std::string path = temp_path(std::string("notes") + c.ext);
+    MeshWriteNotes notes;
+    notes.split_vertices = 99;  // replaced
+    ASSERT_TRUE(write_mesh(path, m, PlyWriteOptions(), &notes).ok()) << c.ext;
+    EXPECT_EQ(notes.not_written_summary(), c.not_written) << c.ext;
+    EXPECT_EQ(notes.split_vertices, c.split) << c.ext;
+    Mesh back;
+    ASSERT_TRUE(read_mesh(path, &back).ok()) << c.ext;
+    EXPECT_EQ(back.num_vertices(), 4 + c.split) << c.ext;
+    ASSERT_FALSE(back.attributes.empty()) << c.ext;
+    EXPECT_EQ(back.attributes[0].kind, AttributeKind::kTexCoord) << c.ext;
+    std::remove(path.c_str());
+  }
+}
+
 struct SharedMesh {
   const char* name;
   int32_t vertices;
