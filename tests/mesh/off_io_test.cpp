@@ -17,12 +17,14 @@ TEST(OffTest, ParsesTrianglesAndFanTriangulatesPolygons) {
   EXPECT_EQ(m.positions[12], 2.0);
 }
 
-TEST(OffTest, ColouredVariantsSkipExtras) {
+TEST(OffTest, ColouredVariantsKeepTheirColours) {
   Mesh m;
   ASSERT_TRUE(parse_off("COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n3 0 1 2 9 9 9\n",
                         "c.off", &m).ok());
   EXPECT_EQ(m.num_triangles(), 1);
   EXPECT_EQ(m.positions[3], 1.0);
+  ASSERT_EQ(m.attributes.size(), 1u);
+  EXPECT_EQ(m.attributes[0].values, (std::vector<double>{255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255}));
 }
 
 struct BadCase {
@@ -83,7 +85,7 @@ TEST(OffTest, HeaderVariants) {
     std::vector<double> positions;
   };
   const Case cases[] = {
-      // Normals, texture coordinates and colours after x y z are skipped.
+      // Normals, texture coordinates and colours after x y z are attributes, not coordinates.
       {"NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n3 0 1 2\n", {0, 0, 0, 1, 0, 0, 0, 1, 0}},
       {"STCNOFF\n3 1 0\n0 0 0 1 2 3 .1 .2 .3 1 9 9\n1 0 0 1 2 3 .1 .2 .3 1 9 9\n0 1 0 1 2 3 .1 .2 .3 1 9 9\n3 0 1 2\n",
        {0, 0, 0, 1, 0, 0, 0, 1, 0}},

@@ -1,7 +1,8 @@
-// What a mesh file held that a Mesh (positions and triangles only) does not
-// carry, counted by the readers, and what they forgave in the file. The
-// readers fill it on success; the CLI prints it as one warning line per input
-// and compress --json's "dropped" object (docs/cli.md).
+// What a mesh file held that a Mesh (positions, triangles and the attributes
+// the readers keep: mesh_io.h) does not carry, counted by the readers, and
+// what they forgave in the file. The readers fill it on success; the CLI
+// prints it as one warning line per input and compress --json's "dropped"
+// object (docs/cli.md).
 #pragma once
 
 #include <cstdint>
@@ -13,12 +14,13 @@ namespace gab {
 
 // One kind of data the reader saw and did not keep.
 struct DroppedData {
-  // Stable name, one vocabulary for every format: "normals",
-  // "texture_coordinates", "vertex_colors", "polygons", "groups", ...;
+  // Stable name, one vocabulary for every format: "polygons", "groups",
+  // "normals" (when not carried: an OBJ's vn no face refers to), ...;
   // PLY data with no common name is "vertex.NAME", "face.NAME" (properties)
   // or "element.NAME" (whole elements).
   std::string key;
-  // For people, in the format's own spelling: "normals (vn)", "normals (nx ny nz)".
+  // For people, in the format's own spelling: "groups (g)",
+  // "normals (nx ny nz; vertex 12: a value that is not finite)".
   std::string label;
   // How many: records (OBJ lines), faces, or the vertices or elements that
   // carry it (PLY, OFF).
@@ -41,7 +43,7 @@ struct MeshReadNotes {
   void drop(std::string_view key, std::string_view label, int64_t count);
   // Keeps `warning` (or counts it, past kMaxWarnings). O(1).
   void warn(std::string warning);
-  // "747 normals (vn), 302 texture coordinates (vt)": every entry, in order;
+  // "19 groups (g), 1 material libraries (mtllib)": every entry, in order;
   // "" when nothing was dropped. O(entries).
   std::string dropped_summary() const;
 };
