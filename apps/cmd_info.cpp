@@ -3,6 +3,7 @@
 // verified), without decoding it.
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "cli.h"
 #include "commands.h"
@@ -61,6 +62,21 @@ int run_info(int argc, char** argv) {
     o.add("final_steps16", static_cast<int64_t>(info.final_steps16));
     o.add("final_most_steps", static_cast<int64_t>(info.final_most_steps));
     o.add("sections", static_cast<int64_t>(info.sections));
+    o.add("attribute_bytes", static_cast<int64_t>(info.section_bytes));
+    std::vector<JsonObject> sections;
+    for (const GabFileInfo::Section& section : info.section_list) {
+      JsonObject e;
+      e.add("kind", static_cast<int64_t>(section.kind));
+      e.add("bytes", static_cast<int64_t>(section.bytes));
+      if (!section.attribute.empty()) {
+        e.add("attribute", section.attribute);
+        e.add_bool("per_corner", section.per_corner);
+        e.add("elements", section.elements);
+        e.add("bits", static_cast<int64_t>(section.bits));
+      }
+      sections.push_back(e);
+    }
+    o.add("section_list", sections);
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }
@@ -89,10 +105,12 @@ int run_info(int argc, char** argv) {
               bpv, info.connectivity_bytes,
               info.geometry_only ? "a hash" : "valence coded");
   if (info.order_bytes > 0) {
-    std::printf(", vertex order %zu\n", info.order_bytes);
-  } else {
-    std::printf("%s\n", info.reordered ? ", vertices in traversal order" : "");
+    std::printf(", vertex order %zu", info.order_bytes);
+  } else if (info.reordered) {
+    std::printf(", vertices in traversal order");
   }
+  if (info.section_bytes > 0) std::printf(", attributes %zu", info.section_bytes);
+  std::printf("\n");
   int64_t anchors = 0;
   for (size_t c = 0; c < info.chunk_bytes.size(); ++c) {
     anchors += info.chunk_anchors[c];
@@ -113,6 +131,17 @@ int run_info(int argc, char** argv) {
                   info.detail_step, info.detail_bytes);
     } else {
       std::printf("  (the detail chunk is missing)\n");
+    }
+  }
+  for (size_t i = 0; i < info.section_list.size(); ++i) {
+    const GabFileInfo::Section& section = info.section_list[i];
+    if (section.attribute.empty()) {
+      std::printf("  section %zu: of kind %d, which this build does not know, %zu bytes\n", i, section.kind,
+                  section.bytes);
+    } else {
+      std::printf("  section %zu: %s, %lld %s, %d bits, %zu bytes\n", i, section.attribute.c_str(),
+                  static_cast<long long>(section.elements), section.per_corner ? "values shared by corners" : "per vertex",
+                  section.bits, section.bytes);
     }
   }
   return kExitOk;

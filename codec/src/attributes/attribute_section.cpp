@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "anchors/quantizer.h"
 #include "attributes/attribute_quantizer.h"
 #include "container/byte_io.h"
 #include "entropy/int_coder.h"
@@ -16,9 +17,14 @@ namespace {
 
 constexpr uint8_t kLayoutPerVertex = 0;
 constexpr uint8_t kLayoutPerCorner = 1;
-// The only predictor of this revision (docs/format.md 6.4); a later one
-// gets another code, which this build refuses as unsupported.
+// The predictors (docs/format.md 6.4); a later one gets another code, which
+// this build skips as unsupported.
 constexpr uint8_t kPredictorParallelogram = 0;
+constexpr uint8_t kPredictorSurface = 1;  // normals: the decoded surface's, else the parallelogram
+// The surface normal's scale before the lattice: 2^5 times the lattice's
+// radius, so that its rounding (through the guard band) moves the
+// prediction by a thirty-second of a lattice step at most.
+constexpr int kSurfaceExtraBits = 5;
 // Residual contexts per component: the bit length of the magnitude that
 // sets it, capped.
 constexpr int kBuckets = 8;
@@ -143,6 +149,22 @@ class Walk {
     }
   }
 
+  // The decoded surface's normal at the wedge: the sum of its triangles'
+  // cross products (area-weighted), in the triangles' orientation.
+  static void surface_normal(const CornerTable& t, const Wedge& wedge, const std::vector<double>& positions, double n[3]) {
+    n[0] = n[1] = n[2] = 0;
+    for (int32_t c : wedge) {
+      const double* p = &positions[3 * static_cast<size_t>(t.vertex(c))];
+      const double* a = &positions[3 * static_cast<size_t>(t.vertex(CornerTable::next(c)))];
+      const double* b = &positions[3 * static_cast<size_t>(t.vertex(CornerTable::prev(c)))];
+      const double e1[3] = {a[0] - p[0], a[1] - p[1], a[2] - p[2]};
+      const double e2[3] = {b[0] - p[0], b[1] - p[1], b[2] - p[2]};
+      n[0] += e1[1] * e2[2] - e1[2] * e2[1];
+      n[1] += e1[2] * e2[0] - e1[0] * e2[2];
+      n[2] += e1[0] * e2[1] - e1[1] * e2[0];
+    }
+  }
+
   // The wedge's element is `value`: its corners take it.
   void add(const Wedge& wedge, int32_t vertex, const int32_t* value) {
     int32_t e = vertex;
@@ -240,8 +262,23 @@ struct ResidualModels {
   SIntCoder residual;
   std::vector<BitModel> seam;  // by the edge's other end: not yet walked, joined, a seam
   BitModel below;              // a normal's last component is negative
+  BitModel near_tie{7};        // a surface normal's component is near a rounding tie (rare: a long memory)
+  BitModel round_up;           // and was rounded up
   int32_t previous_max = 0;
 };
+
+// The surface normal `n` (not zero) at the lattice's scale times
+// 2^kSurfaceExtraBits, each component rounded through the guard band
+// (docs/format.md 5.3), then on the lattice: what both sides predict.
+template <typename Flags>
+void surface_prediction(const double n[3], const AttributeQuantizer& q, Flags flags, int32_t* pred) {
+  const double l1 = std::fabs(n[0]) + std::fabs(n[1]) + std::fabs(n[2]);
+  const double scale = static_cast<double>(int64_t{q.radius()} << kSurfaceExtraBits);
+  int64_t p[3];
+  for (int c = 0; c < 3; ++c) p[c] = flags(n[c] / l1 * scale);
+  if (p[0] == 0 && p[1] == 0 && p[2] == 0) p[2] = 1;  // cannot happen: |p| sums to about the scale
+  project_to_lattice(p, q.radius(), pred);
+}
 
 // The seam context of corner c's pair: what the edge's other end says.
 int seam_context(const Walk& walk, int32_t c, const CornerTable& t) {
@@ -262,15 +299,15 @@ int residual_context(int c, const int32_t* r, int32_t previous_max) {
   return c * kBuckets + bucket(m);
 }
 
-void write_description(const MeshAttribute& a, const AttributeQuantizer& q, bool per_corner, int64_t elements,
-                       ByteWriter* out) {
+void write_description(const MeshAttribute& a, const AttributeQuantizer& q, bool per_corner, uint8_t predictor,
+                       int64_t elements, ByteWriter* out) {
   out->u8(kGabSectionAttribute);
   out->u8(0);  // flags: optional (a decoder that does not know it skips it)
   out->u8(static_cast<uint8_t>(a.kind));
   out->u8(static_cast<uint8_t>(a.type));
   out->u8(static_cast<uint8_t>(a.components));
   out->u8(per_corner ? kLayoutPerCorner : kLayoutPerVertex);
-  out->u8(kPredictorParallelogram);
+  out->u8(predictor);
   out->u8(static_cast<uint8_t>(q.bits));
   out->u8(static_cast<uint8_t>(a.name.size()));
   out->bytes(reinterpret_cast<const uint8_t*>(a.name.data()), a.name.size());
@@ -291,30 +328,23 @@ double angle_degrees(const double* a, const double* b) {
 
 }  // namespace
 
-std::vector<uint8_t> encode_attribute_section(const MeshAttribute& a, const CornerTable& t, int bits,
-                                              AttributeCoding* coding) {
-  const AttributeQuantizer q = AttributeQuantizer::fit(a, bits);
+namespace {
+
+// One way of coding the attribute: the stream and the elements it made.
+struct Coded {
+  std::vector<uint8_t> stream;
+  int64_t elements = 0;
+};
+
+// The stream of `a` (its elements quantized in `input`) by `predictor`.
+Coded encode_stream(const MeshAttribute& a, const CornerTable& t, const AttributeQuantizer& q,
+                    const std::vector<int32_t>& input, bool per_corner, uint8_t predictor,
+                    const std::vector<double>* positions) {
   const int k = a.components;
   const size_t ku = static_cast<size_t>(k);
-  // Every input element quantized once; a corner's value is its element's.
-  std::vector<int32_t> input(a.values.size());
-  for (int64_t e = 0; e < a.num_elements(); ++e) q.quantize(&a.values[e * k], &input[e * k]);
   auto corner_value = [&](int32_t c) {
     return &input[ku * static_cast<size_t>(a.per_corner() ? a.corners[c] : t.vertex(c))];
   };
-  bool per_corner = false;
-  if (a.per_corner()) {
-    for (int32_t v = 0; v < t.num_vertices && !per_corner; ++v) {
-      for (int32_t p = t.corner_offsets[v] + 1; p < t.corner_offsets[v + 1]; ++p) {
-        if (!std::equal(corner_value(t.corners[p]), corner_value(t.corners[p]) + k,
-                        corner_value(t.corners[t.corner_offsets[v]]))) {
-          per_corner = true;
-          break;
-        }
-      }
-    }
-  }
-
   Walk walk(t, q, per_corner);
   ResidualModels models(k);
   RangeEncoder enc;
@@ -330,7 +360,20 @@ std::vector<uint8_t> encode_attribute_section(const MeshAttribute& a, const Corn
       }
     }
     for (const Wedge& wedge : per_corner ? splitter.split(t, v, joined) : splitter.whole(t, v)) {
-      walk.predict(wedge, pred);
+      double n[3] = {0, 0, 0};
+      if (predictor == kPredictorSurface) Walk::surface_normal(t, wedge, *positions, n);
+      if (n[0] != 0 || n[1] != 0 || n[2] != 0) {
+        surface_prediction(n, q, [&](double x) {
+          bool up = false;
+          const int64_t rounded = round_prediction(x, &up);
+          const bool near = prediction_is_near_tie(x);
+          enc.encode(&models.near_tie, near ? 1 : 0);
+          if (near) enc.encode(&models.round_up, up ? 1 : 0);
+          return rounded;
+        }, pred);
+      } else {
+        walk.predict(wedge, pred);
+      }
       if (!wedge.empty()) {
         std::copy(corner_value(*wedge.first), corner_value(*wedge.first) + k, actual);
       } else if (!a.per_corner()) {
@@ -361,17 +404,55 @@ std::vector<uint8_t> encode_attribute_section(const MeshAttribute& a, const Corn
       walk.add(wedge, v, actual);
     }
   }
+  return {enc.finish(), walk.elements()};
+}
+
+}  // namespace
+
+std::vector<uint8_t> encode_attribute_section(const MeshAttribute& a, const CornerTable& t, int bits,
+                                              const std::vector<double>* positions, AttributeCoding* coding) {
+  const AttributeQuantizer q = AttributeQuantizer::fit(a, bits);
+  const int k = a.components;
+  const size_t ku = static_cast<size_t>(k);
+  // Every input element quantized once; a corner's value is its element's.
+  std::vector<int32_t> input(a.values.size());
+  for (int64_t e = 0; e < a.num_elements(); ++e) q.quantize(&a.values[e * k], &input[e * k]);
+  auto corner_value = [&](int32_t c) {
+    return &input[ku * static_cast<size_t>(a.per_corner() ? a.corners[c] : t.vertex(c))];
+  };
+  bool per_corner = false;
+  if (a.per_corner()) {
+    for (int32_t v = 0; v < t.num_vertices && !per_corner; ++v) {
+      for (int32_t p = t.corner_offsets[v] + 1; p < t.corner_offsets[v + 1]; ++p) {
+        if (!std::equal(corner_value(t.corners[p]), corner_value(t.corners[p]) + k,
+                        corner_value(t.corners[t.corner_offsets[v]]))) {
+          per_corner = true;
+          break;
+        }
+      }
+    }
+  }
+  // Normals over a decoded surface: the smaller of both predictors.
+  uint8_t predictor = kPredictorParallelogram;
+  Coded coded = encode_stream(a, t, q, input, per_corner, predictor, nullptr);
+  if (q.lattice() && positions != nullptr) {
+    Coded surface = encode_stream(a, t, q, input, per_corner, kPredictorSurface, positions);
+    if (surface.stream.size() < coded.stream.size()) {
+      coded = std::move(surface);
+      predictor = kPredictorSurface;
+    }
+  }
 
   ByteWriter out;
-  write_description(a, q, per_corner, walk.elements(), &out);
-  const std::vector<uint8_t> stream = enc.finish();
-  out.bytes(stream.data(), stream.size());
+  write_description(a, q, per_corner, predictor, coded.elements, &out);
+  out.bytes(coded.stream.data(), coded.stream.size());
 
   if (coding != nullptr) {
     *coding = AttributeCoding();
     coding->bits = q.bits;
     coding->per_corner = per_corner;
-    coding->elements = walk.elements();
+    coding->elements = coded.elements;
+    coding->surface = predictor == kPredictorSurface;
     // The error of every input element that reaches the output.
     double decoded[4];
     for (int64_t e = 0; e < a.num_elements(); ++e) {
@@ -400,10 +481,11 @@ Status read_attribute_description(const uint8_t* payload, size_t size, Attribute
     return Status::Error(StatusCode::kUnsupported,
                          "attribute section: value type " + std::to_string(type) + " is unknown");
   }
-  if (predictor != kPredictorParallelogram) {
+  if (predictor != kPredictorParallelogram && !(predictor == kPredictorSurface && kind == 0)) {
     return Status::Error(StatusCode::kUnsupported,
                          "attribute section: predictor " + std::to_string(predictor) + " is unknown");
   }
+  d->surface = predictor == kPredictorSurface;
   MeshAttribute& a = d->attribute;
   a = MeshAttribute();
   a.kind = static_cast<AttributeKind>(kind);
@@ -440,9 +522,14 @@ Status read_attribute_description(const uint8_t* payload, size_t size, Attribute
   return Status::Ok();
 }
 
-Status decode_attribute_section(const uint8_t* payload, size_t size, const CornerTable& t, MeshAttribute* out) {
+Status decode_attribute_section(const uint8_t* payload, size_t size, const CornerTable& t,
+                                const std::vector<double>* positions, MeshAttribute* out) {
   AttributeDescription d;
   GAB_RETURN_IF_ERROR(read_attribute_description(payload, size, &d));
+  if (d.surface && positions == nullptr) {
+    return Status::Error(StatusCode::kUnsupported,
+                         "attribute section: normals predicted from the whole decoded surface");
+  }
   MeshAttribute a = std::move(d.attribute);
   const AttributeQuantizer& q = d.quantizer;
   const bool per_corner = d.per_corner;
@@ -479,7 +566,17 @@ Status decode_attribute_section(const uint8_t* payload, size_t size, const Corne
       if (walk.elements() >= static_cast<int64_t>(declared) && per_corner) {
         return corrupt("attribute section: more elements than its declared " + std::to_string(declared));
       }
-      walk.predict(wedge, pred);
+      double n[3] = {0, 0, 0};
+      if (d.surface) Walk::surface_normal(t, wedge, *positions, n);
+      if (n[0] != 0 || n[1] != 0 || n[2] != 0) {
+        surface_prediction(n, q, [&](double x) {
+          const bool near = dec.decode(&models.near_tie) != 0;
+          const bool up = near && dec.decode(&models.round_up) != 0;
+          return resolve_prediction(x, near, up);
+        }, pred);
+      } else {
+        walk.predict(wedge, pred);
+      }
       if (q.lattice()) {
         const NormalFrame frame(pred);
         int32_t p2[3], a2[3];

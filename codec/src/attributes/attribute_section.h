@@ -1,12 +1,13 @@
 // One attribute in one trailing section of a .gab file (docs/format.md
-// 6.2-6.4): its description, its quantization, then one range-coded stream
+// 6.2-6.5): its description, its quantization, then one range-coded stream
 // walking the vertices in the corner table's visit order: per vertex the
 // seams between its corners (per-corner attributes), then each new
-// element's residual from a prediction over the elements already coded
-// (the parallelogram across a decoded triangle, else the mean of decoded
-// neighbours, else the previous element). Integer arithmetic only, so every
-// decoder reproduces the encoder's integers; the connectivity alone drives
-// it, so any level of detail decodes the attributes whole. Internal to the codec.
+// element's residual from a prediction: for every kind the parallelogram
+// across a decoded triangle (else the mean of decoded neighbours, else the
+// previous element), integers over the connectivity alone, so any level of
+// detail decodes it; for normals also the decoded surface's normal,
+// rounded through the guard band, which needs the whole decoded shape.
+// Internal to the codec.
 #pragma once
 
 #include <cstddef>
@@ -28,6 +29,7 @@ struct AttributeCoding {
   int bits = 0;             // its quantization's (integer-typed: the span's)
   bool per_corner = false;  // coded per corner (seams); false: per vertex
   int64_t elements = 0;     // elements coded: vertices, or wedges of corners with one value
+  bool surface = false;     // normals predicted from the decoded surface (the decoder needs the whole shape)
   // The largest error of a decoded value: degrees between directions for
   // normals, value units otherwise (0: exact).
   double max_error = 0;
@@ -36,10 +38,12 @@ struct AttributeCoding {
 // The section's payload for `attribute` (valid for the mesh of `table`,
 // numbered as the decoder returns it), quantized at `bits` (normals: the
 // lattice's, 2..16; float-typed: the grid's, 1..31; integer-typed: ignored,
-// exact). A per-corner attribute with no seam is coded per vertex.
-// O(elements + corners).
+// exact). A per-corner attribute with no seam is coded per vertex. Normals,
+// given `positions` (the decoded shape, bit for bit the decoder's), are
+// coded both ways, by the parallelogram and by the decoded surface's normal,
+// and the smaller kept. O(elements + corners), twice for normals.
 std::vector<uint8_t> encode_attribute_section(const MeshAttribute& attribute, const CornerTable& table, int bits,
-                                              AttributeCoding* coding);
+                                              const std::vector<double>* positions, AttributeCoding* coding);
 
 // A section's description: what it holds and how it is quantized, read
 // without decoding (gab info).
@@ -47,16 +51,20 @@ struct AttributeDescription {
   MeshAttribute attribute;  // kind, type, components, name; no values
   AttributeQuantizer quantizer;
   bool per_corner = false;
+  bool surface = false;      // predicted from the decoded surface: needs the whole decoded shape
   uint64_t elements = 0;     // as declared
   size_t stream_offset = 0;  // where the range-coded stream starts in the payload
 };
 // kParseError / kUnsupported as decode_attribute_section. O(1).
 Status read_attribute_description(const uint8_t* payload, size_t size, AttributeDescription* description);
 
-// The attribute a section's payload describes, for the mesh of `table`.
-// kParseError naming what is wrong; kUnsupported for a predictor or a kind
-// this build does not know. O(payload + elements + corners).
+// The attribute a section's payload describes, for the mesh of `table`
+// whose decoded shape is `positions` (null when it is not the whole shape:
+// a level of detail, the detail chunk skipped or cut off). kParseError
+// naming what is wrong; kUnsupported for a predictor or a kind this build
+// does not know, and for normals predicted from the surface without the
+// whole shape. O(payload + elements + corners).
 Status decode_attribute_section(const uint8_t* payload, size_t size, const CornerTable& table,
-                                MeshAttribute* attribute);
+                                const std::vector<double>* positions, MeshAttribute* attribute);
 
 }  // namespace gab

@@ -308,11 +308,13 @@ Status apply_detail(ByteReader* in, const GabHeader& header, const Mesh& mesh, c
 
 // The trailing sections of a file whose chunks start at `chunks_start`:
 // every chunk frame is walked again (a level of detail stops reading them
-// early) to reach them, and each attribute section decoded onto `mesh`. A
+// early) to reach them, and each attribute section decoded onto `mesh`
+// (normals predicted from the surface only when `whole_shape`: skipped
+// otherwise, as sections this build cannot decode). A
 // file that ends (or is damaged, for a level of detail that did not need
 // the chunk) before them has no attributes.
-Status decode_sections(const uint8_t* data, size_t size, size_t chunks_start, const GabHeader& header, Mesh* mesh,
-                       DecodeStats* stats) {
+Status decode_sections(const uint8_t* data, size_t size, size_t chunks_start, const GabHeader& header,
+                       bool whole_shape, Mesh* mesh, DecodeStats* stats) {
   ByteReader in(data + chunks_start, size - chunks_start);
   for (int32_t i = 0; i < header.chunks; ++i) {
     const uint8_t* payload = nullptr;
@@ -338,7 +340,8 @@ Status decode_sections(const uint8_t* data, size_t size, size_t chunks_start, co
     }
     if (table.triangles == nullptr) table = build_corner_table(header.num_vertices, mesh->triangles);
     MeshAttribute attribute;
-    const Status s = decode_attribute_section(section.payload, section.size, table, &attribute);
+    const Status s = decode_attribute_section(section.payload, section.size, table,
+                                              whole_shape ? &mesh->positions : nullptr, &attribute);
     if (s.code() == StatusCode::kUnsupported) {
       GAB_RETURN_IF_ERROR(check_unknown_section(section, index));
       ++stats->skipped_sections;
@@ -441,7 +444,11 @@ Status decode_mesh(const uint8_t* data, size_t size, const DecodeOptions& option
     GAB_RETURN_IF_ERROR(apply_detail(&in, header, out, graph, out.positions, &detailed, stats));
     if (stats->detail) out.positions.swap(detailed);
   }
-  if (!stats->truncated) GAB_RETURN_IF_ERROR(decode_sections(data, size, chunks_start, header, &out, stats));
+  // Normals predicted from the surface need the shape the encoder had: every anchor, refined and detailed
+  // as the file says.
+  const bool whole_shape = whole && !stats->truncated && (!header.detail() || detail) &&
+                           (!header.refined() || stats->refined);
+  if (!stats->truncated) GAB_RETURN_IF_ERROR(decode_sections(data, size, chunks_start, header, whole_shape, &out, stats));
   // The header bounds the grid and the weight so that every file a writer
   // makes decodes to finite coordinates; a forged one must not hand out
   // others either.

@@ -24,6 +24,7 @@
 #include "connectivity/connectivity_section.h"
 #include "container/framing.h"
 #include "container/gab_header.h"
+#include "gab/codec/decoder.h"
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/relaxed_reconstruction.h"
 #include "gab/mesh/renumber.h"
@@ -436,10 +437,25 @@ Status append_attribute_sections(const Mesh& mesh, const EncodeOptions& options,
                                  EncodeStats* stats) {
   if (mesh.attributes.empty()) return Status::Ok();
   const CornerTable table = build_corner_table(mesh.num_vertices(), mesh.triangles);
+  // Normals may be predicted from the decoded surface: the decoder's own
+  // shape, bit for bit, from the file as it stands.
+  std::vector<double> decoded;
+  for (const MeshAttribute& a : mesh.attributes) {
+    if (a.kind != AttributeKind::kNormal || !decoded.empty()) continue;
+    DecodeOptions d;
+    d.connectivity = options.geometry_only ? &mesh : nullptr;
+    d.max_memory = -1;
+    d.threads = options.threads;
+    Mesh shape;
+    DecodeStats ds;
+    GAB_RETURN_IF_ERROR(decode_mesh(file->data(), file->size(), d, &shape, &ds));
+    decoded = std::move(shape.positions);
+  }
   std::vector<std::vector<uint8_t>> sections;
   for (const MeshAttribute& a : mesh.attributes) {
     AttributeCoding coding;
-    sections.push_back(encode_attribute_section(a, table, bits_for(a, options), &coding));
+    sections.push_back(
+        encode_attribute_section(a, table, bits_for(a, options), decoded.empty() ? nullptr : &decoded, &coding));
     AttributeStats as;
     as.label = attribute_label(a);
     as.bits = coding.bits;
@@ -447,6 +463,7 @@ Status append_attribute_sections(const Mesh& mesh, const EncodeOptions& options,
     as.elements = coding.elements;
     as.bytes = sections.back().size() + kGabFrameBytes;
     as.max_error = coding.max_error;
+    as.from_surface = coding.surface;
     stats->attribute_bytes += as.bytes;
     stats->attributes.push_back(std::move(as));
   }

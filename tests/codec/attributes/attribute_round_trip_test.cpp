@@ -8,7 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "attributes/attribute_section.h"
 #include "attributes/corner_correspondence.h"
+#include "attributes/corner_table.h"
 #include "common/gab_files.h"
 #include "common/test_meshes.h"
 #include "gab/codec/decoder.h"
@@ -168,23 +170,64 @@ TEST(AttributeRoundTrip, EveryKindComesBackWithinItsQuantizationInEitherNumberin
   }
 }
 
-TEST(AttributeRoundTrip, ALevelOfDetailDecodesTheAttributesWhole) {
+// A level of detail decodes every attribute predicted from the connectivity
+// whole, and skips normals predicted from the decoded surface (they need
+// the whole shape), as does a decode without the detail layer.
+TEST(AttributeRoundTrip, ALevelOfDetailDecodesTheAttributesTheConnectivityPredicts) {
+  const Mesh input = attributed_torus();
+  for (double target : {1e-3, 1e-4}) {
+    SCOPED_TRACE(target);
+    EncodeOptions o;
+    o.target_rms_rel = target;
+    EncodeStats stats;
+    const std::vector<uint8_t> file = encode_or_die(input, o, &stats);
+    DecodeStats ds;
+    const Mesh whole = decode_or_die(file, DecodeOptions(), &ds);
+    ASSERT_EQ(whole.attributes.size(), 5u);
+    EXPECT_EQ(ds.skipped_sections, 0);
+    std::vector<DecodeOptions> partial(2);
+    partial[0].max_anchors = 5;
+    partial[1].detail = false;
+    for (const DecodeOptions& options : partial) {
+      if (!options.detail && !stats.detail) continue;
+      const Mesh coarse = decode_or_die(file, options, &ds);
+      size_t j = 0;
+      for (size_t i = 0; i < whole.attributes.size(); ++i) {
+        if (stats.attributes[i].from_surface) continue;
+        ASSERT_LT(j, coarse.attributes.size());
+        EXPECT_EQ(coarse.attributes[j].values, whole.attributes[i].values);
+        EXPECT_EQ(coarse.attributes[j].corners, whole.attributes[i].corners);
+        ++j;
+      }
+      EXPECT_EQ(j, coarse.attributes.size());
+      EXPECT_EQ(static_cast<size_t>(ds.skipped_sections), whole.attributes.size() - j);
+    }
+  }
+}
+
+// Where the decoded shape is fine, normals are predicted from it: smaller
+// than from their neighbours' values, and decoded as exactly.
+TEST(AttributeRoundTrip, NormalsOverAFineShapeArePredictedFromTheSurface) {
   const Mesh input = attributed_torus();
   EncodeOptions o;
-  o.target_rms_rel = 1e-3;
+  o.target_rms_rel = 1e-4;
   EncodeStats stats;
   const std::vector<uint8_t> file = encode_or_die(input, o, &stats);
+  ASSERT_TRUE(stats.attributes[0].from_surface);
+  EXPECT_FALSE(stats.attributes[1].from_surface);
   DecodeStats ds;
-  const Mesh whole = decode_or_die(file, DecodeOptions(), &ds);
-  DecodeOptions lod;
-  lod.max_anchors = 5;
-  const Mesh coarse = decode_or_die(file, lod, &ds);
-  EXPECT_LT(ds.anchors, stats.anchors);
-  ASSERT_EQ(coarse.attributes.size(), whole.attributes.size());
-  for (size_t i = 0; i < whole.attributes.size(); ++i) {
-    EXPECT_EQ(coarse.attributes[i].values, whole.attributes[i].values);
-    EXPECT_EQ(coarse.attributes[i].corners, whole.attributes[i].corners);
-  }
+  const Mesh out = decode_or_die(file, DecodeOptions(), &ds);
+  EXPECT_LE(largest_error(input, out, stats.new_index, 0), stats.attributes[0].max_error + 1e-9);
+  // The decoded normals coded again over the decoded mesh: the same bytes
+  // from the surface, more from their neighbours alone.
+  const CornerTable table = build_corner_table(out.num_vertices(), out.triangles);
+  AttributeCoding from_surface, from_neighbours;
+  const size_t with = encode_attribute_section(out.attributes[0], table, 8, &out.positions, &from_surface).size();
+  const size_t without = encode_attribute_section(out.attributes[0], table, 8, nullptr, &from_neighbours).size();
+  EXPECT_TRUE(from_surface.surface);
+  EXPECT_FALSE(from_neighbours.surface);
+  EXPECT_EQ(with + 8, stats.attributes[0].bytes);
+  EXPECT_LT(with, without * 3 / 4);
 }
 
 TEST(AttributeRoundTrip, AFileCutInsideASectionKeepsTheSectionsBeforeIt) {

@@ -132,6 +132,9 @@ struct AttributeStats {
   std::string label;        // attribute_label: "normals", "texture_coordinates", "vertex_colors", "generic:NAME"
   int bits = 0;             // its quantization's (integer-typed: the span's; exact)
   bool per_corner = false;  // coded per corner, with seams; false: one value per vertex
+  // Normals predicted from the decoded surface (smaller where the shape is fine enough; a level of detail or
+  // a decode without the detail layer then skips them); false: from the neighbours' values alone.
+  bool from_surface = false;
   int64_t elements = 0;     // values coded: vertices, or per corner the wedges of corners sharing one
   size_t bytes = 0;         // its section with its framing
   // The largest error of a decoded value against the input: degrees for normals, value units otherwise.
