@@ -73,6 +73,7 @@ int run_info(int argc, char** argv) {
         e.add_bool("per_corner", section.per_corner);
         e.add("elements", section.elements);
         e.add("bits", static_cast<int64_t>(section.bits));
+        e.add("predictor", static_cast<int64_t>(section.predictor));
       }
       sections.push_back(e);
     }
@@ -139,9 +140,13 @@ int run_info(int argc, char** argv) {
       std::printf("  section %zu: of kind %d, which this build does not know, %zu bytes\n", i, section.kind,
                   section.bytes);
     } else {
-      std::printf("  section %zu: %s, %lld %s, %d bits, %zu bytes\n", i, section.attribute.c_str(),
+      static const char* const kPredictors[] = {"", ", predicted from the decoded surface",
+                                                ", predicted from the decoded surface and the neighbours",
+                                                ", predicted from the decoded surface (faces unweighted)",
+                                                ", predicted from the decoded surface (faces by angle)"};
+      std::printf("  section %zu: %s, %lld %s, %d bits%s, %zu bytes\n", i, section.attribute.c_str(),
                   static_cast<long long>(section.elements), section.per_corner ? "values shared by corners" : "per vertex",
-                  section.bits, section.bytes);
+                  section.bits, kPredictors[section.predictor < 5 ? section.predictor : 0], section.bytes);
     }
   }
   return kExitOk;

@@ -21,6 +21,10 @@ constexpr uint8_t kLayoutPerCorner = 1;
 // this build skips as unsupported.
 constexpr uint8_t kPredictorParallelogram = 0;
 constexpr uint8_t kPredictorSurface = 1;  // normals: the decoded surface's, else the parallelogram
+constexpr uint8_t kPredictorBlend = 2;    // normals: predictors 1 and 0 summed on the lattice
+constexpr uint8_t kPredictorFaces = 3;    // normals: 1 with each triangle's unit normal (unweighted)
+constexpr uint8_t kPredictorAngles = 4;   // normals: 1 with unit normals weighted by the corner's angle
+constexpr uint8_t kLastPredictor = kPredictorAngles;
 // The surface normal's scale before the lattice: 2^5 times the lattice's
 // radius, so that its rounding (through the guard band) moves the
 // prediction by a thirty-second of a lattice step at most.
@@ -150,8 +154,11 @@ class Walk {
   }
 
   // The decoded surface's normal at the wedge: the sum of its triangles'
-  // cross products (area-weighted), in the triangles' orientation.
-  static void surface_normal(const CornerTable& t, const Wedge& wedge, const std::vector<double>& positions, double n[3]) {
+  // normals (the cross products of their edges at the corner, in the
+  // triangles' orientation): as they are (area-weighted, predictors 1 and
+  // 2), of unit length (3) or of unit length times the corner's angle (4).
+  static void surface_normal(const CornerTable& t, const Wedge& wedge, const std::vector<double>& positions,
+                             uint8_t predictor, double n[3]) {
     n[0] = n[1] = n[2] = 0;
     for (int32_t c : wedge) {
       const double* p = &positions[3 * static_cast<size_t>(t.vertex(c))];
@@ -159,9 +166,20 @@ class Walk {
       const double* b = &positions[3 * static_cast<size_t>(t.vertex(CornerTable::prev(c)))];
       const double e1[3] = {a[0] - p[0], a[1] - p[1], a[2] - p[2]};
       const double e2[3] = {b[0] - p[0], b[1] - p[1], b[2] - p[2]};
-      n[0] += e1[1] * e2[2] - e1[2] * e2[1];
-      n[1] += e1[2] * e2[0] - e1[0] * e2[2];
-      n[2] += e1[0] * e2[1] - e1[1] * e2[0];
+      double f[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+      if (predictor == kPredictorFaces || predictor == kPredictorAngles) {
+        const double length = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+        if (!(length > 0)) continue;
+        double w = 1 / length;
+        if (predictor == kPredictorAngles) {
+          const double dot = e1[0] * e2[0] + e1[1] * e2[1] + e1[2] * e2[2];
+          w *= std::atan2(length, dot);
+        }
+        for (double& x : f) x *= w;
+      }
+      n[0] += f[0];
+      n[1] += f[1];
+      n[2] += f[2];
     }
   }
 
@@ -299,6 +317,16 @@ int residual_context(int c, const int32_t* r, int32_t previous_max) {
   return c * kBuckets + bucket(m);
 }
 
+// Predictor 2: the surface's lattice point `pred` and the parallelogram's,
+// summed and put back on the lattice (the surface's alone if they cancel).
+void blend(const Walk& walk, const Wedge& wedge, const AttributeQuantizer& q, int32_t* pred) {
+  int32_t neighbours[3];
+  walk.predict(wedge, neighbours);
+  const int64_t sum[3] = {int64_t{pred[0]} + neighbours[0], int64_t{pred[1]} + neighbours[1],
+                          int64_t{pred[2]} + neighbours[2]};
+  if (sum[0] != 0 || sum[1] != 0 || sum[2] != 0) project_to_lattice(sum, q.radius(), pred);
+}
+
 void write_description(const MeshAttribute& a, const AttributeQuantizer& q, bool per_corner, uint8_t predictor,
                        int64_t elements, ByteWriter* out) {
   out->u8(kGabSectionAttribute);
@@ -361,7 +389,7 @@ Coded encode_stream(const MeshAttribute& a, const CornerTable& t, const Attribut
     }
     for (const Wedge& wedge : per_corner ? splitter.split(t, v, joined) : splitter.whole(t, v)) {
       double n[3] = {0, 0, 0};
-      if (predictor == kPredictorSurface) Walk::surface_normal(t, wedge, *positions, n);
+      if (predictor != kPredictorParallelogram) Walk::surface_normal(t, wedge, *positions, predictor, n);
       if (n[0] != 0 || n[1] != 0 || n[2] != 0) {
         surface_prediction(n, q, [&](double x) {
           bool up = false;
@@ -371,6 +399,7 @@ Coded encode_stream(const MeshAttribute& a, const CornerTable& t, const Attribut
           if (near) enc.encode(&models.round_up, up ? 1 : 0);
           return rounded;
         }, pred);
+        if (predictor == kPredictorBlend) blend(walk, wedge, q, pred);
       } else {
         walk.predict(wedge, pred);
       }
@@ -432,14 +461,16 @@ std::vector<uint8_t> encode_attribute_section(const MeshAttribute& a, const Corn
       }
     }
   }
-  // Normals over a decoded surface: the smaller of both predictors.
+  // Normals over a decoded surface: the smallest of every predictor.
   uint8_t predictor = kPredictorParallelogram;
   Coded coded = encode_stream(a, t, q, input, per_corner, predictor, nullptr);
   if (q.lattice() && positions != nullptr) {
-    Coded surface = encode_stream(a, t, q, input, per_corner, kPredictorSurface, positions);
-    if (surface.stream.size() < coded.stream.size()) {
-      coded = std::move(surface);
-      predictor = kPredictorSurface;
+    for (uint8_t other : {kPredictorSurface, kPredictorBlend, kPredictorFaces, kPredictorAngles}) {
+      Coded surface = encode_stream(a, t, q, input, per_corner, other, positions);
+      if (surface.stream.size() < coded.stream.size()) {
+        coded = std::move(surface);
+        predictor = other;
+      }
     }
   }
 
@@ -452,7 +483,7 @@ std::vector<uint8_t> encode_attribute_section(const MeshAttribute& a, const Corn
     coding->bits = q.bits;
     coding->per_corner = per_corner;
     coding->elements = coded.elements;
-    coding->surface = predictor == kPredictorSurface;
+    coding->surface = predictor != kPredictorParallelogram;
     // The error of every input element that reaches the output.
     double decoded[4];
     for (int64_t e = 0; e < a.num_elements(); ++e) {
@@ -481,11 +512,12 @@ Status read_attribute_description(const uint8_t* payload, size_t size, Attribute
     return Status::Error(StatusCode::kUnsupported,
                          "attribute section: value type " + std::to_string(type) + " is unknown");
   }
-  if (predictor != kPredictorParallelogram && !(predictor == kPredictorSurface && kind == 0)) {
+  if (predictor > kLastPredictor || (predictor != kPredictorParallelogram && kind != 0)) {
     return Status::Error(StatusCode::kUnsupported,
                          "attribute section: predictor " + std::to_string(predictor) + " is unknown");
   }
-  d->surface = predictor == kPredictorSurface;
+  d->predictor = predictor;
+  d->surface = predictor != kPredictorParallelogram;
   MeshAttribute& a = d->attribute;
   a = MeshAttribute();
   a.kind = static_cast<AttributeKind>(kind);
@@ -567,13 +599,14 @@ Status decode_attribute_section(const uint8_t* payload, size_t size, const Corne
         return corrupt("attribute section: more elements than its declared " + std::to_string(declared));
       }
       double n[3] = {0, 0, 0};
-      if (d.surface) Walk::surface_normal(t, wedge, *positions, n);
+      if (d.surface) Walk::surface_normal(t, wedge, *positions, d.predictor, n);
       if (n[0] != 0 || n[1] != 0 || n[2] != 0) {
         surface_prediction(n, q, [&](double x) {
           const bool near = dec.decode(&models.near_tie) != 0;
           const bool up = near && dec.decode(&models.round_up) != 0;
           return resolve_prediction(x, near, up);
         }, pred);
+        if (d.predictor == kPredictorBlend) blend(walk, wedge, q, pred);
       } else {
         walk.predict(wedge, pred);
       }

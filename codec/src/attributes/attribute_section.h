@@ -40,8 +40,9 @@ struct AttributeCoding {
 // lattice's, 2..16; float-typed: the grid's, 1..31; integer-typed: ignored,
 // exact). A per-corner attribute with no seam is coded per vertex. Normals,
 // given `positions` (the decoded shape, bit for bit the decoder's), are
-// coded both ways, by the parallelogram and by the decoded surface's normal,
-// and the smaller kept. O(elements + corners), twice for normals.
+// coded three ways, by the parallelogram, by the decoded surface's normal
+// and by both, and the smallest kept. O(elements + corners), three times
+// for normals.
 std::vector<uint8_t> encode_attribute_section(const MeshAttribute& attribute, const CornerTable& table, int bits,
                                               const std::vector<double>* positions, AttributeCoding* coding);
 
@@ -51,7 +52,8 @@ struct AttributeDescription {
   MeshAttribute attribute;  // kind, type, components, name; no values
   AttributeQuantizer quantizer;
   bool per_corner = false;
-  bool surface = false;      // predicted from the decoded surface: needs the whole decoded shape
+  uint8_t predictor = 0;     // docs/format.md 6.4
+  bool surface = false;      // predicted from the decoded surface (predictors 1, 2): needs the whole decoded shape
   uint64_t elements = 0;     // as declared
   size_t stream_offset = 0;  // where the range-coded stream starts in the payload
 };

@@ -28,6 +28,7 @@
 #include "gab/mesh/edge_graph.h"
 #include "gab/mesh/relaxed_reconstruction.h"
 #include "gab/mesh/renumber.h"
+#include "gab/mesh/weld.h"
 #include "pipeline/anchor_layouts.h"
 #include "pipeline/anchor_selection.h"
 #include "pipeline/detail_search.h"
@@ -491,6 +492,20 @@ Status encode_mesh_from(const Mesh& mesh, Mesh* owned, const EncodeOptions& give
   // A geometry-only file is numbered as the mesh its decoder is given.
   EncodeOptions options = given;
   if (options.geometry_only) options.reorder = false;
+  // In traversal order, copies of a vertex (at the same position) are
+  // merged first: the file codes one vertex, their data per corner.
+  Mesh welded;
+  std::vector<int32_t> weld_index;
+  const int32_t merged = options.reorder ? weld_coincident_vertices(mesh, &welded, &weld_index) : 0;
+  if (merged > 0) {
+    if (owned != nullptr) *owned = Mesh();
+    GAB_RETURN_IF_ERROR(encode_mesh_from(welded, &welded, options, file, stats));
+    for (int32_t& v : weld_index) v = stats->new_index[v];
+    stats->new_index = std::move(weld_index);
+    stats->merged_vertices = merged;
+    stats->encode_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return Status::Ok();
+  }
   GAB_RETURN_IF_ERROR(validate_mesh(mesh, "mesh"));
   if (options.geometry_only) {
     GAB_RETURN_IF_ERROR(encode_numbered(mesh, options, {}, file, stats));

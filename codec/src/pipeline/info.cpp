@@ -139,6 +139,7 @@ Status read_gab_info(const uint8_t* data, size_t size, GabFileInfo* info) {
           entry.per_corner = d.per_corner;
           entry.elements = static_cast<int64_t>(d.elements);
           entry.bits = d.quantizer.bits;
+          entry.predictor = d.predictor;
         }
       }
       info->section_list.push_back(std::move(entry));

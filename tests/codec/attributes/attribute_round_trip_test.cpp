@@ -270,6 +270,52 @@ TEST(AttributeRoundTrip, PerCornerValuesWithoutSeamsAreCodedPerVertex) {
   EXPECT_LE(largest_error(m, out, stats.new_index, 0), stats.attributes[0].max_error + 1e-9);
 }
 
+// A triangle soup (every triangle its own vertices, a per-vertex value on
+// each copy) is welded in traversal order: the file codes the torus once,
+// the values per corner; with the input's order kept nothing is merged.
+TEST(AttributeRoundTrip, CopiesOfAVertexAreMergedTheirValuesKeptPerCorner) {
+  const Mesh m = bumpy_torus(16, 10);
+  Mesh soup;
+  MeshAttribute normals = vertex_normals(m);
+  MeshAttribute copies = normals;
+  copies.values.clear();
+  for (int32_t t = 0; t < m.num_triangles(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      const int32_t v = m.triangles[3 * t + k];
+      soup.positions.insert(soup.positions.end(), m.positions.begin() + 3 * v, m.positions.begin() + 3 * v + 3);
+      soup.triangles.push_back(3 * t + k);
+      // Each copy its triangle's own normal: flat shading, a seam at every edge.
+      const double* p0 = &m.positions[3 * static_cast<size_t>(m.triangles[3 * t])];
+      const double* p1 = &m.positions[3 * static_cast<size_t>(m.triangles[3 * t + 1])];
+      const double* p2 = &m.positions[3 * static_cast<size_t>(m.triangles[3 * t + 2])];
+      const double e1[3] = {p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]};
+      const double e2[3] = {p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]};
+      copies.values.insert(copies.values.end(), {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                                                 e1[0] * e2[1] - e1[1] * e2[0]});
+    }
+  }
+  soup.attributes.push_back(copies);
+  EncodeOptions o;
+  o.target_rms_rel = 1e-3;
+  EncodeStats stats;
+  const std::vector<uint8_t> file = encode_or_die(soup, o, &stats);
+  EXPECT_EQ(stats.merged_vertices, soup.num_vertices() - m.num_vertices());
+  EXPECT_EQ(stats.num_vertices, m.num_vertices());
+  DecodeStats ds;
+  const Mesh out = decode_or_die(file, DecodeOptions(), &ds);
+  EXPECT_EQ(out.num_vertices(), m.num_vertices());
+  ASSERT_EQ(out.attributes.size(), 1u);
+  EXPECT_TRUE(out.attributes[0].per_corner());
+  EXPECT_LE(largest_error(soup, out, stats.new_index, 0), stats.attributes[0].max_error + 1e-9);
+  // Kept order: every copy stays a vertex.
+  o.reorder = false;
+  EncodeStats kept;
+  encode_or_die(soup, o, &kept);
+  EXPECT_EQ(kept.merged_vertices, 0);
+  EXPECT_EQ(kept.num_vertices, soup.num_vertices());
+  EXPECT_GT(kept.bytes, 2 * stats.bytes);
+}
+
 TEST(AttributeRoundTrip, GabInfoListsTheSections) {
   const Mesh input = attributed_torus();
   EncodeOptions o;

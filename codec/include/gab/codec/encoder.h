@@ -69,7 +69,8 @@ struct EncodeOptions {
   // Drop the input's vertex numbering (flag kGabFlagReordered; the default): the decoded mesh is numbered in
   // the connectivity coder's traversal order (EncodeStats::new_index maps input vertices to decoded ones),
   // its attributes with it, which saves the vertex order block (EncodeStats::order_bytes: 1-2 bytes a
-  // vertex). false keeps the input's numbering at that price, for data keyed by vertex index outside the
+  // vertex); copies of a vertex (equal coordinates: a file split along seams, a triangle soup) are merged
+  // into one, their attributes kept per corner (EncodeStats::merged_vertices). false keeps the input's numbering at that price, for data keyed by vertex index outside the
   // file. Either way the triangles come back as a set: in the coder's order, each from the corner it
   // chooses, orientation kept. A geometry-only file keeps the numbering of the mesh its decoder is given,
   // whatever this says.
@@ -162,6 +163,9 @@ struct EncodeStats {
   size_t order_bytes = 0;         // the vertex order block with its framing (0 when reordered or geometry only)
   bool reordered = false;         // the file is numbered in traversal order (EncodeOptions::reorder)
   std::vector<int32_t> new_index;  // reordered: the decoded mesh's number for each input vertex
+  // Reordered: input vertices merged into an earlier copy at the same position (weld.h); the decoded mesh
+  // has num_vertices - merged_vertices vertices, and new_index maps copies onto one.
+  int32_t merged_vertices = 0;
   size_t geometry_bytes = 0;      // header and chunks
   size_t attribute_bytes = 0;     // the attribute sections with their framing
   std::vector<AttributeStats> attributes;  // in the mesh's order
