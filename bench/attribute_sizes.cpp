@@ -5,7 +5,11 @@
 // against the whole decode's. Optionally writes the mesh with its normals
 // as PLY (for Draco's side of bench/attribute_compare.py).
 //
-//   attribute_sizes [--bits 8,10] [--error 1e-3] [--write-ply DIR] MESH...
+// With --own, a mesh's own attributes (normals, texture coordinates,
+// colours, ... as read) instead: every section's bytes and the sections'
+// decode time against the geometry's.
+//
+//   attribute_sizes [--bits 8,10] [--error 1e-3] [--write-ply DIR] [--own] MESH...
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -60,6 +64,7 @@ int main(int argc, char** argv) {
   std::vector<int> bits = {8, 10};
   double error = 1e-3;
   std::string ply_dir;
+  bool own = false;
   std::vector<std::string> meshes;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -67,6 +72,8 @@ int main(int argc, char** argv) {
       bits = parse_list(argv[++i]);
     } else if (a == "--error" && i + 1 < argc) {
       error = std::atof(argv[++i]);
+    } else if (a == "--own") {
+      own = true;
     } else if (a == "--write-ply" && i + 1 < argc) {
       ply_dir = argv[++i];
     } else {
@@ -82,8 +89,10 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "%s\n", s.message().c_str());
       return 1;
     }
-    mesh.attributes.clear();
-    mesh.attributes.push_back(area_weighted_normals(mesh));
+    if (!own) {
+      mesh.attributes.clear();
+      mesh.attributes.push_back(area_weighted_normals(mesh));
+    }
     const std::string name = path.substr(path.find_last_of('/') + 1);
     if (!ply_dir.empty()) {
       gab::PlyWriteOptions ply;
@@ -109,9 +118,11 @@ int main(int argc, char** argv) {
       }
       std::sort(attr_s.begin(), attr_s.end());
       std::sort(total_s.begin(), total_s.end());
-      const gab::AttributeStats& as = stats.attributes[0];
-      std::printf("%-16s %8d %4d %10zu %9.3f %10.3f %9.4f %9.4f\n", name.c_str(), mesh.num_vertices(), b, as.bytes,
-                  8.0 * static_cast<double>(as.bytes) / mesh.num_vertices(), as.max_error, attr_s[2], total_s[2]);
+      for (const gab::AttributeStats& as : stats.attributes) {
+        std::printf("%-16s %8d %4d %10zu %9.3f %10.3f %9.4f %9.4f  %s%s\n", name.c_str(), stats.num_vertices, as.bits,
+                    as.bytes, 8.0 * static_cast<double>(as.bytes) / stats.num_vertices, as.max_error, attr_s[2],
+                    total_s[2], as.label.c_str(), as.from_surface ? " (surface)" : "");
+      }
     }
   }
   return 0;
