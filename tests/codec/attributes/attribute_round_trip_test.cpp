@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "attributes/attribute_section.h"
-#include "attributes/corner_correspondence.h"
 #include "attributes/corner_table.h"
+#include "common/attribute_checks.h"
 #include "common/gab_files.h"
 #include "common/test_meshes.h"
 #include "gab/codec/decoder.h"
@@ -22,8 +22,6 @@ namespace {
 using testing_util::bumpy_torus;
 using testing_util::decode_or_die;
 using testing_util::encode_or_die;
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Area-weighted vertex normals of the mesh's triangles.
 MeshAttribute vertex_normals(const Mesh& m) {
@@ -98,36 +96,8 @@ Mesh attributed_torus() {
   return m;
 }
 
-double angle_degrees(const double* a, const double* b) {
-  const double la = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-  const double lb = std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
-  const double c = (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (la * lb);
-  return std::acos(std::min(1.0, std::max(-1.0, c))) * 180 / kPi;
-}
-
-// The input element's value at each decoded corner (or vertex) against the
-// decoded one: the largest error (degrees for normals).
 double largest_error(const Mesh& input, const Mesh& decoded, const std::vector<int32_t>& new_index, size_t which) {
-  const MeshAttribute& a = input.attributes[which];
-  const MeshAttribute& d = decoded.attributes[which];
-  const size_t k = static_cast<size_t>(a.components);
-  std::vector<int32_t> input_corner;
-  std::vector<int32_t> renamed(input.triangles.size());
-  for (size_t i = 0; i < renamed.size(); ++i) renamed[i] = new_index.empty() ? input.triangles[i] : new_index[input.triangles[i]];
-  EXPECT_TRUE(match_corners(renamed, decoded.triangles, &input_corner).ok());
-  double worst = 0;
-  for (size_t c = 0; c < decoded.triangles.size(); ++c) {
-    const int32_t ci = input_corner[c];
-    const int32_t v_in = input.triangles[ci];
-    const double* x = &a.values[k * static_cast<size_t>(a.per_corner() ? a.corners[ci] : v_in)];
-    const double* y = &d.values[k * static_cast<size_t>(d.per_corner() ? d.corners[c] : decoded.triangles[c])];
-    if (a.kind == AttributeKind::kNormal) {
-      worst = std::max(worst, angle_degrees(x, y));
-    } else {
-      for (size_t i = 0; i < k; ++i) worst = std::max(worst, std::fabs(x[i] - y[i]));
-    }
-  }
-  return worst;
+  return testing_util::largest_attribute_error(input, decoded, new_index, which);
 }
 
 TEST(AttributeRoundTrip, EveryKindComesBackWithinItsQuantizationInEitherNumbering) {
