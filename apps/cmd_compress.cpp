@@ -27,7 +27,7 @@ int run_compress(int argc, char** argv) {
   Args args;
   if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--error", "--linf", "--bits", "--weight", "--batch-fraction", "--batch", "--chunk-growth",
                    "--initial", "--threads", "--layout", "--detail", "--ordering", "--solver", "--order-out"},
-                  {"--json", "--geometry-only", "--refine", "--reorder", "--quiet", "--strict"})) {
+                  {"--json", "--geometry-only", "--refine", "--reorder", "--keep-order", "--quiet", "--strict"})) {
     return usage_error("compress", args.error());
   }
   if (!args.positionals().empty()) return usage_error("compress", "unexpected argument " + args.positionals()[0]);
@@ -59,12 +59,20 @@ int run_compress(int argc, char** argv) {
   options.bits = static_cast<int>(bits);
   options.geometry_only = args.has("--geometry-only");
   options.refine = args.has("--refine");
-  options.reorder = args.has("--reorder");
-  if (options.reorder && options.geometry_only) {
+  // The numbering: the traversal's by default (the smallest file; --reorder
+  // spells it out), the input's with --keep-order (priced: the order block)
+  // or --geometry-only (no connectivity to traverse).
+  if (args.has("--reorder") && args.has("--keep-order")) {
+    return usage_error("compress", "give --reorder (the default) or --keep-order, not both");
+  }
+  if (args.has("--reorder") && options.geometry_only) {
     return usage_error("compress", "--reorder codes the connectivity: it cannot go with --geometry-only");
   }
+  options.reorder = !args.has("--keep-order") && !options.geometry_only;
   if (args.has("--order-out") && !options.reorder) {
-    return usage_error("compress", "--order-out writes the numbering --reorder makes: without it the numbering is kept");
+    return usage_error("compress", std::string("--order-out writes the map onto the traversal's numbering: ") +
+                                       (options.geometry_only ? "--geometry-only" : "--keep-order") +
+                                       " keeps the input's numbering");
   }
   // The chunk layout (encoder.h FileLayout); "selection" files are readable by older builds.
   const std::string layout = args.get("--layout", "smaller");

@@ -89,8 +89,8 @@ int run_diff(int argc, char** argv) {
 
   // Per-vertex figures only where vertex i of A is vertex i of B (or
   // map[i], with --map): the same count and the same triangles by index.
-  // A renumbered mesh (a --reorder decode, another tool's output) would
-  // otherwise pair unrelated vertices.
+  // A renumbered mesh (a decode in traversal order, compress's default;
+  // another tool's output) would otherwise pair unrelated vertices.
   std::string why_not;
   Mesh b_in_a_order;
   const Mesh* paired = &b;
@@ -110,7 +110,8 @@ int run_diff(int argc, char** argv) {
     if (oriented_triangle_set(a.triangles) != oriented_triangle_set(paired->triangles)) {
       why_not = args.has("--map") ? "the triangles differ by vertex index under --map " + args.get("--map")
                                   : "the triangles differ by vertex index: the numberings do not correspond (a "
-                                    "renumbered mesh, such as a --reorder decode; --map FILE pairs them)";
+                                    "renumbered mesh, such as a decode in traversal order, gab compress's "
+                                    "default; --map FILE pairs them: compress --order-out writes it)";
     }
   }
   const double diagonal = bounding_box_diagonal(a);

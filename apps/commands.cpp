@@ -9,16 +9,17 @@ const std::vector<Command>& commands() {
   static const std::vector<Command> table = {
       {"compress", run_compress,
        {"-i IN -o OUT.gab [--anchors K | --error E | --linf E] [--bits Q] [--weight W]",
-        "[--geometry-only | --reorder] [--detail auto|on|off] [--solver auto|global|iterative]",
+        "[--keep-order] [--geometry-only] [--detail auto|on|off] [--solver auto|global|iterative]",
         "[--refine] [--order-out FILE] [--threads T] [--json] [--quiet] [--strict]",
         "(tuning: --batch-fraction F --chunk-growth G --initial K --layout smaller|levels|selection",
         "         --ordering auto|amd|nd)"},
        "compress a mesh's geometry with geometry-aware anchors (default --error 0.001: relative\n"
        "vertex RMS over the bounding-box diagonal; q picked from the target, 12 for --anchors);\n"
-       "the connectivity and the vertex numbering are kept, triangles as a set (their order is the\n"
-       "coder's). --reorder drops the numbering for a smaller file: the decoded mesh is numbered in\n"
-       "the coder's traversal order, so per-vertex data kept outside the file no longer lines up\n"
-       "(--order-out FILE writes the decoded index of each input vertex, a line each).\n"
+       "the connectivity is kept, triangles as a set (their order is the coder's), and the decoded\n"
+       "mesh is numbered in the coder's traversal order, the smallest file (--reorder, the default,\n"
+       "spelled out): --order-out FILE writes the decoded index of each input vertex, a line each,\n"
+       "for per-vertex data kept outside the file. --keep-order keeps the input's numbering (the old\n"
+       "default) at the price of the vertex order block; --geometry-only keeps it too.\n"
        "Below about 3e-4 the anchors stop early and a detail layer codes every vertex's residual;\n"
        "--detail auto keeps the smaller file, on/off force it (off may miss a target). --solver:\n"
        "the shape the anchors make, recorded in the file: iterative (linear-cost steps; the default)\n"

@@ -152,6 +152,7 @@ extern "C" void gab_compress_options_init(gab_compress_options* options, size_t 
   gab_compress_options o;
   std::memset(&o, 0, sizeof o);
   o.weight = gab::EncodeOptions().weight;
+  o.reorder = 1;  // the encoder's default (issue 34): a zero here, set by the caller, keeps the numbering
   o.threads = 1;
   o.detail = GAB_DETAIL_AUTO;
   gab::capi::init_options(o, options, size);
@@ -183,6 +184,7 @@ extern "C" int gab_compress(const double* positions, int32_t n, const int32_t* t
   // The target as given: 0 is not "the default" here but a missing rule (the encoder says so).
   gab::EncodeOptions options;
   options.target_rms_rel = target_rms_rel;
+  options.reorder = false;  // gab.h's contract: the decoded mesh keeps the numbering (the encoder's default drops it)
   return gab::capi::compress("gab_compress", positions, n, triangles, t, &options, nullptr, out, out_size, nullptr,
                              message, message_size);
 }

@@ -4,11 +4,11 @@ arrays in and out).
 
     import gab
     V, F = gab.read_mesh("bunny.off")        # (n, 3) float64, (t, 3) int32
-    data = gab.compress(V, F, error=1e-3)    # bytes: a .gab file
-    V2, F2 = gab.decompress(data)            # same vertex numbering, V2 within the target
+    data, stats = gab.compress(V, F, error=1e-3, return_stats=True)  # bytes: a .gab file
+    W, G = gab.decompress(data)              # in traversal order: W[stats.order] lines up with V
     V1, _ = gab.decompress(data, anchors=100)  # a coarser level: the first 100 anchors
-    data, stats = gab.compress(V, F, reorder=True, return_stats=True)
-    W, G = gab.decompress(data)              # W[stats.order] lines up with V
+    data = gab.compress(V, F, reorder=False) # the input's numbering kept (priced: stats.order_bytes)
+    V2, F2 = gab.decompress(data)            # V2 lines up with V, within the target
 
     chol = gab.Cholesky(A)                   # A: scipy.sparse (any format), dense, or (indptr, indices, data);
     x = chol.solve(b)                        #    symmetric or its lower triangle
@@ -192,10 +192,11 @@ class CompressStats:
     diagonal; byte counts include each part's framing, and bytes =
     geometry_bytes + connectivity_bytes + order_bytes.
 
-    order: with reorder=True, an (n,) int32 array, order[i] the decoded
-    mesh's index of input vertex i (what `gab compress --order-out` writes):
-    W[order] lines up with V, and per-vertex data moves onto the decoded mesh
-    by data_decoded[order] = data. None when the numbering is kept."""
+    order: with reorder=True (the default), an (n,) int32 array, order[i]
+    the decoded mesh's index of input vertex i (what `gab compress
+    --order-out` writes): W[order] lines up with V, and per-vertex data moves
+    onto the decoded mesh by data_decoded[order] = data. None when the
+    numbering is kept (reorder=False)."""
 
     n: int  # vertices
     faces: int  # triangles
@@ -205,7 +206,7 @@ class CompressStats:
     bytes: int  # the whole file
     geometry_bytes: int  # header and chunks (detail and refinement chunks among them)
     connectivity_bytes: int  # the triangles
-    order_bytes: int  # the vertex order block (0 with reorder)
+    order_bytes: int  # the vertex order block (0 with reorder, the default)
     detail_bytes: int  # the detail chunk (0 without one)
     refinement_bytes: int  # the refinement chunk (0 without one)
     bpv_geometry: float  # geometry bits per vertex
@@ -219,7 +220,7 @@ class CompressStats:
     solver: str  # the file's reconstruction operator: 'global' or 'iterative'
     ordering: str  # the factorizations' ordering: 'amd' or 'nd'
     target_met: bool  # every error target met (else out of reach at these bits)
-    reordered: bool  # numbered in the coder's order (reorder=True): order maps it
+    reordered: bool  # numbered in the coder's order (reorder=True, the default): order maps it
     detail: bool  # ends with a detail chunk
     refined: bool  # ends with a refinement chunk
     levels: bool  # in the level layout
@@ -242,19 +243,22 @@ def _stats_of(report):
                          ordering=_ORDERING_NAMES.get(report.ordering, str(report.ordering)), order=order, **fields)
 
 
-def compress(V, F, error=None, anchors=None, linf=None, bits=None, weight=None, reorder=False, threads=1,
+def compress(V, F, error=None, anchors=None, linf=None, bits=None, weight=None, reorder=True, threads=1,
              detail="auto", refine=False, ordering="auto", solver="auto", return_stats=False):
     """Compresses a mesh to a .gab file, returned as bytes; with
     return_stats=True, as (bytes, CompressStats): sizes, anchors, bits, the
-    achieved errors and, with reorder=True, the map onto the decoded mesh's
-    numbering (stats.order).
+    achieved errors and the map onto the decoded mesh's numbering
+    (stats.order; None with reorder=False).
 
     V: (n, 3) coordinates, F: (t, 3) vertex indices (0-based). Stopping rules,
     any combination, the first met stops: error (relative vertex RMS over the
     bounding-box diagonal, the CLI's --error), anchors (a count), linf
     (relative max vertex error); with none of them, error=1e-3. bits: q per
     coordinate (2..24; None: from the target); weight: anchor weight w (None:
-    100); reorder: number the decoded mesh in the coder's order (smaller file);
+    100); reorder: True (the default) numbers the decoded mesh in the coder's
+    traversal order, the smallest file; False keeps the input's numbering,
+    priced by the vertex order block (the CLI's --keep-order, once the
+    default);
     threads: for the factorizations (0: every core; the file is the same for
     any count); detail: 'auto', 'on' or 'off'; refine: the least-squares
     refinement chunk; ordering: the factorizations' ('auto', 'amd' or 'nd',
@@ -262,8 +266,8 @@ def compress(V, F, error=None, anchors=None, linf=None, bits=None, weight=None, 
     ('auto', 'global' or 'iterative', as the CLI's --solver: iterative decodes
     in time linear in n, global makes files about 10% smaller at 1e-3 and
     decodes an order of magnitude slower; auto is iterative, or global with
-    refine). The decoded mesh keeps the vertex numbering (unless reorder)
-    and the triangles as a set of oriented triangles."""
+    refine). The triangles come back as a set of oriented triangles, on the
+    decoded numbering."""
     call = "gab.compress"
     V = _reals(call, V, "V", 3)
     F = _int32(call, F, "F", 3)

@@ -43,7 +43,7 @@ def relative_rms(V, W):
 class CodecTest(unittest.TestCase):
     def test_round_trip_keeps_numbering_and_meets_the_target(self):
         V, F = bumpy_torus(40, 30)
-        data = gab.compress(V, F, error=1e-3)
+        data = gab.compress(V, F, error=1e-3, reorder=False)
         self.assertIsInstance(data, bytes)
         self.assertLess(len(data), V.nbytes // 10)
         W, G = gab.decompress(data)
@@ -53,6 +53,33 @@ class CodecTest(unittest.TestCase):
         self.assertEqual(oriented_set(G), oriented_set(F))
         self.assertLessEqual(relative_rms(V, W), 1e-3)
         self.assertGreater(relative_rms(V, W), 0)
+
+    def test_the_default_numbers_in_traversal_order_and_reorder_false_keeps_the_input_s(self):
+        """Since gab carries whole assets the default file is the smallest:
+        the decoded mesh is numbered in the coder's traversal order and
+        stats.order maps it; reorder=False keeps the input's numbering
+        vertex by vertex, priced by the vertex order block."""
+        V, F = bumpy_torus(30, 24)
+        data, stats = gab.compress(V, F, error=1e-3, return_stats=True)
+        self.assertEqual(data, gab.compress(V, F, error=1e-3, reorder=True))
+        self.assertTrue(stats.reordered)
+        self.assertEqual(stats.order_bytes, 0)
+        self.assertEqual(sorted(stats.order.tolist()), list(range(len(V))))  # a permutation
+        W, G = gab.decompress(data)
+        self.assertEqual(W.shape, V.shape)
+        self.assertGreater(relative_rms(V, W), 0.01)  # another numbering, unmapped
+        self.assertAlmostEqual(relative_rms(V, W[stats.order]), stats.rms_rel, delta=1e-12)
+        self.assertEqual(oriented_set(stats.order[F]), oriented_set(G))
+        kept, kept_stats = gab.compress(V, F, error=1e-3, reorder=False, return_stats=True)
+        self.assertFalse(kept_stats.reordered)
+        self.assertIsNone(kept_stats.order)
+        self.assertGreater(kept_stats.order_bytes, 0)
+        self.assertLess(len(data), len(kept))
+        U, H = gab.decompress(kept)
+        self.assertEqual(oriented_set(H), oriented_set(F))
+        self.assertAlmostEqual(relative_rms(V, U), kept_stats.rms_rel, delta=1e-12)
+        diagonal = np.linalg.norm(V.max(0) - V.min(0))
+        self.assertLessEqual(np.max(np.linalg.norm(V - U, axis=1)) / diagonal, kept_stats.linf_rel * (1 + 1e-12))
 
     def test_a_file_cut_short_warns_and_decodes_its_complete_chunks(self):
         V, F = bumpy_torus(60, 40)
@@ -79,11 +106,12 @@ class CodecTest(unittest.TestCase):
 
     def test_anchor_prefixes_are_coarser_levels(self):
         V, F = bumpy_torus(30, 20)
-        data = gab.compress(V, F, anchors=120, detail="off", bits=12)
-        errors = [relative_rms(V, gab.decompress(data, anchors=k)[0]) for k in (10, 40, 120)]
+        data, stats = gab.compress(V, F, anchors=120, detail="off", bits=12, return_stats=True)
+        errors = [relative_rms(V, gab.decompress(data, anchors=k)[0][stats.order]) for k in (10, 40, 120)]
         self.assertGreater(errors[0], errors[1])
         self.assertGreater(errors[1], errors[2])
-        self.assertEqual(relative_rms(V, gab.decompress(data)[0]), errors[2])
+        self.assertEqual(relative_rms(V, gab.decompress(data)[0][stats.order]), errors[2])
+        self.assertAlmostEqual(errors[2], stats.rms_rel, delta=1e-12)
 
     def test_options_change_the_file(self):
         V, F = bumpy_torus(20, 16)
@@ -91,10 +119,10 @@ class CodecTest(unittest.TestCase):
         self.assertEqual(base, gab.compress(V, F, error=1e-3))  # the default rule
         self.assertEqual(base, gab.compress(V, F, threads=2))  # threads never change the bytes
         self.assertNotEqual(base, gab.compress(V, F, error=3e-3))
-        W, _ = gab.decompress(gab.compress(V, F, linf=2e-3))
+        W, _ = gab.decompress(gab.compress(V, F, linf=2e-3, reorder=False))  # vertex by vertex: the numbering kept
         self.assertLessEqual(np.max(np.linalg.norm(V - W, axis=1)) / np.linalg.norm(V.max(0) - V.min(0)), 2e-3)
-        reordered = gab.compress(V, F, reorder=True)
-        self.assertLess(len(reordered), len(base))
+        self.assertEqual(base, gab.compress(V, F, reorder=True))  # the default numbering: the traversal's
+        self.assertLess(len(base), len(gab.compress(V, F, reorder=False)))  # the kept one is priced
         self.assertNotEqual(base, gab.compress(V, F, weight=10))
         # auto is AMD on a small mesh; the file records the ordering.
         self.assertEqual(base, gab.compress(V, F, ordering="amd"))
@@ -107,9 +135,9 @@ class CodecTest(unittest.TestCase):
 
     def test_inputs_of_other_types_and_layouts(self):
         V, F = bumpy_torus(12, 10)
-        data = gab.compress(V.astype(np.float32).tolist(), F.astype(np.int64))
+        data, stats = gab.compress(V.astype(np.float32).tolist(), F.astype(np.int64), return_stats=True)
         W, G = gab.decompress(bytearray(data))
-        self.assertEqual(oriented_set(G), oriented_set(F))
+        self.assertEqual(oriented_set(G), oriented_set(stats.order[F]))
         self.assertEqual(gab.decompress(memoryview(data))[0].tolist(), W.tolist())
 
     def test_errors_raise_with_the_library_message(self):
@@ -233,8 +261,8 @@ class CodecTest(unittest.TestCase):
         with self.assertRaises(dataclasses.FrozenInstanceError):
             stats.bits = 3
         # The numbering kept: no map, the order block priced; a detail layer by the global solver.
-        kept, same = gab.compress(V, F, return_stats=True)
-        self.assertEqual(kept, gab.compress(V, F))
+        kept, same = gab.compress(V, F, reorder=False, return_stats=True)
+        self.assertEqual(kept, gab.compress(V, F, reorder=False))
         self.assertIsNone(same.order)
         self.assertFalse(same.reordered)
         self.assertGreater(same.order_bytes, 0)
@@ -346,9 +374,10 @@ class CodecTest(unittest.TestCase):
                 continue
             with self.subTest(mesh=name):
                 V, F = gab.read_mesh(os.path.join(folder, name))
-                W, G = gab.decompress(gab.compress(V, F, error=1e-3, threads=0))
-                self.assertEqual(oriented_set(G), oriented_set(F))
-                self.assertLessEqual(relative_rms(V, W), 1e-3)
+                data, stats = gab.compress(V, F, error=1e-3, threads=0, return_stats=True)
+                W, G = gab.decompress(data)
+                self.assertTrue(oriented_set(G) == oriented_set(stats.order[F]))  # (a diff of them takes minutes)
+                self.assertLessEqual(relative_rms(V, W[stats.order]), 1e-3)
 
 
 if __name__ == "__main__":

@@ -3,11 +3,13 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "run_gab.h"
 
@@ -70,7 +72,8 @@ TEST(CodecCliTest, CompressDecompressInfoRoundTrip) {
   const std::string in = write_scratch_file("rt.off", torus_off(40, 20));
   const std::string gab = write_scratch_file("rt.gab", "");
   const std::string out = write_scratch_file("rt-out.ply", "");
-  CommandResult c = run_gab("compress -i " + in + " -o " + gab + " --anchors 60 --json");
+  const std::string map = write_scratch_file("rt.map", "");
+  CommandResult c = run_gab("compress -i " + in + " -o " + gab + " --anchors 60 --order-out " + map + " --json");
   ASSERT_EQ(c.exit_code, 0) << c.err;
   ASSERT_TRUE(is_one_json_line(c.out)) << c.out;
   for (const char* key : {"n", "faces", "anchors", "bits", "bytes", "geometry_bytes", "connectivity_bytes",
@@ -93,8 +96,9 @@ TEST(CodecCliTest, CompressDecompressInfoRoundTrip) {
     EXPECT_FALSE(std::isnan(json_number(d.out, key))) << key;
   }
   EXPECT_EQ(json_number(d.out, "anchors"), 60);
-  // The decoded mesh is what the encoder reported, in the same vertex order.
-  CommandResult diff = run_gab("diff " + in + " " + out + " --json --samples 0");
+  // The decoded mesh is what the encoder reported, in the traversal's
+  // vertex order (the default) that the map pairs back.
+  CommandResult diff = run_gab("diff " + in + " " + out + " --map " + map + " --json --samples 0");
   ASSERT_EQ(diff.exit_code, 0) << diff.err;
   EXPECT_NEAR(json_number(diff.out, "rms_rel"), json_number(c.out, "rms_rel"), 1e-9);
   EXPECT_NEAR(json_number(diff.out, "linf_rel"), json_number(c.out, "linf_rel"), 1e-9);
@@ -163,14 +167,22 @@ TEST(CodecCliTest, ProgressLineOnATerminalOnceTheWorkRunsLongAndQuietSilencesIt)
   }
 }
 
-TEST(CodecCliTest, ReorderDropsTheVertexOrderAndSaysSo) {
+// The numbering (a contract change, docs/cli.md): by default the decoded
+// mesh is numbered in the coder's traversal order and the order block is
+// gone; --reorder spells the default out; --keep-order keeps the input's
+// numbering and pays for it.
+TEST(CodecCliTest, TheDefaultDropsTheVertexOrderAndKeepOrderPaysForIt) {
   const std::string in = write_scratch_file("reorder.off", torus_off(40, 20));
   const std::string kept = write_scratch_file("kept.gab", ""), reordered = write_scratch_file("reordered.gab", "");
+  const std::string spelled = write_scratch_file("reordered-spelled.gab", "");
   const std::string out = write_scratch_file("reordered-out.off", "");
-  const CommandResult a = run_gab("compress -i " + in + " -o " + kept + " --json");
-  const CommandResult b = run_gab("compress -i " + in + " -o " + reordered + " --reorder --json");
+  const CommandResult a = run_gab("compress -i " + in + " -o " + kept + " --keep-order --json");
+  const CommandResult b = run_gab("compress -i " + in + " -o " + reordered + " --json");
+  const CommandResult r = run_gab("compress -i " + in + " -o " + spelled + " --reorder --json");
   ASSERT_EQ(a.exit_code, 0) << a.err;
   ASSERT_EQ(b.exit_code, 0) << b.err;
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_all(spelled), read_all(reordered));  // --reorder: the default, spelled out
   EXPECT_NE(a.out.find("\"reordered\": false"), std::string::npos) << a.out;
   EXPECT_NE(b.out.find("\"reordered\": true"), std::string::npos) << b.out;
   EXPECT_EQ(json_number(b.out, "order_bytes"), 0);
@@ -179,9 +191,15 @@ TEST(CodecCliTest, ReorderDropsTheVertexOrderAndSaysSo) {
   EXPECT_GT(json_number(a.out, "order_bytes"), 0);
   EXPECT_LT(json_number(a.out, "order_bytes"), 82);
   EXPECT_EQ(json_number(b.out, "connectivity_bytes"), json_number(a.out, "connectivity_bytes"));
+  EXPECT_LT(json_number(b.out, "bytes"), json_number(a.out, "bytes"));
+  // The human line names the order block either way (0 by default).
+  const CommandResult human = run_gab("compress -i " + in + " -o " + reordered);
+  ASSERT_EQ(human.exit_code, 0) << human.err;
+  EXPECT_NE(human.out.find(", vertex order 0); "), std::string::npos) << human.out;
   const CommandResult d = run_gab("decompress -i " + reordered + " -o " + out + " --json");
   ASSERT_EQ(d.exit_code, 0) << d.err;
   EXPECT_NE(d.out.find("\"reordered\": true"), std::string::npos) << d.out;
+  EXPECT_EQ(json_number(d.out, "n"), 800);
   EXPECT_GE(json_number(d.out, "connectivity_s"), 0);
   const CommandResult i = run_gab("info " + reordered);
   EXPECT_NE(i.out.find("(valence coded), vertices in traversal order"), std::string::npos) << i.out;
@@ -189,18 +207,92 @@ TEST(CodecCliTest, ReorderDropsTheVertexOrderAndSaysSo) {
   EXPECT_NE(k.out.find("(valence coded), vertex order " + std::to_string(static_cast<int>(json_number(a.out, "order_bytes")))),
             std::string::npos)
       << k.out;
+  // --geometry-only keeps the numbering (no connectivity to traverse), with
+  // or without --keep-order; --reorder asks for what it cannot do.
+  const CommandResult geometry = run_gab("compress -i " + in + " -o " + kept + " --geometry-only --json");
+  ASSERT_EQ(geometry.exit_code, 0) << geometry.err;
+  EXPECT_NE(geometry.out.find("\"reordered\": false"), std::string::npos) << geometry.out;
+  EXPECT_EQ(json_number(geometry.out, "order_bytes"), 0);
+  const std::string geometry_file = read_all(kept);
+  const CommandResult geometry_kept = run_gab("compress -i " + in + " -o " + kept + " --geometry-only --keep-order");
+  ASSERT_EQ(geometry_kept.exit_code, 0) << geometry_kept.err;
+  EXPECT_EQ(read_all(kept), geometry_file);
   const CommandResult both = run_gab("compress -i " + in + " -o " + kept + " --reorder --geometry-only");
   EXPECT_EQ(both.exit_code, 2);
-  EXPECT_NE(both.err.find("--reorder codes the connectivity: it cannot go with --geometry-only"), std::string::npos);
+  EXPECT_EQ(both.err.substr(0, both.err.find('\n')),
+            "gab compress: --reorder codes the connectivity: it cannot go with --geometry-only");
+  const CommandResult contradiction = run_gab("compress -i " + in + " -o " + kept + " --reorder --keep-order");
+  EXPECT_EQ(contradiction.exit_code, 2);
+  EXPECT_EQ(contradiction.err.substr(0, contradiction.err.find('\n')),
+            "gab compress: give --reorder (the default) or --keep-order, not both");
+}
+
+// --keep-order: vertex i of the decoded mesh is input vertex i, within the
+// error the encoder reports, for whoever keys data by vertex index.
+TEST(CodecCliTest, KeepOrderDecodesVertexByVertexOntoTheInput) {
+  const std::string in = write_scratch_file("keep-order.off", torus_off(36, 18));
+  const std::string file = write_scratch_file("keep-order.gab", "");
+  const std::string out = write_scratch_file("keep-order-out.off", "");
+  const CommandResult c = run_gab("compress -i " + in + " -o " + file + " --keep-order --error 2e-3 --json");
+  ASSERT_EQ(c.exit_code, 0) << c.err;
+  ASSERT_EQ(run_gab("decompress -i " + file + " -o " + out).exit_code, 0);
+  auto positions = [](const std::string& off) {
+    std::istringstream s(read_all(off));
+    std::string magic;
+    int n = 0, t = 0, e = 0;
+    s >> magic >> n >> t >> e;
+    std::vector<double> p(3 * static_cast<size_t>(n));
+    for (double& x : p) s >> x;
+    return p;
+  };
+  const std::vector<double> a = positions(in), b = positions(out);
+  ASSERT_EQ(a.size(), b.size());
+  ASSERT_EQ(a.size(), 3u * 36 * 18);
+  double lo[3] = {a[0], a[1], a[2]}, hi[3] = {a[0], a[1], a[2]};
+  for (size_t i = 0; i < a.size(); ++i) {
+    lo[i % 3] = std::min(lo[i % 3], a[i]);
+    hi[i % 3] = std::max(hi[i % 3], a[i]);
+  }
+  const double diagonal = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                                    (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  double sum2 = 0, max2 = 0;
+  for (size_t v = 0; v < a.size() / 3; ++v) {
+    double d2 = 0;
+    for (size_t k = 0; k < 3; ++k) d2 += (a[3 * v + k] - b[3 * v + k]) * (a[3 * v + k] - b[3 * v + k]);
+    sum2 += d2;
+    max2 = std::max(max2, d2);
+  }
+  // The OFF text rounds each coordinate to 17 digits: the same to 1e-9.
+  const double rms_rel = std::sqrt(sum2 / (a.size() / 3)) / diagonal, linf_rel = std::sqrt(max2) / diagonal;
+  EXPECT_NEAR(rms_rel, json_number(c.out, "rms_rel"), 1e-9);
+  EXPECT_NEAR(linf_rel, json_number(c.out, "linf_rel"), 1e-9);
+  EXPECT_LE(rms_rel, 2e-3 + 1e-9);
+  // So gab diff pairs them with no map.
+  const CommandResult diff = run_gab("diff " + in + " " + out + " --json --samples 0");
+  ASSERT_EQ(diff.exit_code, 0) << diff.err;
+  EXPECT_NEAR(json_number(diff.out, "rms_rel"), json_number(c.out, "rms_rel"), 1e-9);
 }
 
 TEST(CodecCliTest, OrderOutWritesTheNumberingThatDiffMapPairsBack) {
   const std::string in = write_scratch_file("order-out.off", torus_off(40, 20));
   const std::string file = write_scratch_file("order-out.gab", ""), map = write_scratch_file("order-out.map", "");
   const std::string out = write_scratch_file("order-out-decoded.off", "");
-  const CommandResult c = run_gab("compress -i " + in + " -o " + file + " --reorder --order-out " + map + " --json");
+  const CommandResult c = run_gab("compress -i " + in + " -o " + file + " --order-out " + map + " --json");
   ASSERT_EQ(c.exit_code, 0) << c.err;
   ASSERT_EQ(run_gab("decompress -i " + file + " -o " + out).exit_code, 0);
+  // The map: line i the decoded index of input vertex i, a permutation
+  // (--reorder, the default spelled out, writes the same).
+  std::istringstream lines(read_all(map));
+  std::vector<int> order;
+  for (int v; lines >> v;) order.push_back(v);
+  ASSERT_EQ(order.size(), 800u);
+  std::vector<int> sorted = order;
+  std::sort(sorted.begin(), sorted.end());
+  for (int v = 0; v < 800; ++v) ASSERT_EQ(sorted[v], v);
+  EXPECT_NE(order, sorted);  // the traversal renumbers
+  const std::string spelled_map = write_scratch_file("order-out-spelled.map", "");
+  ASSERT_EQ(run_gab("compress -i " + in + " -o " + file + " --reorder --order-out " + spelled_map).exit_code, 0);
+  EXPECT_EQ(read_all(spelled_map), read_all(map));
   // Numbered by the traversal, the decode pairs no vertex with its input
   // one; the map pairs them back to the encoder's own error.
   const CommandResult unpaired = run_gab("diff " + in + " " + out + " --json --samples 1000");
@@ -211,12 +303,17 @@ TEST(CodecCliTest, OrderOutWritesTheNumberingThatDiffMapPairsBack) {
   EXPECT_EQ(paired.err, "");
   EXPECT_NEAR(json_number(paired.out, "rms_rel"), json_number(c.out, "rms_rel"), 1e-6);
   EXPECT_NEAR(json_number(paired.out, "linf_rel"), json_number(c.out, "linf_rel"), 1e-6);
-  // Only with --reorder (the numbering is otherwise kept), never over -o.
-  const CommandResult kept = run_gab("compress -i " + in + " -o " + file + " --order-out " + map);
+  // Not with a kept numbering (no map to give), never over -o.
+  const CommandResult kept = run_gab("compress -i " + in + " -o " + file + " --keep-order --order-out " + map);
   EXPECT_EQ(kept.exit_code, 2);
-  EXPECT_NE(kept.err.find("--order-out writes the numbering --reorder makes: without it the numbering is kept"),
-            std::string::npos)
-      << kept.err;
+  EXPECT_EQ(kept.err.substr(0, kept.err.find('\n')),
+            "gab compress: --order-out writes the map onto the traversal's numbering: --keep-order keeps the "
+            "input's numbering");
+  const CommandResult geometry = run_gab("compress -i " + in + " -o " + file + " --geometry-only --order-out " + map);
+  EXPECT_EQ(geometry.exit_code, 2);
+  EXPECT_EQ(geometry.err.substr(0, geometry.err.find('\n')),
+            "gab compress: --order-out writes the map onto the traversal's numbering: --geometry-only keeps the "
+            "input's numbering");
   EXPECT_EQ(run_gab("compress -i " + in + " -o " + file + " --reorder --order-out " + file).exit_code, 2);
   EXPECT_EQ(run_gab("compress -i " + in + " -o " + file + " --reorder --order-out " + in).exit_code, 2);
   // A file not made yet, named two ways: the map does not replace the .gab.
@@ -237,7 +334,9 @@ TEST(CodecCliTest, RefineAddsALeastSquaresChunkThatDecompressApplies) {
   const std::string out = write_scratch_file("refine-out.off", "");
   // The refinement needs the global solver, which --refine picks.
   CommandResult a = run_gab("compress -i " + in + " -o " + plain + " --anchors 60 --solver global --json");
-  CommandResult b = run_gab("compress -i " + in + " -o " + refined + " --anchors 60 --refine --json");
+  const std::string map = write_scratch_file("refine.map", "");
+  CommandResult b =
+      run_gab("compress -i " + in + " -o " + refined + " --anchors 60 --refine --order-out " + map + " --json");
   ASSERT_EQ(a.exit_code, 0) << a.err;
   ASSERT_EQ(b.exit_code, 0) << b.err;
   EXPECT_NE(a.out.find("\"refined\": false"), std::string::npos) << a.out;
@@ -249,7 +348,7 @@ TEST(CodecCliTest, RefineAddsALeastSquaresChunkThatDecompressApplies) {
   CommandResult d = run_gab("decompress -i " + refined + " -o " + out + " --json");
   ASSERT_EQ(d.exit_code, 0) << d.err;
   EXPECT_NE(d.out.find("\"refined\": true"), std::string::npos) << d.out;
-  CommandResult diff = run_gab("diff " + in + " " + out + " --json --samples 0");
+  CommandResult diff = run_gab("diff " + in + " " + out + " --map " + map + " --json --samples 0");
   EXPECT_NEAR(json_number(diff.out, "rms_rel"), json_number(b.out, "rms_rel"), 1e-9);
   CommandResult info = run_gab("info " + refined);
   ASSERT_EQ(info.exit_code, 0) << info.err;
@@ -260,15 +359,15 @@ TEST(CodecCliTest, RefineAddsALeastSquaresChunkThatDecompressApplies) {
 
 TEST(CodecCliTest, LevelOfDetailFromOneFile) {
   const std::string in = write_scratch_file("lod.off", torus_off(40, 20));
-  const std::string gab = write_scratch_file("lod.gab", "");
-  ASSERT_EQ(run_gab("compress -i " + in + " -o " + gab + " --anchors 150").exit_code, 0);
+  const std::string gab = write_scratch_file("lod.gab", ""), map = write_scratch_file("lod.map", "");
+  ASSERT_EQ(run_gab("compress -i " + in + " -o " + gab + " --anchors 150 --order-out " + map).exit_code, 0);
   double previous = 1.0;
   for (int k : {20, 60, 150}) {
     const std::string out = write_scratch_file("lod-" + std::to_string(k) + ".off", "");
     CommandResult d = run_gab("decompress -i " + gab + " -o " + out + " --anchors " + std::to_string(k) + " --json");
     ASSERT_EQ(d.exit_code, 0) << d.err;
     EXPECT_EQ(json_number(d.out, "anchors"), k);
-    CommandResult diff = run_gab("diff " + in + " " + out + " --json --samples 0");
+    CommandResult diff = run_gab("diff " + in + " " + out + " --map " + map + " --json --samples 0");
     const double rms = json_number(diff.out, "rms_rel");
     EXPECT_LT(rms, previous) << k;
     previous = rms;
@@ -298,7 +397,9 @@ TEST(CodecCliTest, DetailFilesDecodeToTheSameBitsAtEverySimdLevel) {
   const std::string in = write_scratch_file("detail.off", torus_off(60, 30));
   const std::string gab = write_scratch_file("detail.gab", "");
   const std::string a = write_scratch_file("detail-a.off", ""), b = write_scratch_file("detail-b.off", "");
-  CommandResult c = run_gab("compress -i " + in + " -o " + gab + " --error 1e-4 --detail on --json");
+  const std::string map = write_scratch_file("detail.map", "");
+  CommandResult c =
+      run_gab("compress -i " + in + " -o " + gab + " --error 1e-4 --detail on --order-out " + map + " --json");
   ASSERT_EQ(c.exit_code, 0) << c.err;
   EXPECT_NE(c.out.find("\"detail\": true"), std::string::npos) << c.out;
   EXPECT_GT(json_number(c.out, "detail_bytes"), 0);
@@ -308,7 +409,7 @@ TEST(CodecCliTest, DetailFilesDecodeToTheSameBitsAtEverySimdLevel) {
   EXPECT_NE(d.out.find("\"detail\": true"), std::string::npos) << d.out;
   ASSERT_EQ(run_gab("decompress -i " + gab + " -o " + b, "GAB_SIMD=scalar").exit_code, 0);
   EXPECT_EQ(read_all(a), read_all(b));
-  CommandResult diff = run_gab("diff " + in + " " + a + " --json --samples 0");
+  CommandResult diff = run_gab("diff " + in + " " + a + " --map " + map + " --json --samples 0");
   ASSERT_EQ(diff.exit_code, 0) << diff.err;
   EXPECT_NEAR(json_number(diff.out, "rms_rel"), json_number(c.out, "rms_rel"), 1e-12);
   EXPECT_LE(json_number(diff.out, "rms_rel"), 1e-4);

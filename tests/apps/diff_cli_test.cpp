@@ -76,7 +76,8 @@ TEST(DiffCliTest, ARenumberedMeshGetsVertexFiguresOnlyThroughAMap) {
   for (const char* key : {"linf", "rms", "linf_rel", "rms_rel"}) EXPECT_TRUE(json_null(plain.out, key)) << key;
   EXPECT_EQ(plain.err,
             "gab diff: no per-vertex distances: the triangles differ by vertex index: the numberings do not "
-            "correspond (a renumbered mesh, such as a --reorder decode; --map FILE pairs them)\n");
+            "correspond (a renumbered mesh, such as a decode in traversal order, gab compress's default; --map FILE "
+            "pairs them: compress --order-out writes it)\n");
   EXPECT_NEAR(json_number(plain.out, "metro_mean_rel"), 0.25 / std::sqrt(2.0), 1e-8);  // the surfaces still compare
   const CommandResult text = run_gab("diff " + a + " " + b);
   EXPECT_NE(text.out.find("vertex distance: n/a: the triangles differ by vertex index"), std::string::npos)

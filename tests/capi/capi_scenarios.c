@@ -83,6 +83,7 @@ int capi_compress_anchors(const double* positions, int32_t n, const int32_t* tri
   options.bits = bits;
   options.threads = threads;
   options.detail = GAB_DETAIL_OFF;
+  options.reorder = 0; /* the input's numbering: levels compared with it vertex by vertex */
   return gab_compress_ex(positions, n, triangles, t, &options, file, size, message, message_size);
 }
 

@@ -40,7 +40,7 @@ void capi_round_trip_run(const double* positions, int32_t n, const int32_t* tria
                          int32_t coarse_anchors, capi_round_trip* r);
 void capi_round_trip_free(capi_round_trip* r);
 
-/* gab_compress_ex with an anchor count alone (detail off, `bits`, `threads`). */
+/* gab_compress_ex with an anchor count alone (detail off, `bits`, `threads`), the numbering kept. */
 int capi_compress_anchors(const double* positions, int32_t n, const int32_t* triangles, int32_t t,
                           int32_t anchors, int32_t bits, int32_t threads, unsigned char** file, size_t* size,
                           char* message, size_t message_size);

@@ -103,9 +103,11 @@ TEST(CapiTest, RoundTripMeetsTheTargetAndMatchesTheCppApi) {
   // The first 20 anchors are a coarser level of the same mesh.
   EXPECT_EQ(r.coarse.n, mesh.num_vertices());
   EXPECT_GT(r.coarse_rms_rel, 2 * r.rms_rel);
-  // The same bytes and the same decoded shape as the C++ API's.
+  // The same bytes and the same decoded shape as the C++ API's, with the
+  // numbering kept (gab_compress's contract; the C++ default drops it).
   gab::EncodeOptions options;
   options.target_rms_rel = 1e-3;
+  options.reorder = false;
   gab::EncodeStats stats;
   const std::vector<uint8_t> file = gab::testing_util::encode_or_die(mesh, options, &stats);
   ASSERT_EQ(file.size(), r.size);
@@ -218,6 +220,7 @@ TEST(CapiTest, OptionsStructIsReadUpToItsSize) {
   EXPECT_EQ(o.size, sizeof o);
   EXPECT_EQ(o.weight, 100.0);
   EXPECT_EQ(o.threads, 1);
+  EXPECT_EQ(o.reorder, 1);
   ASSERT_EQ(compress(&o, &same).code, GAB_OK);
   EXPECT_EQ(defaults, same);
   // An older caller's struct (up to target_linf_rel): the weight it does not
@@ -301,6 +304,81 @@ TEST(CapiTest, OptionsStructIsReadUpToItsSize) {
   EXPECT_EQ(compress(&o, nullptr).message, "gab_compress_ex: options->size is 4: set it with gab_compress_options_init");
 }
 
+// The numbering's default (issue 34): gab_compress_ex and its options' init
+// number the decoded mesh in the coder's order, the smallest file, as the
+// C++ default and the CLI do; reorder = 0 and gab_compress (whose meaning is
+// an ABI contract) keep the input's numbering vertex by vertex.
+TEST(CapiTest, TheDefaultIsTheTraversalOrderAndGabCompressKeepsTheNumbering) {
+  const Mesh mesh = bumpy_torus(30, 20);
+  const int32_t n = mesh.num_vertices(), t = mesh.num_triangles();
+  char message[256];
+  auto compress_ex = [&](const gab_compress_options* o, gab_compress_report* r) {
+    unsigned char* file = nullptr;
+    size_t size = 0;
+    const int code = gab_compress_with_report(mesh.positions.data(), n, mesh.triangles.data(), t, o, &file, &size, r,
+                                              message, sizeof message);
+    EXPECT_EQ(code, GAB_OK) << message;
+    std::vector<uint8_t> bytes(file, file + size);
+    gab_free(file);
+    return bytes;
+  };
+  gab_compress_options o;
+  gab_compress_options_init(&o, sizeof o);
+  EXPECT_EQ(o.reorder, 1);
+  gab_compress_report r;
+  gab_compress_report_init(&r, sizeof r);
+  const std::vector<uint8_t> by_default = compress_ex(nullptr, &r);
+  ASSERT_GT(by_default.size(), 9u);
+  EXPECT_EQ(by_default[9] & gab::kGabFlagReordered, gab::kGabFlagReordered);
+  EXPECT_EQ(r.reordered, 1);
+  EXPECT_EQ(r.order_bytes, 0u);
+  ASSERT_NE(r.order, nullptr);
+  std::vector<int32_t> order(r.order, r.order + n);
+  gab_free(r.order);
+  std::vector<int32_t> sorted = order;
+  std::sort(sorted.begin(), sorted.end());
+  for (int32_t v = 0; v < n; ++v) ASSERT_EQ(sorted[v], v);  // a permutation
+  gab_compress_report_init(&r, sizeof r);
+  EXPECT_EQ(compress_ex(&o, &r), by_default);  // the init's options are the defaults
+  gab_free(r.order);
+  gab::EncodeOptions cpp;
+  cpp.target_rms_rel = 1e-3;
+  gab::EncodeStats cpp_stats;
+  EXPECT_EQ(gab::testing_util::encode_or_die(mesh, cpp, &cpp_stats), by_default);  // the C++ default
+  EXPECT_EQ(cpp_stats.new_index, order);
+
+  // reorder = 0 and gab_compress: the same file, the numbering kept, priced.
+  o.reorder = 0;
+  gab_compress_report_init(&r, sizeof r);
+  const std::vector<uint8_t> kept = compress_ex(&o, &r);
+  EXPECT_EQ(kept[9] & gab::kGabFlagReordered, 0);
+  EXPECT_EQ(r.reordered, 0);
+  EXPECT_EQ(r.order, nullptr);
+  EXPECT_GT(r.order_bytes, 0u);
+  EXPECT_LT(by_default.size(), kept.size());
+  unsigned char* plain = nullptr;
+  size_t plain_size = 0;
+  ASSERT_EQ(gab_compress(mesh.positions.data(), n, mesh.triangles.data(), t, 1e-3, &plain, &plain_size, message,
+                         sizeof message),
+            GAB_OK)
+      << message;
+  EXPECT_EQ(std::vector<uint8_t>(plain, plain + plain_size), kept);
+  // Decoded vertex by vertex: vertex i of the output is input vertex i.
+  double* positions = nullptr;
+  int32_t* triangles = nullptr;
+  int32_t dn = 0, dt = 0;
+  ASSERT_EQ(gab_decompress(plain, plain_size, -1, &positions, &dn, &triangles, &dt, message, sizeof message), GAB_OK);
+  ASSERT_EQ(dn, n);
+  Mesh decoded;
+  decoded.positions.assign(positions, positions + 3 * static_cast<size_t>(n));
+  EXPECT_EQ(gab_test::oriented_set(triangles, dt), gab_test::oriented_set(mesh.triangles.data(), t));
+  EXPECT_NEAR(gab::testing_util::relative_rms(mesh, decoded), r.rms_rel, 1e-12);
+  EXPECT_LE(r.rms_rel, 1e-3);
+  gab_free(positions);
+  gab_free(triangles);
+  gab_free(plain);
+}
+
 // gab_compress_with_report: the CLI's compress figures (EncodeStats, as
 // `gab compress --json` prints them) and, with reorder, the map onto the
 // decoded mesh's numbering.
@@ -378,8 +456,9 @@ TEST(CapiTest, CompressReportCarriesTheCliFiguresAndTheMap) {
       << message;
   EXPECT_NEAR(mapped_rms, reported_rms, 1e-12);
 
-  // Without reorder: the numbering is kept, no map, the order block priced.
+  // reorder = 0: the numbering is kept, no map, the order block priced.
   gab_compress_options_init(&o, sizeof o);
+  o.reorder = 0;
   gab_compress_report_init(&r, sizeof r);
   std::vector<uint8_t> kept, plain;
   ASSERT_EQ(compress(&o, &r, &kept).code, GAB_OK) << message;

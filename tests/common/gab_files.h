@@ -11,6 +11,7 @@
 #include "gab/codec/decoder.h"
 #include "gab/codec/encoder.h"
 #include "gab/mesh/metrics.h"
+#include "gab/mesh/renumber.h"
 
 namespace gab {
 namespace testing_util {
@@ -27,6 +28,17 @@ inline Mesh decode_or_die(const std::vector<uint8_t>& file, const DecodeOptions&
   const Status s = decode_mesh(file.data(), file.size(), options, &out, stats);
   EXPECT_TRUE(s.ok()) << s.message();
   return out;
+}
+
+// The input mesh numbered as its file decodes it: a reordered file (the
+// default, EncodeStats::reordered) numbers the vertices in traversal order,
+// input vertex v as es.new_index[v]; a kept numbering is the input's. The
+// encoder measured its errors in this numbering, so sums over it match its
+// figures to the last bit.
+inline Mesh in_decoded_numbering(const Mesh& input, const EncodeStats& es) {
+  if (!es.reordered) return input;
+  EXPECT_EQ(es.new_index.size(), static_cast<size_t>(input.num_vertices()));
+  return renumber_vertices(input, es.new_index);
 }
 
 // Vertex RMS distance over a's bounding-box diagonal.

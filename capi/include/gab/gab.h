@@ -115,7 +115,14 @@ int gab_solver_from_name(const char* name);
    the caller knows; later versions only append fields, and a field beyond
    `size` takes its default. Fill it with gab_compress_options_init, then set
    fields. Stopping rules (any combination; with none of them, target_rms_rel
-   = 1e-3): max_anchors, target_rms_rel, target_linf_rel. */
+   = 1e-3): max_anchors, target_rms_rel, target_linf_rel.
+   The numbering: reorder is 1 by default, the smallest file, the decoded
+   mesh numbered in the coder's traversal order (gab_compress_with_report's
+   `order` maps it); a caller that keys data by vertex index outside the file
+   sets reorder = 0, read the same way by every version. This default is a
+   contract change (the init used to set 0; gab_compress still keeps the
+   numbering): the layout is unchanged, so a program built against an older
+   gab.h gets the new default from the init unless it sets reorder = 0. */
 typedef struct gab_compress_options {
   size_t size;            /* sizeof(gab_compress_options) as the caller compiled it */
   double target_rms_rel;  /* relative vertex RMS over the bounding-box diagonal (CLI --error); 0: none */
@@ -123,7 +130,9 @@ typedef struct gab_compress_options {
   double weight;          /* anchor weight w of the relaxed basis, in (0, 1e100] (default 100) */
   int32_t max_anchors;    /* anchors in the file (--anchors); 0: no count limit */
   int32_t bits;           /* q, bits per coordinate, 2..24 (--bits); 0: chosen from the target */
-  int32_t reorder;        /* nonzero: number the decoded mesh in the coder's order, smaller file (--reorder) */
+  int32_t reorder;        /* nonzero (default): number the decoded mesh in the coder's traversal order, the
+                             smallest file; 0: keep the input's numbering, priced by the order block
+                             (--keep-order) */
   int32_t threads;        /* threads for the factorizations (default 1; 0: every core); same file for any count */
   int32_t detail;         /* GAB_DETAIL_AUTO (default), GAB_DETAIL_ON or GAB_DETAIL_OFF */
   int32_t refine;         /* nonzero: append the least-squares refinement chunk (--refine) */
@@ -138,9 +147,11 @@ void gab_compress_options_init(gab_compress_options* options, size_t size);
 
 /* positions: 3n doubles (x0 y0 z0 x1 ...), triangles: 3t int32. target_rms_rel:
    relative vertex RMS target (as --error); *out receives a malloc'd .gab image.
-   The decoded mesh keeps the vertex numbering; the triangles come back as
-   the same set of oriented triangles, in the coder's order. Cost: about the
-   CLI's `gab compress` (factorizations and greedy updates). */
+   The decoded mesh keeps the vertex numbering, as gab_compress_ex's with
+   reorder = 0 (`gab compress --keep-order`; their default is the coder's
+   order, the smaller file); the triangles come back as the same set of
+   oriented triangles, in the coder's order. Cost: about the CLI's `gab
+   compress` (factorizations and greedy updates). */
 int gab_compress(const double* positions, int32_t n, const int32_t* triangles, int32_t t,
                  double target_rms_rel, unsigned char** out, size_t* out_size,
                  char* message, size_t message_size);
@@ -177,7 +188,7 @@ typedef struct gab_compress_report {
   size_t bytes;               /* the whole file */
   size_t geometry_bytes;      /* header and chunks (the detail and refinement chunks among them) */
   size_t connectivity_bytes;  /* the triangles */
-  size_t order_bytes;         /* the vertex order block (0 when reordered) */
+  size_t order_bytes;         /* the vertex order block (0 when reordered, the default) */
   size_t detail_bytes;        /* the detail chunk (0 without one) */
   size_t refinement_bytes;    /* the refinement chunk (0 without one) */
   double rms_rel;             /* vertex RMS of the decoded shape against the input */

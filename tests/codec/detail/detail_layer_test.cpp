@@ -23,6 +23,7 @@ namespace {
 using testing_util::bumpy_torus;
 using testing_util::decode_or_die;
 using testing_util::encode_or_die;
+using testing_util::in_decoded_numbering;
 
 VertexDistance distance(const Mesh& a, const Mesh& b) {
   VertexDistance d;
@@ -75,7 +76,7 @@ TEST(DetailLayer, DecodedShapeIsTheEncodersAndMeetsTheTarget) {
   const Mesh out = decode_or_die(file, DecodeOptions(), &ds);
   EXPECT_TRUE(ds.detail);
   EXPECT_EQ(ds.chunks, es.chunks);
-  const VertexDistance d = distance(mesh, out);
+  const VertexDistance d = distance(in_decoded_numbering(mesh, es), out);
   EXPECT_DOUBLE_EQ(d.rms / bounding_box_diagonal(mesh), es.rms_rel);
   EXPECT_DOUBLE_EQ(d.linf / bounding_box_diagonal(mesh), es.linf_rel);
   // A uniform quantizer of step s: at most s sqrt(3) / 2 per vertex.
@@ -99,7 +100,7 @@ TEST(DetailLayer, LinfTargetIsMetOnEveryVertex) {
   ASSERT_TRUE(es.detail);
   EXPECT_TRUE(es.target_met);
   DecodeStats ds;
-  const VertexDistance d = distance(mesh, decode_or_die(file, DecodeOptions(), &ds));
+  const VertexDistance d = distance(in_decoded_numbering(mesh, es), decode_or_die(file, DecodeOptions(), &ds));
   EXPECT_LE(d.linf / bounding_box_diagonal(mesh), 2e-4);
 }
 
@@ -121,7 +122,7 @@ TEST(DetailLayer, TinyMeshesMeetTheTargetTheAnchorsAloneMiss) {
   EXPECT_TRUE(es.target_met);
   EXPECT_TRUE(es.detail);
   DecodeStats ds;
-  const VertexDistance d = distance(mesh, decode_or_die(file, DecodeOptions(), &ds));
+  const VertexDistance d = distance(in_decoded_numbering(mesh, es), decode_or_die(file, DecodeOptions(), &ds));
   EXPECT_LE(d.rms / bounding_box_diagonal(mesh), 1e-3);
 }
 
@@ -165,13 +166,13 @@ TEST(DetailLayer, LevelsOfDetailAndTruncationShowTheAnchorsShape) {
   DecodeStats ds;
   Mesh out = decode_or_die(file, no_detail, &ds);
   EXPECT_FALSE(ds.detail);
-  EXPECT_NEAR(distance(mesh, out).rms / diagonal, es.anchor_rms_rel, 1e-12);
+  EXPECT_NEAR(distance(in_decoded_numbering(mesh, es), out).rms / diagonal, es.anchor_rms_rel, 1e-12);
   // Fewer anchors: a coarser level, no detail.
   DecodeOptions coarser;
   coarser.max_anchors = es.anchors - 1;
   out = decode_or_die(file, coarser, &ds);
   EXPECT_FALSE(ds.detail);
-  EXPECT_GT(distance(mesh, out).rms / diagonal, es.anchor_rms_rel * 0.999);
+  EXPECT_GT(distance(in_decoded_numbering(mesh, es), out).rms / diagonal, es.anchor_rms_rel * 0.999);
   // Cut inside the detail chunk: truncated, the anchors' shape.
   size_t at = 0, length = 0;
   detail_frame(file, &at, &length);
@@ -181,7 +182,7 @@ TEST(DetailLayer, LevelsOfDetailAndTruncationShowTheAnchorsShape) {
     EXPECT_TRUE(ds.truncated) << cut;
     EXPECT_FALSE(ds.detail) << cut;
     EXPECT_EQ(ds.chunks, es.chunks - 1) << cut;
-    EXPECT_NEAR(distance(mesh, out).rms / diagonal, es.anchor_rms_rel, 1e-12) << cut;
+    EXPECT_NEAR(distance(in_decoded_numbering(mesh, es), out).rms / diagonal, es.anchor_rms_rel, 1e-12) << cut;
   }
 }
 
@@ -243,7 +244,7 @@ TEST(DetailLayer, FilesDoNotDependOnTheThreadCount) {
   decode.threads = 2;
   DecodeStats ds;
   const Mesh out = decode_or_die(a, decode, &ds);
-  EXPECT_DOUBLE_EQ(distance(mesh, out).rms / bounding_box_diagonal(mesh), one.rms_rel);
+  EXPECT_DOUBLE_EQ(distance(in_decoded_numbering(mesh, one), out).rms / bounding_box_diagonal(mesh), one.rms_rel);
 }
 
 }  // namespace

@@ -21,12 +21,14 @@ namespace {
 using testing_util::bumpy_torus;
 using testing_util::decode_or_die;
 using testing_util::encode_or_die;
+using testing_util::in_decoded_numbering;
 using testing_util::relative_rms;
 
 TEST(EncodeDecode, RoundTripKeepsConnectivityAndMatchesTheEncodersShape) {
   const Mesh mesh = bumpy_torus(40, 20);
   EncodeOptions options;
   options.max_anchors = 80;
+  options.reorder = false;  // the input's numbering kept, priced by the order block
   EncodeStats es;
   const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
   EXPECT_EQ(es.anchors, 80);
@@ -141,7 +143,7 @@ TEST(EncodeDecode, TheFileRecordsItsOrderingAndAnyOrderingDecodesIt) {
     DecodeStats ds;
     const Mesh own = decode_or_die(file, DecodeOptions(), &ds);
     EXPECT_EQ(ds.ordering, ordering);
-    EXPECT_NEAR(relative_rms(mesh, own), es.rms_rel, 1e-12) << ordering_name(ordering);
+    EXPECT_NEAR(relative_rms(in_decoded_numbering(mesh, es), own), es.rms_rel, 1e-12) << ordering_name(ordering);
     DecodeOptions decode;
     decode.ordering = other;
     DecodeStats ds_other;
@@ -179,6 +181,7 @@ TEST(EncodeDecode, EveryChunkPrefixIsTheEncodersShapeAtThatAnchorCount) {
   options.solver = Solver::kGlobal;  // its greedy curve is the decoder's shapes
   EncodeStats es;
   const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
+  const Mesh numbered = in_decoded_numbering(mesh, es);
   int32_t k = 0;
   for (int32_t in_chunk : es.chunk_anchors) {
     k += in_chunk;
@@ -191,7 +194,7 @@ TEST(EncodeDecode, EveryChunkPrefixIsTheEncodersShapeAtThatAnchorCount) {
     for (const GreedyStep& step : es.curve) {
       if (step.anchors != k) continue;
       found = true;
-      EXPECT_NEAR(relative_rms(mesh, out), step.rms_rel, 1e-12) << k << " anchors";
+      EXPECT_NEAR(relative_rms(numbered, out), step.rms_rel, 1e-12) << k << " anchors";
     }
     EXPECT_TRUE(found) << "no reconstruction at " << k << " anchors";
   }
@@ -259,7 +262,7 @@ TEST(EncodeDecode, UnreachableTargetAnchorsEverythingAndSaysSo) {
   DecodeStats ds;
   const Mesh out = decode_or_die(file, DecodeOptions(), &ds);
   // Every vertex anchored with w = 100: the shape is the grid positions to ~1/w^2.
-  EXPECT_NEAR(relative_rms(mesh, out), es.rms_rel, 1e-12);
+  EXPECT_NEAR(relative_rms(in_decoded_numbering(mesh, es), out), es.rms_rel, 1e-12);
 }
 
 TEST(EncodeDecode, GeometryOnlyNeedsTheRightConnectivity) {
@@ -303,9 +306,12 @@ TEST(EncodeDecode, ComponentsAndIsolatedVerticesEachGetAnAnchor) {
   DecodeStats ds;
   const Mesh out = decode_or_die(file, DecodeOptions(), &ds);
   // An isolated anchor sits exactly on its grid point, within one step.
-  const size_t iso = 3 * static_cast<size_t>(mesh.num_vertices() - 1);
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(out.positions[iso + c], mesh.positions[iso + c], 6.0 / 4095);
-  EXPECT_NEAR(relative_rms(mesh, out), es.rms_rel, 1e-12);
+  const Mesh numbered = in_decoded_numbering(mesh, es);
+  const int32_t last = es.reordered ? es.new_index.back() : mesh.num_vertices() - 1;  // the last isolated vertex
+  const size_t iso = 3 * static_cast<size_t>(last);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(out.positions[iso + c], numbered.positions[iso + c], 6.0 / 4095);
+  EXPECT_EQ(numbered.positions[iso], -2.0);  // the map found it
+  EXPECT_NEAR(relative_rms(numbered, out), es.rms_rel, 1e-12);
 }
 
 TEST(EncodeDecode, FlatAndPointLikeMeshes) {
@@ -369,7 +375,7 @@ TEST(EncodeDecode, ReorderedFileDecodesToTheRenumberedMesh) {
   mesh.triangles.insert(mesh.triangles.end(), {5, 5, 7});
   EncodeOptions options;
   options.target_rms_rel = 2e-3;
-  options.reorder = true;
+  EXPECT_TRUE(options.reorder);  // the default (issue 34): the smallest file
   EncodeStats es;
   const std::vector<uint8_t> file = encode_or_die(mesh, options, &es);
   ASSERT_TRUE(es.reordered);
@@ -411,12 +417,21 @@ TEST(EncodeDecode, OptionErrors) {
   bits.max_anchors = 5;
   bits.bits = 1;
   EXPECT_EQ(encode_mesh(mesh, bits, &file, &es).message(), "bits must be in 2..24");
-  EncodeOptions reorder;
-  reorder.max_anchors = 5;
-  reorder.reorder = true;
-  reorder.geometry_only = true;
-  EXPECT_EQ(encode_mesh(mesh, reorder, &file, &es).message(),
-            "a reordered file codes its connectivity: not with geometry only");
+  // A geometry-only file has no connectivity to number the vertices by: it
+  // keeps the given mesh's numbering whatever reorder says.
+  EncodeOptions geometry_only;
+  geometry_only.max_anchors = 5;
+  geometry_only.geometry_only = true;
+  ASSERT_TRUE(geometry_only.reorder);
+  ASSERT_TRUE(encode_mesh(mesh, geometry_only, &file, &es).ok());
+  EXPECT_FALSE(es.reordered);
+  EXPECT_TRUE(es.new_index.empty());
+  EXPECT_EQ(es.order_bytes, 0u);
+  EXPECT_EQ(file[9] & kGabFlagReordered, 0);
+  std::vector<uint8_t> kept_file;
+  geometry_only.reorder = false;
+  ASSERT_TRUE(encode_mesh(mesh, geometry_only, &kept_file, &es).ok());
+  EXPECT_EQ(kept_file, file);
   EncodeOptions weight;
   weight.max_anchors = 5;
   for (double w : {0.0, 2e100, std::numeric_limits<double>::infinity()}) {

@@ -61,7 +61,8 @@ uint64_t shape_fingerprint(const std::vector<double>& positions) {
 }
 
 // make_gab_seeds.sh's `gab compress` options for a seed, as EncodeOptions
-// (the flags the script uses; the CLI maps them one to one).
+// (the flags the script uses; the CLI maps them one to one, its default
+// numbering the traversal's as the library's: --keep-order keeps the input's).
 EncodeOptions options_of(const std::string& args) {
   EncodeOptions o;
   std::istringstream in(args);
@@ -70,6 +71,7 @@ EncodeOptions options_of(const std::string& args) {
     if (flag == "--geometry-only") o.geometry_only = true;
     else if (flag == "--refine") o.refine = true;
     else if (flag == "--reorder") o.reorder = true;
+    else if (flag == "--keep-order") o.reorder = false;
     else if (!(in >> value)) ADD_FAILURE() << flag << " needs a value";
     else if (flag == "--anchors") o.max_anchors = std::stoi(value);
     else if (flag == "--error") o.target_rms_rel = std::stod(value);
@@ -103,35 +105,35 @@ const std::vector<Golden>& goldens() {
   constexpr uint8_t kGeo = kGabFlagGeometryOnly, kLevels = kGabFlagLevels;
   static const std::vector<Golden> all = {
       {"torus-full", 0x824442527a9b539full, 0, 12, 20, 8, 0.022588347,
-       "--anchors 20 --chunk-growth 1.5 --layout selection --solver global"},
+       "--anchors 20 --chunk-growth 1.5 --layout selection --solver global --keep-order"},
       {"torus-geometry-only", 0xb374d63c1840c5d3ull, kGeo, 8, 12, 5, 0.035451577,
        "--anchors 12 --geometry-only --bits 8 --chunk-growth 2 --layout selection --solver global"},
       {"torus-coarse", 0x260b74b1b79fcd03ull, 0, 6, 37, 7, 0.009801301,
-       "--error 0.01 --bits 6 --chunk-growth 2 --layout selection --solver global"},
+       "--error 0.01 --bits 6 --chunk-growth 2 --layout selection --solver global --keep-order"},
       {"torus-refined", 0x900fb22cd67100f4ull, kGabFlagRefined, 12, 16, 6, 0.024199612,
-       "--anchors 16 --refine --chunk-growth 2 --layout selection"},
+       "--anchors 16 --refine --chunk-growth 2 --layout selection --keep-order"},
       {"torus-levels", 0x598c0402f0050619ull, kLevels, 12, 40, 5, 0.008304911,
-       "--anchors 40 --initial 4 --layout levels --chunk-growth 1.5 --solver global"},
+       "--anchors 40 --initial 4 --layout levels --chunk-growth 1.5 --solver global --keep-order"},
       {"torus-levels-refined", 0xd90bc57f331f69e1ull, kLevels | kGabFlagRefined, 12, 24, 5, 0.014869626,
-       "--anchors 24 --initial 3 --layout levels --refine"},
+       "--anchors 24 --initial 3 --layout levels --refine --keep-order"},
       {"torus-ordered", 0x2399a3f5c41efe5dull, kLevels, 12, 20, 4, 0.022588347,
-       "--anchors 20 --chunk-growth 1.5 --solver global"},
+       "--anchors 20 --chunk-growth 1.5 --solver global --keep-order"},
       {"torus-reordered", 0x83f61e3fc9dd1898ull, kLevels | kGabFlagReordered, 12, 20, 4, 0.022588347,
        "--anchors 20 --chunk-growth 1.5 --reorder --solver global"},
       {"torus-nd", 0x25ff4b3b24ba6282ull, kLevels, 12, 20, 4, 0.022588347,
-       "--anchors 20 --chunk-growth 1.5 --ordering nd --solver global"},
+       "--anchors 20 --chunk-growth 1.5 --ordering nd --solver global --keep-order"},
       {"torus-detail", 0xb454c0aa3cc55725ull, kGabFlagDetail, 6, 15, 4, 0.000099702,
-       "--error 1e-4 --detail on --solver global"},
+       "--error 1e-4 --detail on --solver global --keep-order"},
       {"torus-detail-geometry-only", 0xdb991622f7b0d688ull, kGeo | kGabFlagDetail, 6, 15, 4, 0.000099905,
        "--error 1e-4 --detail on --geometry-only --solver global"},
       {"torus-iterative", 0x31abc4769bb00cdaull, kLevels, 12, 20, 4, 0.022223650,
-       "--anchors 20 --chunk-growth 1.5 --solver iterative"},
+       "--anchors 20 --chunk-growth 1.5 --solver iterative --keep-order"},
       {"torus-iterative-selection", 0x0f1687500b9564edull, 0, 12, 20, 7, 0.022223650,
-       "--anchors 20 --chunk-growth 1.5 --layout selection --solver iterative"},
+       "--anchors 20 --chunk-growth 1.5 --layout selection --solver iterative --keep-order"},
       {"torus-iterative-detail", 0x7423022b8aa47d82ull, kGabFlagDetail, 6, 15, 4, 0.000099257,
-       "--error 1e-4 --detail on --solver iterative"},
+       "--error 1e-4 --detail on --solver iterative --keep-order"},
       {"torus-iterative-large", 0x76bca00e9404d250ull, kLevels, 12, 300, 3, 0.006329242,
-       "--anchors 300 --solver iterative", true},
+       "--anchors 300 --solver iterative --keep-order", true},
       // Operator 2, made by an earlier encoder with torus-iterative*'s options
       // (and another greedy loop: other anchors than torus-iterative*'s).
       {"torus-operator2", 0xc1212b18592d3d6cull, kLevels, 12, 20, 4, 0.020931225, nullptr},
