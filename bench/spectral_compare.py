@@ -15,7 +15,9 @@ For every mesh (default: camel-head, bunny-small, feline and horse of
   eigendecomposition's cost, see docs/spectral-baseline.md). Plotted: the
   Pareto front over (k, b) per metric, and the front at b = 14 alone (K&G's
   bits).
-* gab: `gab compress -i MESH -o F --error E --json` at each E of --errors,
+* gab: `gab compress -i MESH -o F --error E --keep-order --json` at each E
+  of --errors (the input's numbering, which `gab diff` pairs vertex by
+  vertex, as the figures were measured before the default renumbered),
   with the default options (detail layer when it pays) and with
   `--detail off` (anchors alone; the same file when the default keeps no
   detail layer, which is then not re-run) and with `--solver global` (the
@@ -142,7 +144,8 @@ def gab_points(gab, path, errors, work, modes=(("default", []), ("anchors", ["--
             if mode == "anchors" and not points["default"][-1]["detail"]:
                 points["anchors"].append(dict(points["default"][-1], mode="anchors"))
                 continue
-            text, wall, cpu, mb = timed([gab, "compress", "-i", path, "-o", out, "--error", repr(e), "--json"] + extra)
+            text, wall, cpu, mb = timed([gab, "compress", "-i", path, "-o", out, "--error", repr(e), "--keep-order",
+                                         "--json"] + extra)
             c = json.loads(text)
             dc.run([gab, "decompress", "-i", out, "-o", dec, "--json"])
             d = json.loads(dc.run([gab, "diff", path, dec, "--json"]))

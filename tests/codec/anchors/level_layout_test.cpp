@@ -428,8 +428,9 @@ TEST(LevelLayout, DenseAnchorSetsTryTheCoarserGrid) {
 TEST(LevelLayout, BunnySmallMeetsTheDracoRateAt1e3) {
   // The rate target of issue 6: bunny-small at 1e-3 within Draco's 10.68
   // geometry bits per vertex (10.38 measured; the first layout: 12.27), for
-  // the input's numbering: the traversal's (the default) costs 10.67 in the
-  // geometry and drops the vertex order block (2.1 bits a vertex, issue 34).
+  // the input's numbering. The traversal's (the default, issue 34) costs
+  // 10.67 in the geometry and drops the vertex order block, 8.9 bits a
+  // vertex here: 5,571 bytes in all against 9,407 kept.
   Mesh mesh;
   const std::string path = std::string(GAB_SHARED_MESHES) + "/bunny-small.off";
   if (!read_mesh(path, &mesh).ok()) GTEST_SKIP() << "no " << path;
