@@ -35,12 +35,21 @@ std::vector<std::string_view> split_blanks(std::string_view s);
 // The records of one kind of face index: vt (texture coordinates) or vn
 // (normals), as the line scan reads them.
 struct ObjElements {
-  int components = 3;           // values kept per record (vt: 3, u v w)
-  std::vector<double> values;   // `components` per record
-  std::vector<int64_t> before;  // per face: records defined before its line
-  int64_t first_not_finite = 0; // line of the first record with a value that is not finite (0: none)
+  std::vector<double> values;    // 3 per record (vt: u v w, the missing ones 0)
+  int64_t first_not_finite = 0;  // line of the first record with a value that is not finite (0: none)
 
-  int64_t count() const { return static_cast<int64_t>(values.size()) / components; }
+  int64_t count() const { return static_cast<int64_t>(values.size() / 3); }
+  // Face f's line comes now: its relative indices count back from here.
+  void note_face(int64_t f) {
+    if (values.empty()) return;  // 0 before it: kept implicitly (a file without records keeps nothing)
+    before_.resize(static_cast<size_t>(f), 0);
+    before_.push_back(count());
+  }
+  // The records defined before face f's line.
+  int64_t before(int64_t f) const { return f < static_cast<int64_t>(before_.size()) ? before_[f] : 0; }
+
+ private:
+  std::vector<int64_t> before_;  // per face up to the last one after a record
 };
 
 struct ObjLines {
@@ -139,13 +148,13 @@ Status line_error(const std::string& name, int64_t line, const std::string& what
 }
 
 // Reads `count` numbers of `w` from `first` into `out` (the caller checked
-// there are that many); the first bad one is an error naming `what` and the
-// record's index.
+// there are that many); the first bad one is an error naming the record:
+// `what` (its kind) and `index`.
 Status parse_values(const std::vector<std::string_view>& w, size_t first, size_t count, const std::string& name,
-                    int64_t line, const std::string& what, double* out, bool* finite) {
+                    int64_t line, const char* what, int64_t index, double* out, bool* finite) {
   for (size_t c = 0; c < count; ++c) {
     if (!parse_real(w[first + c], &out[c])) {
-      return line_error(name, line, what + ": bad value '" + printable(w[first + c]) + "'");
+      return line_error(name, line, what + std::to_string(index) + ": bad value '" + printable(w[first + c]) + "'");
     }
     *finite = *finite && std::isfinite(out[c]);
   }
@@ -156,16 +165,16 @@ Status parse_values(const std::vector<std::string_view>& w, size_t first, size_t
 Status scan_element(const std::vector<std::string_view>& w, bool texcoord, const std::string& name, int64_t line,
                     ObjElements* e) {
   const int64_t index = e->count();
-  const std::string what = (texcoord ? "texture coordinate " : "normal ") + std::to_string(index);
+  const char* what = texcoord ? "texture coordinate " : "normal ";
   const size_t need = texcoord ? 1 : 3;
   if (w.size() < need) {
-    return line_error(name, line, what + ": needs " + (texcoord ? "1 to 3 values" : "3 values") + ", has " +
-                                      std::to_string(w.size()));
+    return line_error(name, line, what + std::to_string(index) + ": needs " + (texcoord ? "1 to 3 values" : "3 values") +
+                                      ", has " + std::to_string(w.size()));
   }
   if (index >= INT32_MAX) return line_error(name, line, "more than 2^31-1 " + std::string(texcoord ? "vt" : "vn") + " records");
   double v[3] = {0, 0, 0};
   bool finite = true;
-  GAB_RETURN_IF_ERROR(parse_values(w, 0, w.size() < 3 ? w.size() : 3, name, line, what, v, &finite));
+  GAB_RETURN_IF_ERROR(parse_values(w, 0, w.size() < 3 ? w.size() : 3, name, line, what, index, v, &finite));
   if (!finite && e->first_not_finite == 0) e->first_not_finite = line;
   e->values.insert(e->values.end(), v, v + 3);
   return Status::Ok();
@@ -189,7 +198,7 @@ Status scan_vertex(const std::vector<std::string_view>& w, const std::string& na
   if (w.size() >= 6) {
     double rgb[3];
     bool finite = true;
-    GAB_RETURN_IF_ERROR(parse_values(w, 3, 3, name, line, "vertex " + std::to_string(v) + " colour", rgb, &finite));
+    GAB_RETURN_IF_ERROR(parse_values(w, 3, 3, name, line, "colour of vertex ", v, rgb, &finite));
     if (!finite && lines->colors_not_finite == 0) lines->colors_not_finite = line;
     lines->colors.insert(lines->colors.end(), rgb, rgb + 3);
   } else if (w.size() >= 4) {
@@ -202,31 +211,31 @@ Status scan_vertex(const std::vector<std::string_view>& w, const std::string& na
 Status scan_face(const std::vector<std::string_view>& w, const std::string& name, int64_t line, ObjLines* lines,
                  ObjDropped* dropped) {
   const int64_t f = static_cast<int64_t>(lines->face_line.size());
-  const std::string face = "face " + std::to_string(f);
+  auto face = [f] { return "face " + std::to_string(f); };
   if (w.size() < 3) {
-    return line_error(name, line, face + " has " + std::to_string(w.size()) + " vertices (need 3 or more)");
+    return line_error(name, line, face() + " has " + std::to_string(w.size()) + " vertices (need 3 or more)");
   }
   static const char* const kPart[3] = {"vertex", "texture coordinate", "normal"};
   for (std::string_view corner : w) {
     int64_t index[3];
     bool written[3];
     if (corner == "0" || corner.substr(0, 2) == "0/") {
-      return line_error(name, line, face + ": vertex index 0 (OBJ indices start at 1)");
+      return line_error(name, line, face() + ": vertex index 0 (OBJ indices start at 1)");
     }
     if (!parse_corner(corner, index, written) || index[0] == 0) {
-      return line_error(name, line, face + ": bad vertex index '" + printable(corner) + "'");
+      return line_error(name, line, face() + ": bad vertex index '" + printable(corner) + "'");
     }
     // tinyobjloader reads an index 0 as "absent": say it is wrong instead.
     for (int part = 1; part < 3; ++part) {
       if (written[part] && index[part] == 0) {
-        return line_error(name, line, face + ": " + kPart[part] + " index 0 (OBJ indices start at 1)");
+        return line_error(name, line, face() + ": " + kPart[part] + " index 0 (OBJ indices start at 1)");
       }
     }
   }
   dropped->polygons += w.size() > 3;
   lines->face_line.push_back(line);
-  lines->texcoords.before.push_back(lines->texcoords.count());
-  lines->normals.before.push_back(lines->normals.count());
+  lines->texcoords.note_face(f);
+  lines->normals.note_face(f);
   return Status::Ok();
 }
 
@@ -294,29 +303,27 @@ struct Collector {
   }
 
   // The 0-based index of a raw OBJ index `raw` (1-based, or negative:
-  // relative to the `so_far` records before the face) into `total` records.
-  // An error names `what` ("vertex", "texture coordinate", "normal").
-  Status resolve(int64_t raw, int64_t so_far, int64_t total, int64_t f, int64_t line, const char* what,
-                 int32_t* out) const {
-    int64_t v;
-    if (raw > 0) {
-      // Absolute indices may point to records defined further down.
-      if (raw > total) {
-        return line_error(*name, line, "face " + std::to_string(f) + ": " + what + " index " + std::to_string(raw) +
-                                           " out of range [1, " + std::to_string(total) + "]");
-      }
-      v = raw - 1;
-    } else {
-      // Relative: -1 is the last record defined before this line.
-      v = so_far + raw;
-      if (v < 0) {
-        return line_error(*name, line, "face " + std::to_string(f) + ": relative " + what + " index " +
-                                           std::to_string(raw) + " reaches before the first " + what + " (" +
-                                           std::to_string(so_far) + " defined so far)");
-      }
-    }
+  // relative to the `so_far` records before the face) into `total` records;
+  // false when it is out of range.
+  static bool resolve(int64_t raw, int64_t so_far, int64_t total, int32_t* out) {
+    // Absolute indices may point to records defined further down; relative
+    // ones count back from the face: -1 is the last record defined before it.
+    const int64_t v = raw > 0 ? raw - 1 : so_far + raw;
+    if (v < 0 || v >= total || (raw < 0 && v >= so_far)) return false;
     *out = static_cast<int32_t>(v);
-    return Status::Ok();
+    return true;
+  }
+
+  // Why `raw` does not resolve; `what`: "vertex", "texture coordinate", "normal".
+  Status index_error(int64_t raw, int64_t so_far, int64_t total, int64_t f, const char* what) const {
+    const int64_t line = lines->face_line[f];
+    if (raw > 0) {
+      return line_error(*name, line, "face " + std::to_string(f) + ": " + what + " index " + std::to_string(raw) +
+                                         " out of range [1, " + std::to_string(total) + "]");
+    }
+    return line_error(*name, line, "face " + std::to_string(f) + ": relative " + what + " index " +
+                                       std::to_string(raw) + " reaches before the first " + what + " (" +
+                                       std::to_string(so_far) + " defined so far)");
   }
 
   static void face(void* self, tinyobj::index_t* corners, int count) {
@@ -327,42 +334,65 @@ struct Collector {
       c.status = Status::Error(StatusCode::kParseError, *c.name + ": tinyobjloader reported more faces than the file has");
       return;
     }
-    c.status = c.add_face(f, corners, count);
+    if (!c.add_face(f, corners, count)) return;  // c.status says why
   }
 
-  Status add_face(int64_t f, const tinyobj::index_t* corners, int count) {
-    const int64_t line = lines->face_line[f];
+  // Adds face f's triangles and its corners' vt and vn; false (and
+  // `status` set) on a bad index.
+  bool add_face(int64_t f, const tinyobj::index_t* corners, int count) {
     bool has_texcoord = false, has_normal = false, lacks_texcoord = false, lacks_normal = false;
-    int32_t first[3] = {0, -1, -1}, prev[3] = {0, -1, -1};
+    const int64_t vertices = static_cast<int64_t>(lines->vertex_line.size());
+    const int64_t texcoord_total = lines->texcoords.count(), normal_total = lines->normals.count();
+    const int64_t texcoords_before = lines->texcoords.before(f), normals_before = lines->normals.before(f);
+    Corner first, prev;
     for (int k = 0; k < count; ++k) {
-      int32_t idx[3] = {0, -1, -1};  // v, vt, vn
-      GAB_RETURN_IF_ERROR(resolve(corners[k].vertex_index, mesh.num_vertices(),
-                                  static_cast<int64_t>(lines->vertex_line.size()), f, line, "vertex", &idx[0]));
-      if (corners[k].texcoord_index != 0) {
-        GAB_RETURN_IF_ERROR(resolve(corners[k].texcoord_index, lines->texcoords.before[f], lines->texcoords.count(), f,
-                                    line, "texture coordinate", &idx[1]));
+      Corner c;
+      const tinyobj::index_t& corner = corners[k];
+      if (!resolve(corner.vertex_index, mesh.num_vertices(), vertices, &c.v)) {
+        status = index_error(corner.vertex_index, mesh.num_vertices(), vertices, f, "vertex");
+        return false;
       }
-      if (corners[k].normal_index != 0) {
-        GAB_RETURN_IF_ERROR(resolve(corners[k].normal_index, lines->normals.before[f], lines->normals.count(), f, line,
-                                    "normal", &idx[2]));
+      if (corner.texcoord_index != 0 && !resolve(corner.texcoord_index, texcoords_before, texcoord_total, &c.vt)) {
+        status = index_error(corner.texcoord_index, texcoords_before, texcoord_total, f, "texture coordinate");
+        return false;
       }
-      (idx[1] >= 0 ? has_texcoord : lacks_texcoord) = true;
-      (idx[2] >= 0 ? has_normal : lacks_normal) = true;
-      if (k == 0) std::copy(idx, idx + 3, first);
+      if (corner.normal_index != 0 && !resolve(corner.normal_index, normals_before, normal_total, &c.vn)) {
+        status = index_error(corner.normal_index, normals_before, normal_total, f, "normal");
+        return false;
+      }
+      (c.vt >= 0 ? has_texcoord : lacks_texcoord) = true;
+      (c.vn >= 0 ? has_normal : lacks_normal) = true;
+      if (k == 0) first = c;
       if (k >= 2) {
-        // Fan triangulation (c0, c_{k-1}, c_k): each corner keeps its own vt and vn.
-        for (const int32_t* corner : {first, prev, idx}) {
-          mesh.triangles.push_back(corner[0]);
-          texcoords.element.push_back(corner[1]);
-          normals.element.push_back(corner[2]);
-        }
+        // Fan triangulation (c0, c_{k-1}, c_k): each corner keeps its own vt
+        // and vn. (A file without vt or vn records keeps no corners for
+        // them: a face that refers to one has failed above.)
+        mesh.triangles.push_back(first.v);
+        mesh.triangles.push_back(prev.v);
+        mesh.triangles.push_back(c.v);
+        if (texcoord_total > 0) push3(&texcoords.element, first.vt, prev.vt, c.vt);
+        if (normal_total > 0) push3(&normals.element, first.vn, prev.vn, c.vn);
       }
-      std::copy(idx, idx + 3, prev);
+      prev = c;
     }
     count_face(has_texcoord, lacks_texcoord, f, &texcoords);
     count_face(has_normal, lacks_normal, f, &normals);
-    if (mesh.triangles.size() / 3 > static_cast<size_t>(INT32_MAX)) return line_error(*name, line, "more than 2^31-1 triangles");
-    return Status::Ok();
+    if (mesh.triangles.size() / 3 > static_cast<size_t>(INT32_MAX)) {
+      status = line_error(*name, lines->face_line[f], "more than 2^31-1 triangles");
+      return false;
+    }
+    return true;
+  }
+
+  // A polygon corner's vertex, texture coordinate and normal (-1: none).
+  struct Corner {
+    int32_t v = 0, vt = -1, vn = -1;
+  };
+
+  static void push3(std::vector<int32_t>* out, int32_t a, int32_t b, int32_t c) {
+    out->push_back(a);
+    out->push_back(b);
+    out->push_back(c);
   }
 
   static void count_face(bool has, bool lacks, int64_t f, CornerIndices* c) {

@@ -87,8 +87,12 @@ std::string format_obj(const Mesh& input, MeshWriteNotes* notes) {
   const MeshAttribute* normal = w.normal >= 0 ? &mesh.attributes[w.normal] : nullptr;
 
   std::string out = "# written by gab\n";
-  size_t reserve = static_cast<size_t>(mesh.num_vertices()) * (2 + 6 * (mesh_detail::kMaxRealChars + 1)) +
-                   static_cast<size_t>(mesh.num_triangles()) * (2 + 9 * (mesh_detail::kMaxIndexChars + 1));
+  // Reserved from the most characters each line can take: a string that
+  // grows copies itself (text_scanner.h).
+  const size_t reals_per_vertex = 3 + (color != nullptr ? 3 : 0);
+  const size_t indices_per_corner = 1 + (texcoord != nullptr ? 1 : 0) + (normal != nullptr ? 1 : 0);
+  size_t reserve = static_cast<size_t>(mesh.num_vertices()) * (2 + reals_per_vertex * (mesh_detail::kMaxRealChars + 1)) +
+                   static_cast<size_t>(mesh.num_triangles()) * (2 + 3 * indices_per_corner * (mesh_detail::kMaxIndexChars + 1));
   for (const MeshAttribute* a : {texcoord, normal}) {
     if (a != nullptr) reserve += a->values.size() * (mesh_detail::kMaxRealChars + 1) + 4 * a->values.size() / a->components;
   }
@@ -111,17 +115,21 @@ std::string format_obj(const Mesh& input, MeshWriteNotes* notes) {
   }
   if (texcoord != nullptr) append_elements(*texcoord, "vt", &out);
   if (normal != nullptr) append_elements(*normal, "vn", &out);
-  for (size_t c = 0; c < mesh.triangles.size(); ++c) {
-    const int32_t v = mesh.triangles[c];
-    out += c % 3 == 0 ? "f " : " ";
-    append_int(&out, static_cast<int64_t>(v) + 1);
-    if (texcoord != nullptr || normal != nullptr) out += '/';
-    if (texcoord != nullptr) append_int(&out, element_number(*texcoord, c, v));
-    if (normal != nullptr) {
+  for (size_t t = 0; t < mesh.triangles.size(); t += 3) {
+    out += 'f';
+    for (size_t c = t; c < t + 3; ++c) {
+      const int32_t v = mesh.triangles[c];
+      out += ' ';
+      append_int(&out, static_cast<int64_t>(v) + 1);
+      if (texcoord == nullptr && normal == nullptr) continue;
       out += '/';
-      append_int(&out, element_number(*normal, c, v));
+      if (texcoord != nullptr) append_int(&out, element_number(*texcoord, c, v));
+      if (normal != nullptr) {
+        out += '/';
+        append_int(&out, element_number(*normal, c, v));
+      }
     }
-    if (c % 3 == 2) out += '\n';
+    out += '\n';
   }
   if (notes != nullptr) *notes = std::move(seen);
   return out;

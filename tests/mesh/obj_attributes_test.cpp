@@ -139,7 +139,7 @@ TEST(ObjAttributesTest, MalformedAttributeDataNamesTheLine) {
       {v3 + "vn 0 0 1\nvn 0 x 1\nf 1//1 2//1 3//1\n", "x.obj:5: normal 1: bad value 'x'"},
       {v3 + "vt \nf 1/1 2/1 3/1\n", "x.obj:4: texture coordinate 0: needs 1 to 3 values, has 0"},
       {v3 + "vt 0 0.5.5\nf 1/1 2/1 3/1\n", "x.obj:4: texture coordinate 0: bad value '0.5.5'"},
-      {"v 0 0 0 1 0 0\nv 1 0 0 1 red 0\nv 0 1 0 0 0 1\nf 1 2 3\n", "x.obj:2: vertex 1 colour: bad value 'red'"},
+      {"v 0 0 0 1 0 0\nv 1 0 0 1 red 0\nv 0 1 0 0 0 1\nf 1 2 3\n", "x.obj:2: colour of vertex 1: bad value 'red'"},
       {v3 + "f 1/1/1/1 2 3\n", "x.obj:4: face 0: bad vertex index '1/1/1/1'"},
       {v3 + "vt 0 0\nf 1/99999999999 2/1 3/1\n", "x.obj:5: face 0: bad vertex index '1/99999999999'"},
   };
