@@ -310,18 +310,18 @@ Status apply_detail(ByteReader* in, const GabHeader& header, const Mesh& mesh, c
 // every chunk frame is walked again (a level of detail stops reading them
 // early) to reach them, and each attribute section decoded onto `mesh`
 // (normals predicted from the surface only when `whole_shape`: skipped
-// otherwise, as sections this build cannot decode). A
-// file that ends (or is damaged, for a level of detail that did not need
-// the chunk) before them has no attributes.
+// otherwise, as sections this build cannot decode). A file that ends (or is
+// damaged, for a level of detail that did not need the chunk) before them
+// has no attributes.
 Status decode_sections(const uint8_t* data, size_t size, size_t chunks_start, const GabHeader& header,
                        bool whole_shape, Mesh* mesh, DecodeStats* stats) {
   ByteReader in(data + chunks_start, size - chunks_start);
   for (int32_t i = 0; i < header.chunks; ++i) {
     const uint8_t* payload = nullptr;
     size_t payload_size = 0;
-    const FrameRead frame = read_framed(&in, &payload, &payload_size);
-    if (frame == FrameRead::kTruncated) stats->truncated = true;
-    if (frame != FrameRead::kOk) return Status::Ok();
+    // A chunk a level of detail did not need may be cut off or damaged: the
+    // shape stands (as before the sections existed), without attributes.
+    if (read_framed(&in, &payload, &payload_size) != FrameRead::kOk) return Status::Ok();
   }
   const auto start = std::chrono::steady_clock::now();
   std::vector<TrailingSection> sections;

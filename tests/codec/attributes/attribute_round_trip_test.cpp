@@ -10,7 +10,7 @@
 
 #include "attributes/attribute_section.h"
 #include "attributes/corner_table.h"
-#include "common/attribute_checks.h"
+#include "codec/attributes/attribute_checks.h"
 #include "common/gab_files.h"
 #include "common/test_meshes.h"
 #include "gab/codec/decoder.h"

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "common/attribute_checks.h"
+#include "codec/attributes/attribute_checks.h"
 #include "common/gab_files.h"
 #include "gab/codec/decoder.h"
 #include "gab/codec/encoder.h"
