@@ -261,8 +261,10 @@ void warn_read_notes(const std::string& path, const MeshReadNotes& notes) {
                  static_cast<long long>(notes.warnings_not_listed));
   }
   if (notes.dropped.empty()) return;
-  std::fprintf(stderr, "gab: warning: %s: not carried: %s; gab keeps positions and triangles only\n", path.c_str(),
-               notes.dropped_summary().c_str());
+  std::fprintf(stderr,
+               "gab: warning: %s: not carried: %s; gab keeps positions, triangles, normals, texture coordinates, "
+               "colours and vertex properties\n",
+               path.c_str(), notes.dropped_summary().c_str());
 }
 
 Status read_mesh_warning(const std::string& path, Mesh* mesh, MeshReadNotes* notes) {

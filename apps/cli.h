@@ -28,7 +28,7 @@ int usage_error(const std::string& command, const std::string& message);
 // What reading the mesh `path` left out or forgave, on stderr, one line
 // each: the reader's warnings ("gab: warning: <warning>"), then, when
 // something was dropped, "gab: warning: PATH: not carried: <counts>; gab
-// keeps positions and triangles only". --quiet does not silence it (it
+// keeps positions, triangles, normals, ...". --quiet does not silence it (it
 // silences the progress line only): data left out is never silent.
 void warn_read_notes(const std::string& path, const MeshReadNotes& notes);
 // read_mesh, then warn_read_notes on success; `notes` (optional) receives them.

@@ -26,7 +26,8 @@ constexpr double kDefaultError = 1e-3;
 int run_compress(int argc, char** argv) {
   Args args;
   if (!args.parse(argc, argv, {"-i", "-o", "--anchors", "--error", "--linf", "--bits", "--weight", "--batch-fraction", "--batch", "--chunk-growth",
-                   "--initial", "--threads", "--layout", "--detail", "--ordering", "--solver", "--order-out"},
+                   "--initial", "--threads", "--layout", "--detail", "--ordering", "--solver", "--order-out",
+                   "--normal-bits", "--uv-bits", "--color-bits", "--generic-bits"},
                   {"--json", "--geometry-only", "--refine", "--reorder", "--keep-order", "--quiet", "--strict"})) {
     return usage_error("compress", args.error());
   }
@@ -36,6 +37,8 @@ int run_compress(int argc, char** argv) {
   if (rules > 1) return usage_error("compress", "give at most one of --anchors, --error, --linf");
   EncodeOptions options;
   int64_t anchors = 0, bits = options.bits, initial = 0;
+  int64_t normal_bits = options.normal_bits, uv_bits = options.texcoord_bits, color_bits = options.color_bits,
+          generic_bits = options.generic_bits;
   double error = rules == 0 ? kDefaultError : 0.0, linf = 0.0;
   if (!args.get_int("--anchors", 1, 0x7FFFFFFF, &anchors) || !args.get_double("--error", 1e-12, 1.0, &error) ||
       !args.get_double("--linf", 1e-12, 1.0, &linf) || !args.get_int("--bits", kGabMinBits, kGabMaxBits, &bits) ||
@@ -43,9 +46,15 @@ int run_compress(int argc, char** argv) {
       !args.get_double("--batch-fraction", 0.0, 1.0, &options.batch_fraction) ||
       !args.get_double("--chunk-growth", 1.01, 1e9, &options.chunk_growth) ||
       !args.get_int("--initial", 1, 0x7FFFFFFF, &initial) || !args.get_threads(&options.threads) ||
-      !args.get_ordering(kCodecOrderings, Ordering::kAuto, &options.ordering)) {
+      !args.get_ordering(kCodecOrderings, Ordering::kAuto, &options.ordering) ||
+      !args.get_int("--normal-bits", 2, 16, &normal_bits) || !args.get_int("--uv-bits", 1, 31, &uv_bits) ||
+      !args.get_int("--color-bits", 1, 31, &color_bits) || !args.get_int("--generic-bits", 1, 31, &generic_bits)) {
     return usage_error("compress", args.error());
   }
+  options.normal_bits = static_cast<int>(normal_bits);
+  options.texcoord_bits = static_cast<int>(uv_bits);
+  options.color_bits = static_cast<int>(color_bits);
+  options.generic_bits = static_cast<int>(generic_bits);
   // --batch was this fraction's first spelling; study's --batch is a count.
   if (args.has("--batch")) {
     if (args.has("--batch-fraction")) return usage_error("compress", "give --batch-fraction only (--batch is its old name)");
@@ -203,6 +212,21 @@ int run_compress(int argc, char** argv) {
       candidates.push_back(std::move(j));
     }
     o.add("candidates", candidates);
+    o.add("attribute_bytes", static_cast<int64_t>(stats.attribute_bytes));
+    o.add("merged_vertices", static_cast<int64_t>(stats.merged_vertices));
+    std::vector<JsonObject> attributes;
+    for (const AttributeStats& a : stats.attributes) {
+      JsonObject j;
+      j.add("label", a.label);
+      j.add("bits", static_cast<int64_t>(a.bits));
+      j.add_bool("per_corner", a.per_corner);
+      j.add("elements", a.elements);
+      j.add("bytes", static_cast<int64_t>(a.bytes));
+      j.add("max_error", a.max_error);
+      j.add_bool("from_surface", a.from_surface);
+      attributes.push_back(j);
+    }
+    o.add("attributes", attributes);
     // What the input held that the file does not carry (docs/cli.md).
     JsonObject dropped;
     for (const DroppedData& d : read_notes.dropped) dropped.add(d.key, d.count);
@@ -223,10 +247,20 @@ int run_compress(int argc, char** argv) {
                               : "",
                stats.bits);
   std::fprintf(summary,
-               "%zu bytes (geometry %zu = %.3f bits/vertex, connectivity %zu, vertex order %zu); error rms %.3g, max "
-               "%.3g of the bounding-box diagonal; %.2f s\n",
-               stats.bytes, stats.geometry_bytes, bpv, stats.connectivity_bytes, stats.order_bytes, stats.rms_rel,
-               stats.linf_rel, stats.encode_s);
+               "%zu bytes (geometry %zu = %.3f bits/vertex, connectivity %zu, vertex order %zu, attributes %zu); error "
+               "rms %.3g, max %.3g of the bounding-box diagonal; %.2f s\n",
+               stats.bytes, stats.geometry_bytes, bpv, stats.connectivity_bytes, stats.order_bytes,
+               stats.attribute_bytes, stats.rms_rel, stats.linf_rel, stats.encode_s);
+  if (stats.merged_vertices > 0) {
+    std::fprintf(summary, "  %d vertices merged into copies at the same position (their data kept per corner)\n",
+                 stats.merged_vertices);
+  }
+  for (const AttributeStats& a : stats.attributes) {
+    std::fprintf(summary, "  %s: %zu bytes, %lld %s, %d bits, largest error %.3g%s%s\n", a.label.c_str(), a.bytes,
+                 static_cast<long long>(a.elements), a.per_corner ? "values shared by corners" : "per vertex", a.bits,
+                 a.max_error, a.label == "normals" ? " degrees" : "",
+                 a.from_surface ? " (predicted from the decoded surface)" : "");
+  }
   return kExitOk;
 }
 

@@ -12,6 +12,7 @@
 #include "gab/codec/decoder.h"
 #include "gab/mesh/file_io.h"
 #include "gab/mesh/mesh_io.h"
+#include "gab/mesh/mesh_write_notes.h"
 
 namespace gab {
 namespace cli {
@@ -101,8 +102,26 @@ int run_decompress(int argc, char** argv) {
     options.progress = nullptr;  // it refers to `progress`, which ends here
   }
   if (!status.ok()) return fail(in + ": " + status.message());
-  status = write_mesh(out, mesh);
+  MeshWriteNotes written;
+  status = write_mesh(out, mesh, PlyWriteOptions(), &written);
   if (!status.ok()) return fail(status.message());
+  // What the output's format could not hold as decoded: never silent.
+  if (written.split_vertices > 0) {
+    std::fprintf(stderr,
+                 "gab decompress: warning: %s: %lld vertices added where per-corner data has seams (the format holds "
+                 "it per vertex; OBJ keeps the mesh's vertices)\n",
+                 out.c_str(), static_cast<long long>(written.split_vertices));
+  }
+  if (!written.not_written.empty()) {
+    std::fprintf(stderr, "gab decompress: warning: %s: not written: %s\n", out.c_str(),
+                 written.not_written_summary().c_str());
+  }
+  if (stats.skipped_sections > 0) {
+    std::fprintf(stderr,
+                 "gab decompress: warning: %s: %d sections not decoded (attributes predicted from the whole decoded "
+                 "shape, which a level of detail does not have, or of a kind this build does not know)\n",
+                 in.c_str(), stats.skipped_sections);
+  }
   if (options.connectivity != nullptr && !stats.geometry_only) {
     std::fprintf(stderr, "gab decompress: warning: --connectivity ignored: %s carries its own connectivity\n",
                  in.c_str());
@@ -135,6 +154,10 @@ int run_decompress(int argc, char** argv) {
     o.add("detail_s", stats.detail_s);
     o.add("ordering", std::string(ordering_name(stats.ordering)));
     o.add("solver", std::string(solver_name(stats.solver)));
+    o.add("attributes", static_cast<int64_t>(mesh.attributes.size()));
+    o.add("attributes_s", stats.attributes_s);
+    o.add("skipped_sections", static_cast<int64_t>(stats.skipped_sections));
+    o.add("split_vertices", written.split_vertices);
     std::printf("%s\n", o.str().c_str());
     return kExitOk;
   }

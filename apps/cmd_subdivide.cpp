@@ -3,6 +3,7 @@
 // after three levels is issue 19's 2.4M-vertex mesh, which `gab study
 // --subdivide` builds in memory only.
 #include <cstdio>
+#include <string>
 
 #include "cli.h"
 #include "commands.h"
@@ -25,6 +26,14 @@ int run_subdivide(int argc, char** argv) {
   Mesh mesh;
   Status status = read_mesh_warning(in, &mesh);
   if (!status.ok()) return fail(status.message());
+  // The subdivision makes positions and triangles only: what else the input
+  // carries is named, not lost silently.
+  if (!mesh.attributes.empty()) {
+    std::string names;
+    for (const MeshAttribute& a : mesh.attributes) names += (names.empty() ? "" : ", ") + attribute_label(a);
+    std::fprintf(stderr, "gab subdivide: warning: %s: not subdivided, left out of %s: %s\n", in.c_str(), out.c_str(),
+                 names.c_str());
+  }
   const Mesh fine = subdivide_midpoint(mesh, static_cast<int>(levels));
   status = write_mesh(out, fine);
   if (!status.ok()) return fail(status.message());

@@ -11,6 +11,7 @@ const std::vector<Command>& commands() {
        {"-i IN -o OUT.gab [--anchors K | --error E | --linf E] [--bits Q] [--weight W]",
         "[--keep-order] [--geometry-only] [--detail auto|on|off] [--solver auto|global|iterative]",
         "[--refine] [--order-out FILE] [--threads T] [--json] [--quiet] [--strict]",
+        "[--normal-bits 8] [--uv-bits 10] [--color-bits 8] [--generic-bits 16]",
         "(tuning: --batch-fraction F --chunk-growth G --initial K --layout smaller|levels|selection",
         "         --ordering auto|amd|nd)"},
        "compress a mesh's geometry with geometry-aware anchors (default --error 0.001: relative\n"
@@ -26,8 +27,12 @@ const std::vector<Command>& commands() {
        "or global (the paper's factored least squares: files about 10% smaller at 1e-3, decoding an\n"
        "order of magnitude slower in several times the memory; auto picks it for --refine, which needs it).\n"
        "--ordering: the global solver's factorizations' (speed only; recorded in the file; auto:\n"
-       "nested dissection from 100k vertices). --strict: fail, before any work, when the input holds\n"
-       "data gab does not carry (normals, texture coordinates, colours, materials, polygons, ...;\n"
+       "nested dissection from 100k vertices). Normals, texture coordinates, colours and other\n"
+       "per-vertex properties travel in the file, each quantized by its --*-bits (normals: a lattice\n"
+       "of about 4^bits directions; the rest a grid of 2^bits steps over the values' span; integer\n"
+       "values such as byte colours exactly); copies of a vertex at one position are merged, their\n"
+       "data kept per corner (not with --keep-order). --strict: fail, before any work, when the\n"
+       "input holds data gab does not carry (materials, groups, lines, polygons' arity, ...;\n"
        "otherwise a warning names them)"},
       {"decompress", run_decompress,
        {"-i IN.gab -o OUT [--anchors K] [--connectivity MESH] [--threads T] [--ordering auto|amd|nd]",

@@ -195,7 +195,7 @@ TEST(CodecCliTest, TheDefaultDropsTheVertexOrderAndKeepOrderPaysForIt) {
   // The human line names the order block either way (0 by default).
   const CommandResult human = run_gab("compress -i " + in + " -o " + reordered);
   ASSERT_EQ(human.exit_code, 0) << human.err;
-  EXPECT_NE(human.out.find(", vertex order 0); "), std::string::npos) << human.out;
+  EXPECT_NE(human.out.find(", vertex order 0, attributes 0); "), std::string::npos) << human.out;
   const CommandResult d = run_gab("decompress -i " + reordered + " -o " + out + " --json");
   ASSERT_EQ(d.exit_code, 0) << d.err;
   EXPECT_NE(d.out.find("\"reordered\": true"), std::string::npos) << d.out;

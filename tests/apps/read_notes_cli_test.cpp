@@ -40,7 +40,7 @@ std::string cube_with_attributes() {
 }
 
 const std::string kCubeWarning =
-    ": not carried: 1 lines (l), 1 groups (g), 1 material uses (usemtl); gab keeps positions and triangles only\n";
+    ": not carried: 1 lines (l), 1 groups (g), 1 material uses (usemtl); gab keeps positions, triangles, normals, texture coordinates, colours and vertex properties\n";
 
 TEST(ReadNotesCliTest, CompressWarnsOnceAndJsonHasDropped) {
   const std::string in = write_scratch_file("cube_att.obj", cube_with_attributes());
@@ -110,7 +110,7 @@ TEST(ReadNotesCliTest, UnknownPlyHeaderLineIsAWarningNotAnError) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, "gab: warning: " + in + ":3: unknown header line 'Created by Blender3D 247 - www.b...' skipped\n"
                    "gab: warning: " + in + ": not carried: 1 polygons of 4 or more corners (fan-triangulated); gab "
-                   "keeps positions and triangles only\n");
+                   "keeps positions, triangles, normals, texture coordinates, colours and vertex properties\n");
 }
 
 TEST(ReadNotesCliTest, EveryCommandThatReadsAMeshWarnsPerInput) {
@@ -118,15 +118,19 @@ TEST(ReadNotesCliTest, EveryCommandThatReadsAMeshWarnsPerInput) {
   const std::string quad = write_scratch_file("quad_every.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n");
   const std::string quad_warning = "gab: warning: " + quad +
                                    ": not carried: 1 polygons of 4 or more corners (fan-triangulated); gab keeps "
-                                   "positions and triangles only\n";
+                                   "positions, triangles, normals, texture coordinates, colours and vertex properties\n";
   CommandResult r = run_gab("diff " + cube + " " + quad + " --json --samples 10");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err.substr(0, r.err.find('\n') + 1), "gab: warning: " + cube + kCubeWarning);
   EXPECT_NE(r.err.find(quad_warning), std::string::npos) << r.err;
 
-  r = run_gab("subdivide " + cube + " -o " + gab_test::scratch_path("cube_fine.obj"));
+  // Subdividing keeps positions and triangles: the normals and texture
+  // coordinates the reader carried are named too.
+  const std::string fine = gab_test::scratch_path("cube_fine.obj");
+  r = run_gab("subdivide " + cube + " -o " + fine);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(r.err, "gab: warning: " + cube + kCubeWarning);
+  EXPECT_EQ(r.err, "gab: warning: " + cube + kCubeWarning + "gab subdivide: warning: " + cube +
+                       ": not subdivided, left out of " + fine + ": normals, texture_coordinates\n");
 
   r = run_gab("factor " + cube + " --anchors 2 --repeat 1 --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
