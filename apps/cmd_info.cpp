@@ -143,10 +143,12 @@ int run_info(int argc, char** argv) {
       static const char* const kPredictors[] = {"", ", predicted from the decoded surface",
                                                 ", predicted from the decoded surface and the neighbours",
                                                 ", predicted from the decoded surface (faces unweighted)",
-                                                ", predicted from the decoded surface (faces by angle)"};
+                                                ", predicted from the decoded surface (faces by angle)",
+                                                ", predicted from the values in its triangles",
+                                                ", predicted from the values in its triangles, else the surface"};
       std::printf("  section %zu: %s, %lld %s, %d bits%s, %zu bytes\n", i, section.attribute.c_str(),
                   static_cast<long long>(section.elements), section.per_corner ? "values shared by corners" : "per vertex",
-                  section.bits, kPredictors[section.predictor < 5 ? section.predictor : 0], section.bytes);
+                  section.bits, kPredictors[section.predictor < 7 ? section.predictor : 0], section.bytes);
     }
   }
   return kExitOk;

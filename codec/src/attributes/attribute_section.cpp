@@ -24,7 +24,25 @@ constexpr uint8_t kPredictorSurface = 1;  // normals: the decoded surface's, els
 constexpr uint8_t kPredictorBlend = 2;    // normals: predictors 1 and 0 summed on the lattice
 constexpr uint8_t kPredictorFaces = 3;    // normals: 1 with each triangle's unit normal (unweighted)
 constexpr uint8_t kPredictorAngles = 4;   // normals: 1 with unit normals weighted by the corner's angle
-constexpr uint8_t kLastPredictor = kPredictorAngles;
+constexpr uint8_t kPredictorMean = 5;     // any kind: the decoded values in the wedge's triangles, else 0's chain
+constexpr uint8_t kPredictorMeanSurface = 6;  // normals: 5, else 1 (faceted normals: a triangle's corners alike)
+constexpr uint8_t kLastPredictor = kPredictorMeanSurface;
+
+// What each predictor does, in order: the mean of the decoded values in the
+// wedge's triangles first; the decoded surface's normal (summed with 0's
+// prediction for 2); else predictor 0's chain.
+struct PredictorSteps {
+  bool mean_first = false;
+  bool surface = false;
+  bool blend = false;
+};
+PredictorSteps steps_of(uint8_t predictor) {
+  PredictorSteps s;
+  s.mean_first = predictor == kPredictorMean || predictor == kPredictorMeanSurface;
+  s.surface = predictor != kPredictorParallelogram && predictor != kPredictorMean;
+  s.blend = predictor == kPredictorBlend;
+  return s;
+}
 // The surface normal's scale before the lattice: 2^5 times the lattice's
 // radius, so that its rounding (through the guard band) moves the
 // prediction by a thirty-second of a lattice step at most.
@@ -93,7 +111,10 @@ class Walk {
  public:
   Walk(const CornerTable& t, const AttributeQuantizer& q, bool per_corner)
       : t_(t), q_(q), k_(q.components), per_corner_(per_corner), element_(t.triangles->size(), -1) {
-    if (!per_corner) values_.assign(static_cast<size_t>(t.num_vertices) * k_, 0);
+    if (!per_corner) {
+      values_.assign(static_cast<size_t>(t.num_vertices) * k_, 0);
+      activity_.assign(t.num_vertices, 0);
+    }
   }
 
   int32_t element(int32_t corner) const { return element_[corner]; }
@@ -153,6 +174,30 @@ class Walk {
     }
   }
 
+  // The mean of the decoded values in the wedge's triangles (predictors 5
+  // and 6); false when none is decoded (or, for normals, they cancel).
+  bool mean(const Wedge& wedge, int32_t* out) const {
+    int64_t sum[4] = {0, 0, 0, 0};
+    int64_t count = 0;
+    for (int32_t c : wedge) {
+      for (int32_t x : {CornerTable::next(c), CornerTable::prev(c)}) {
+        if (element_[x] < 0) continue;
+        for (int i = 0; i < k_; ++i) sum[i] += value(element_[x])[i];
+        ++count;
+      }
+    }
+    if (count == 0) return false;
+    if (q_.lattice()) {
+      if (sum[0] == 0 && sum[1] == 0 && sum[2] == 0) return false;
+      project_to_lattice(sum, q_.radius(), out);
+      return true;
+    }
+    for (int i = 0; i < k_; ++i) {
+      out[i] = static_cast<int32_t>(std::min<int64_t>(std::max<int64_t>(round_div(sum[i], count), 0), q_.max_index()));
+    }
+    return true;
+  }
+
   // The decoded surface's normal at the wedge: the sum of its triangles'
   // normals (the cross products of their edges at the corner, in the
   // triangles' orientation): as they are (area-weighted, predictors 1 and
@@ -184,16 +229,35 @@ class Walk {
   }
 
   // The wedge's element is `value`: its corners take it.
-  void add(const Wedge& wedge, int32_t vertex, const int32_t* value) {
+  // The wedge's element is `value`, coded with residuals of largest
+  // magnitude `activity`: its corners take it.
+  void add(const Wedge& wedge, int32_t vertex, const int32_t* value, int32_t activity) {
     int32_t e = vertex;
     if (per_corner_) {
       e = static_cast<int32_t>(values_.size() / k_);
       values_.insert(values_.end(), value, value + k_);
+      activity_.push_back(activity);
     } else {
       std::copy(value, value + k_, values_.begin() + static_cast<std::ptrdiff_t>(e) * k_);
+      activity_[e] = activity;
     }
     for (int32_t c : wedge) element_[c] = e;
     last_ = e;
+  }
+
+  // The residuals' size around the wedge: the mean of the largest residual
+  // magnitudes of the decoded elements in its triangles (rounded down), or
+  // `otherwise` when none is decoded.
+  int32_t activity(const Wedge& wedge, int32_t otherwise) const {
+    int64_t sum = 0, count = 0;
+    for (int32_t c : wedge) {
+      for (int32_t x : {CornerTable::next(c), CornerTable::prev(c)}) {
+        if (element_[x] < 0) continue;
+        sum += activity_[element_[x]];
+        ++count;
+      }
+    }
+    return count > 0 ? static_cast<int32_t>(sum / count) : otherwise;
   }
 
  private:
@@ -203,6 +267,7 @@ class Walk {
   const bool per_corner_;
   std::vector<int32_t> element_;
   std::vector<int32_t> values_;
+  std::vector<int32_t> activity_;
   int32_t last_ = -1;
 };
 
@@ -388,9 +453,11 @@ Coded encode_stream(const MeshAttribute& a, const CornerTable& t, const Attribut
       }
     }
     for (const Wedge& wedge : per_corner ? splitter.split(t, v, joined) : splitter.whole(t, v)) {
+      const PredictorSteps use = steps_of(predictor);
+      bool predicted = use.mean_first && walk.mean(wedge, pred);
       double n[3] = {0, 0, 0};
-      if (predictor != kPredictorParallelogram) Walk::surface_normal(t, wedge, *positions, predictor, n);
-      if (n[0] != 0 || n[1] != 0 || n[2] != 0) {
+      if (!predicted && use.surface) Walk::surface_normal(t, wedge, *positions, predictor, n);
+      if (!predicted && (n[0] != 0 || n[1] != 0 || n[2] != 0)) {
         surface_prediction(n, q, [&](double x) {
           bool up = false;
           const int64_t rounded = round_prediction(x, &up);
@@ -399,10 +466,10 @@ Coded encode_stream(const MeshAttribute& a, const CornerTable& t, const Attribut
           if (near) enc.encode(&models.round_up, up ? 1 : 0);
           return rounded;
         }, pred);
-        if (predictor == kPredictorBlend) blend(walk, wedge, q, pred);
-      } else {
-        walk.predict(wedge, pred);
+        if (use.blend) blend(walk, wedge, q, pred);
+        predicted = true;
       }
+      if (!predicted) walk.predict(wedge, pred);
       if (!wedge.empty()) {
         std::copy(corner_value(*wedge.first), corner_value(*wedge.first) + k, actual);
       } else if (!a.per_corner()) {
@@ -410,6 +477,7 @@ Coded encode_stream(const MeshAttribute& a, const CornerTable& t, const Attribut
       } else {
         std::copy(pred, pred + k, actual);  // a vertex in no triangle: nothing to keep
       }
+      const int32_t around = walk.activity(wedge, models.previous_max);
       if (q.lattice()) {
         const NormalFrame frame(pred);
         int32_t p2[3], a2[3];
@@ -417,7 +485,7 @@ Coded encode_stream(const MeshAttribute& a, const CornerTable& t, const Attribut
         frame.to(actual, a2);
         for (int c = 0; c < 2; ++c) {
           r[c] = a2[c] - p2[c];
-          models.residual.encode(&enc, r[c], residual_context(c, r, models.previous_max));
+          models.residual.encode(&enc, r[c], residual_context(c, r, around));
         }
         if (q.radius() - std::abs(a2[0]) - std::abs(a2[1]) > 0) enc.encode(&models.below, a2[2] < 0 ? 1 : 0);
         models.previous_max = std::max(std::abs(r[0]), std::abs(r[1]));
@@ -425,12 +493,12 @@ Coded encode_stream(const MeshAttribute& a, const CornerTable& t, const Attribut
         int32_t m = 0;
         for (int c = 0; c < k; ++c) {
           r[c] = actual[c] - pred[c];
-          models.residual.encode(&enc, r[c], residual_context(c, r, models.previous_max));
+          models.residual.encode(&enc, r[c], residual_context(c, r, around));
           m = std::max(m, std::abs(r[c]));
         }
         models.previous_max = m;
       }
-      walk.add(wedge, v, actual);
+      walk.add(wedge, v, actual, models.previous_max);
     }
   }
   return {enc.finish(), walk.elements()};
@@ -461,16 +529,20 @@ std::vector<uint8_t> encode_attribute_section(const MeshAttribute& a, const Corn
       }
     }
   }
-  // Normals over a decoded surface: the smallest of every predictor.
+  // The smallest of every predictor the attribute can take (normals over
+  // the decoded surface: every one).
   uint8_t predictor = kPredictorParallelogram;
   Coded coded = encode_stream(a, t, q, input, per_corner, predictor, nullptr);
+  std::vector<uint8_t> others = {kPredictorMean};
   if (q.lattice() && positions != nullptr) {
-    for (uint8_t other : {kPredictorSurface, kPredictorBlend, kPredictorFaces, kPredictorAngles}) {
-      Coded surface = encode_stream(a, t, q, input, per_corner, other, positions);
-      if (surface.stream.size() < coded.stream.size()) {
-        coded = std::move(surface);
-        predictor = other;
-      }
+    others.insert(others.end(),
+                  {kPredictorSurface, kPredictorBlend, kPredictorFaces, kPredictorAngles, kPredictorMeanSurface});
+  }
+  for (uint8_t other : others) {
+    Coded candidate = encode_stream(a, t, q, input, per_corner, other, positions);
+    if (candidate.stream.size() < coded.stream.size()) {
+      coded = std::move(candidate);
+      predictor = other;
     }
   }
 
@@ -483,7 +555,7 @@ std::vector<uint8_t> encode_attribute_section(const MeshAttribute& a, const Corn
     coding->bits = q.bits;
     coding->per_corner = per_corner;
     coding->elements = coded.elements;
-    coding->surface = predictor != kPredictorParallelogram;
+    coding->surface = steps_of(predictor).surface;
     // The error of every input element that reaches the output.
     double decoded[4];
     for (int64_t e = 0; e < a.num_elements(); ++e) {
@@ -512,12 +584,13 @@ Status read_attribute_description(const uint8_t* payload, size_t size, Attribute
     return Status::Error(StatusCode::kUnsupported,
                          "attribute section: value type " + std::to_string(type) + " is unknown");
   }
-  if (predictor > kLastPredictor || (predictor != kPredictorParallelogram && kind != 0)) {
+  if (predictor > kLastPredictor ||
+      (kind != static_cast<uint8_t>(AttributeKind::kNormal) && steps_of(predictor).surface)) {
     return Status::Error(StatusCode::kUnsupported,
                          "attribute section: predictor " + std::to_string(predictor) + " is unknown");
   }
   d->predictor = predictor;
-  d->surface = predictor != kPredictorParallelogram;
+  d->surface = steps_of(predictor).surface;
   MeshAttribute& a = d->attribute;
   a = MeshAttribute();
   a.kind = static_cast<AttributeKind>(kind);
@@ -598,24 +671,27 @@ Status decode_attribute_section(const uint8_t* payload, size_t size, const Corne
       if (walk.elements() >= static_cast<int64_t>(declared) && per_corner) {
         return corrupt("attribute section: more elements than its declared " + std::to_string(declared));
       }
+      const PredictorSteps use = steps_of(d.predictor);
+      bool predicted = use.mean_first && walk.mean(wedge, pred);
       double n[3] = {0, 0, 0};
-      if (d.surface) Walk::surface_normal(t, wedge, *positions, d.predictor, n);
-      if (n[0] != 0 || n[1] != 0 || n[2] != 0) {
+      if (!predicted && use.surface) Walk::surface_normal(t, wedge, *positions, d.predictor, n);
+      if (!predicted && (n[0] != 0 || n[1] != 0 || n[2] != 0)) {
         surface_prediction(n, q, [&](double x) {
           const bool near = dec.decode(&models.near_tie) != 0;
           const bool up = near && dec.decode(&models.round_up) != 0;
           return resolve_prediction(x, near, up);
         }, pred);
-        if (d.predictor == kPredictorBlend) blend(walk, wedge, q, pred);
-      } else {
-        walk.predict(wedge, pred);
+        if (use.blend) blend(walk, wedge, q, pred);
+        predicted = true;
       }
+      if (!predicted) walk.predict(wedge, pred);
+      const int32_t around = walk.activity(wedge, models.previous_max);
       if (q.lattice()) {
         const NormalFrame frame(pred);
         int32_t p2[3], a2[3];
         frame.to(pred, p2);
         for (int c = 0; c < 2; ++c) {
-          r[c] = models.residual.decode(&dec, residual_context(c, r, models.previous_max));
+          r[c] = models.residual.decode(&dec, residual_context(c, r, around));
           const int64_t x = int64_t{p2[c]} + r[c];
           if (x < -q.radius() || x > q.radius()) return corrupt("attribute section: a normal is off its lattice");
           a2[c] = static_cast<int32_t>(x);
@@ -628,7 +704,7 @@ Status decode_attribute_section(const uint8_t* payload, size_t size, const Corne
       } else {
         int32_t m = 0;
         for (int c = 0; c < k; ++c) {
-          r[c] = models.residual.decode(&dec, residual_context(c, r, models.previous_max));
+          r[c] = models.residual.decode(&dec, residual_context(c, r, around));
           const int64_t x = int64_t{pred[c]} + r[c];
           if (x < 0 || x > q.max_index()) return corrupt("attribute section: a value is off its grid");
           actual[c] = static_cast<int32_t>(x);
@@ -636,7 +712,7 @@ Status decode_attribute_section(const uint8_t* payload, size_t size, const Corne
         }
         models.previous_max = m;
       }
-      walk.add(wedge, v, actual);
+      walk.add(wedge, v, actual, models.previous_max);
     }
     if (dec.overrun()) return corrupt("attribute section: its stream is cut short");
   }

@@ -38,11 +38,12 @@ struct AttributeCoding {
 // The section's payload for `attribute` (valid for the mesh of `table`,
 // numbered as the decoder returns it), quantized at `bits` (normals: the
 // lattice's, 2..16; float-typed: the grid's, 1..31; integer-typed: ignored,
-// exact). A per-corner attribute with no seam is coded per vertex. Normals,
-// given `positions` (the decoded shape, bit for bit the decoder's), are
-// coded three ways, by the parallelogram, by the decoded surface's normal
-// and by both, and the smallest kept. O(elements + corners), three times
-// for normals.
+// exact). A per-corner attribute with no seam is coded per vertex. Every
+// predictor the attribute can take is tried and the smallest stream kept:
+// the parallelogram and the values in the wedge's triangles; for normals,
+// given `positions` (the decoded shape, bit for bit the decoder's), also
+// the decoded surface's normal in four ways. O(elements + corners) per
+// predictor.
 std::vector<uint8_t> encode_attribute_section(const MeshAttribute& attribute, const CornerTable& table, int bits,
                                               const std::vector<double>* positions, AttributeCoding* coding);
 

@@ -277,6 +277,12 @@ TEST(AttributeRoundTrip, CopiesOfAVertexAreMergedTheirValuesKeptPerCorner) {
   ASSERT_EQ(out.attributes.size(), 1u);
   EXPECT_TRUE(out.attributes[0].per_corner());
   EXPECT_LE(largest_error(soup, out, stats.new_index, 0), stats.attributes[0].max_error + 1e-9);
+  // Faceted normals (a triangle's corners alike) are predicted from the
+  // values already decoded in their triangle (predictors 5 and 6).
+  GabFileInfo info;
+  ASSERT_TRUE(read_gab_info(file.data(), file.size(), &info).ok());
+  ASSERT_EQ(info.section_list.size(), 1u);
+  EXPECT_GE(info.section_list[0].predictor, 5);
   // Kept order: every copy stays a vertex.
   o.reorder = false;
   EncodeStats kept;

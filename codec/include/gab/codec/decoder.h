@@ -124,7 +124,7 @@ struct GabFileInfo {
     bool per_corner = false;
     int64_t elements = 0;
     int bits = 0;
-    int predictor = 0;  // 0 the neighbours' values, 1-4 the decoded surface (docs/format.md 6.4)
+    int predictor = 0;  // 0, 5 the neighbours' values; 1-4, 6 also the decoded surface (docs/format.md 6.4)
   };
   std::vector<Section> section_list;
   size_t section_bytes = 0;  // all of them with their framing (not in geometry_bytes)
