@@ -1,10 +1,12 @@
-// gab_compress, gab_compress_ex, gab_compress_with_report and the options'
-// and report's init: the encoder (gab/codec/encoder.h) behind the C door.
+// gab_compress, gab_compress_ex, gab_compress_with_report,
+// gab_compress_with_attributes and the options' and report's init: the
+// encoder (gab/codec/encoder.h) behind the C door.
 #include <algorithm>
 #include <cstddef>
 #include <cstdlib>
 #include <cstring>
 
+#include "attribute_arrays.h"
 #include "boundary.h"
 #include "gab/codec/encoder.h"
 #include "ordering_codes.h"
@@ -36,6 +38,10 @@ Status read_options(const gab_compress_options* in, EncodeOptions* out) {
     GAB_TAKE(refine);
     GAB_TAKE(ordering);
     GAB_TAKE(solver);
+    GAB_TAKE(normal_bits);
+    GAB_TAKE(texcoord_bits);
+    GAB_TAKE(color_bits);
+    GAB_TAKE(generic_bits);
 #undef GAB_TAKE
   }
   GAB_RETURN_IF_ERROR(options_threads(o.threads, &out->threads));
@@ -52,6 +58,10 @@ Status read_options(const gab_compress_options* in, EncodeOptions* out) {
   out->target_linf_rel = o.target_linf_rel;
   out->bits = o.bits;
   out->weight = o.weight;
+  out->normal_bits = o.normal_bits;  // the attributes' bits: the encoder checks their ranges
+  out->texcoord_bits = o.texcoord_bits;
+  out->color_bits = o.color_bits;
+  out->generic_bits = o.generic_bits;
   out->reorder = o.reorder != 0;
   out->refine = o.refine != 0;
   out->detail = o.detail == GAB_DETAIL_ON    ? DetailMode::kOn
@@ -60,7 +70,7 @@ Status read_options(const gab_compress_options* in, EncodeOptions* out) {
   return Status::Ok();
 }
 
-// The report of an encode, as gab.h describes it; `order` still to set.
+// The report of an encode, as gab.h describes it; `order` and `attributes` still to set.
 gab_compress_report report_of(const EncodeStats& stats, double weight) {
   gab_compress_report r;
   std::memset(&r, 0, sizeof r);
@@ -91,6 +101,9 @@ gab_compress_report report_of(const EncodeStats& stats, double weight) {
   r.bpv_geometry = 8.0 * static_cast<double>(stats.geometry_bytes) / stats.num_vertices;
   r.weight = weight;
   r.encode_s = stats.encode_s;
+  r.merged_vertices = stats.merged_vertices;
+  r.num_attributes = static_cast<int32_t>(stats.attributes.size());
+  r.attribute_bytes = stats.attribute_bytes;
   return r;
 }
 
@@ -104,9 +117,17 @@ void clear_report(gab_compress_report* report) {
   std::memset(reinterpret_cast<unsigned char*>(report) + sizeof(size_t), 0, report_bytes(report) - sizeof(size_t));
 }
 
+// Whether the caller's report, `written` bytes of it, holds `field`.
+#define GAB_REPORT_HOLDS(written, field) \
+  (offsetof(gab_compress_report, field) + sizeof(gab_compress_report::field) <= (written))
+
+// Every compress door: the mesh (and `attributes`, `num_attributes` of
+// them) checked, the options read (`fixed`: the encoder's, given by a door
+// without options), the file and the report made.
 int compress(const char* function, const double* positions, int32_t n, const int32_t* triangles, int32_t t,
-             const EncodeOptions* fixed, const gab_compress_options* options, unsigned char** out,
-             size_t* out_size, gab_compress_report* report, char* message, size_t message_size) {
+             const gab_attribute* attributes, int32_t num_attributes, const EncodeOptions* fixed,
+             const gab_compress_options* options, unsigned char** out, size_t* out_size,
+             gab_compress_report* report, char* message, size_t message_size) {
   clear_report(report);
   return guarded(function, message, message_size, [&]() -> Status {
     if (out != nullptr) *out = nullptr;
@@ -118,30 +139,45 @@ int compress(const char* function, const double* positions, int32_t n, const int
                                     ": set it with gab_compress_report_init"));
     Mesh mesh;
     GAB_RETURN_IF_ERROR(import_mesh(positions, n, triangles, t, &mesh));
+    GAB_RETURN_IF_ERROR(import_attributes(attributes, num_attributes, &mesh));
     EncodeOptions encode_options;
     if (fixed != nullptr) {
       encode_options = *fixed;
     } else {
       GAB_RETURN_IF_ERROR(read_options(options, &encode_options));
     }
+    std::vector<AttributeKind> kinds;  // the report's; the encoder takes the mesh
+    for (const MeshAttribute& a : mesh.attributes) kinds.push_back(a.kind);
     std::vector<uint8_t> file;
     EncodeStats stats;
-    GAB_RETURN_IF_ERROR(encode_mesh(mesh, encode_options, &file, &stats));
+    GAB_RETURN_IF_ERROR(encode_mesh(std::move(mesh), encode_options, &file, &stats));
     if (report == nullptr) return export_bytes(file, out, out_size);
+    // The arrays the caller's report has room for, then the file: on any
+    // failure the caller gets none of them.
     gab_compress_report r = report_of(stats, encode_options.weight);
     const size_t written = report_bytes(report);
-    const bool has_order = offsetof(gab_compress_report, order) + sizeof r.order <= written;
-    if (stats.reordered && has_order) GAB_RETURN_IF_ERROR(export_indices(stats.new_index, &r.order));
-    const Status exported = export_bytes(file, out, out_size);
-    if (!exported.ok()) {
-      std::free(r.order);
-      return exported;
+    struct Owned {
+      gab_compress_report* r;
+      bool kept = false;
+      ~Owned() {
+        if (kept) return;
+        std::free(r->order);
+        std::free(r->attributes);
+      }
+    } owned{&r};
+    if (stats.reordered && GAB_REPORT_HOLDS(written, order)) GAB_RETURN_IF_ERROR(export_indices(stats.new_index, &r.order));
+    if (GAB_REPORT_HOLDS(written, attributes)) {
+      GAB_RETURN_IF_ERROR(export_attribute_stats(stats.attributes, kinds, &r.attributes));
     }
+    GAB_RETURN_IF_ERROR(export_bytes(file, out, out_size));
+    owned.kept = true;
     r.size = written;
     std::memcpy(static_cast<void*>(report), &r, written);
     return Status::Ok();
   });
 }
+
+#undef GAB_REPORT_HOLDS
 
 }  // namespace
 
@@ -155,6 +191,11 @@ extern "C" void gab_compress_options_init(gab_compress_options* options, size_t 
   o.reorder = 1;  // the encoder's default (issue 34): a zero here, set by the caller, keeps the numbering
   o.threads = 1;
   o.detail = GAB_DETAIL_AUTO;
+  const gab::EncodeOptions defaults;
+  o.normal_bits = defaults.normal_bits;
+  o.texcoord_bits = defaults.texcoord_bits;
+  o.color_bits = defaults.color_bits;
+  o.generic_bits = defaults.generic_bits;
   gab::capi::init_options(o, options, size);
 }
 
@@ -167,15 +208,24 @@ extern "C" void gab_compress_report_init(gab_compress_report* report, size_t siz
 extern "C" int gab_compress_ex(const double* positions, int32_t n, const int32_t* triangles, int32_t t,
                                const gab_compress_options* options, unsigned char** out, size_t* out_size,
                                char* message, size_t message_size) {
-  return gab::capi::compress("gab_compress_ex", positions, n, triangles, t, nullptr, options, out, out_size, nullptr,
-                             message, message_size);
+  return gab::capi::compress("gab_compress_ex", positions, n, triangles, t, nullptr, 0, nullptr, options, out,
+                             out_size, nullptr, message, message_size);
 }
 
 extern "C" int gab_compress_with_report(const double* positions, int32_t n, const int32_t* triangles, int32_t t,
                                         const gab_compress_options* options, unsigned char** out, size_t* out_size,
                                         gab_compress_report* report, char* message, size_t message_size) {
-  return gab::capi::compress("gab_compress_with_report", positions, n, triangles, t, nullptr, options, out, out_size,
-                             report, message, message_size);
+  return gab::capi::compress("gab_compress_with_report", positions, n, triangles, t, nullptr, 0, nullptr, options,
+                             out, out_size, report, message, message_size);
+}
+
+extern "C" int gab_compress_with_attributes(const double* positions, int32_t n, const int32_t* triangles, int32_t t,
+                                            const gab_attribute* attributes, int32_t num_attributes,
+                                            const gab_compress_options* options, unsigned char** out,
+                                            size_t* out_size, gab_compress_report* report, char* message,
+                                            size_t message_size) {
+  return gab::capi::compress("gab_compress_with_attributes", positions, n, triangles, t, attributes, num_attributes,
+                             nullptr, options, out, out_size, report, message, message_size);
 }
 
 extern "C" int gab_compress(const double* positions, int32_t n, const int32_t* triangles, int32_t t,
@@ -185,6 +235,6 @@ extern "C" int gab_compress(const double* positions, int32_t n, const int32_t* t
   gab::EncodeOptions options;
   options.target_rms_rel = target_rms_rel;
   options.reorder = false;  // gab.h's contract: the decoded mesh keeps the numbering (the encoder's default drops it)
-  return gab::capi::compress("gab_compress", positions, n, triangles, t, &options, nullptr, out, out_size, nullptr,
-                             message, message_size);
+  return gab::capi::compress("gab_compress", positions, n, triangles, t, nullptr, 0, &options, nullptr, out, out_size,
+                             nullptr, message, message_size);
 }

@@ -53,6 +53,39 @@ class CompressOptions(ctypes.Structure):
         ("refine", c_int32),
         ("ordering", c_int32),
         ("solver", c_int32),
+        ("normal_bits", c_int32),
+        ("texcoord_bits", c_int32),
+        ("color_bits", c_int32),
+        ("generic_bits", c_int32),
+    ]
+
+
+class Attribute(ctypes.Structure):
+    """gab_attribute, field for field (gab.h)."""
+
+    _fields_ = [
+        ("kind", c_int32),
+        ("value_type", c_int32),
+        ("components", c_int32),
+        ("elements", c_int32),
+        ("name", c_char_p),
+        ("values", POINTER(c_double)),
+        ("corners", POINTER(c_int32)),
+    ]
+
+
+class AttributeStats(ctypes.Structure):
+    """gab_attribute_stats, field for field (gab.h)."""
+
+    _fields_ = [
+        ("label", c_char_p),
+        ("kind", c_int32),
+        ("bits", c_int32),
+        ("per_corner", c_int32),
+        ("from_surface", c_int32),
+        ("elements", c_int64),
+        ("bytes", c_size_t),
+        ("max_error", c_double),
     ]
 
 
@@ -88,7 +121,8 @@ class CompressReport(ctypes.Structure):
                                                "detail_bytes", "refinement_bytes")]
     _fields_ += [(name, c_double) for name in ("rms_rel", "linf_rel", "anchor_rms_rel", "unrefined_rms_rel",
                                                "detail_step_rel", "bpv_geometry", "weight", "encode_s")]
-    _fields_ += [("order", POINTER(c_int32))]
+    _fields_ += [("order", POINTER(c_int32)), ("merged_vertices", c_int32), ("num_attributes", c_int32),
+                 ("attribute_bytes", c_size_t), ("attributes", POINTER(AttributeStats))]
 
 
 def _candidates():

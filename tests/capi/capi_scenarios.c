@@ -131,6 +131,75 @@ int capi_read_mesh(const char* path, capi_mesh* mesh, char* message, size_t mess
   return gab_read_mesh(path, &mesh->positions, &mesh->n, &mesh->triangles, &mesh->t, message, message_size);
 }
 
+void capi_attribute_round_trip_run(const double* positions, int32_t n, const int32_t* triangles, int32_t t,
+                                   const double* normals, const double* uv, int32_t uv_count,
+                                   const int32_t* uv_corners, const unsigned char* rgba, const double* quality,
+                                   int32_t reorder, int32_t normal_bits, capi_attribute_round_trip* r) {
+  gab_attribute attributes[4];
+  gab_compress_options options;
+  double* colours = (double*)malloc(4 * (size_t)n * sizeof *colours);
+  size_t i;
+  memset(r, 0, sizeof *r);
+  memset(attributes, 0, sizeof attributes);
+  if (colours == NULL) {
+    r->compress_code = GAB_E_OUT_OF_MEMORY;
+    return;
+  }
+  for (i = 0; i < 4 * (size_t)n; ++i) colours[i] = rgba[i];
+  attributes[0].kind = GAB_ATTRIBUTE_NORMAL;
+  attributes[0].value_type = GAB_VALUE_FLOAT32;
+  attributes[0].components = 3;
+  attributes[0].elements = n;
+  attributes[0].values = normals; /* name and corners NULL: unnamed, per vertex */
+  attributes[1].kind = GAB_ATTRIBUTE_TEXCOORD;
+  attributes[1].value_type = GAB_VALUE_FLOAT32;
+  attributes[1].components = 2;
+  attributes[1].elements = uv_count;
+  attributes[1].name = "";
+  attributes[1].values = uv;
+  attributes[1].corners = uv_corners;
+  attributes[2].kind = GAB_ATTRIBUTE_COLOR;
+  attributes[2].value_type = GAB_VALUE_UINT8;
+  attributes[2].components = 4;
+  attributes[2].elements = n;
+  attributes[2].values = colours;
+  attributes[3].kind = GAB_ATTRIBUTE_GENERIC;
+  attributes[3].value_type = GAB_VALUE_FLOAT64;
+  attributes[3].components = 1;
+  attributes[3].elements = n;
+  attributes[3].name = "quality";
+  attributes[3].values = quality;
+  gab_compress_options_init(&options, sizeof options);
+  options.reorder = reorder;
+  if (normal_bits != 0) options.normal_bits = normal_bits;
+  gab_compress_report_init(&r->report, sizeof r->report);
+  r->compress_code = gab_compress_with_attributes(positions, n, triangles, t, attributes, 4, &options, &r->file,
+                                                  &r->size, &r->report, r->message, sizeof r->message);
+  free(colours); /* the library read it during the call only */
+  if (r->compress_code != GAB_OK) return;
+  r->decode_code = gab_decompress_with_attributes(r->file, r->size, NULL, &r->decoded.positions, &r->decoded.n,
+                                                  &r->decoded.triangles, &r->decoded.t, &r->attributes,
+                                                  &r->num_attributes, r->message, sizeof r->message);
+}
+
+void capi_attribute_round_trip_free(capi_attribute_round_trip* r) {
+  gab_free(r->file);
+  gab_free(r->report.order);
+  gab_free(r->report.attributes); /* one block: the labels inside it */
+  capi_free_mesh(&r->decoded);
+  gab_free(r->attributes); /* one block: values, corners and names inside it */
+  r->file = NULL;
+  r->report.order = NULL;
+  r->report.attributes = NULL;
+  r->attributes = NULL;
+}
+
+int capi_read_mesh_with_attributes(const char* path, capi_mesh* mesh, gab_attribute** attributes, int32_t* count,
+                                   char* message, size_t message_size) {
+  return gab_read_mesh_with_attributes(path, &mesh->positions, &mesh->n, &mesh->triangles, &mesh->t, attributes,
+                                       count, message, message_size);
+}
+
 void capi_cholesky_run(int32_t n, const int32_t* colptr, const int32_t* rowind, const double* values,
                        const double* b, int32_t nrhs, int32_t j, double w, double* x, double* x_updated, int code[6]) {
   gab_cholesky* c = NULL;

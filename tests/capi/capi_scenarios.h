@@ -7,6 +7,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "gab/gab.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -75,6 +77,35 @@ int capi_cholesky_ordered(int32_t n, const int32_t* colptr, const int32_t* rowin
 /* gab_decompress_ex of the whole file with the factorizations' `ordering`. */
 int capi_decompress_ordered(const unsigned char* file, size_t size, int32_t ordering, capi_mesh* mesh,
                             char* message, size_t message_size);
+
+/* Attributes from C: four made in C over a mesh of n vertices and t
+   triangles, from the caller's arrays (normals: 3n doubles, per vertex,
+   float32; uv: 2 uv_count doubles, per corner through uv_corners (3t);
+   rgba: 4n integers 0..255, per vertex, uint8; quality: n doubles, per
+   vertex, float64, a generic named "quality"), compressed by
+   gab_compress_with_attributes with `reorder` (and `normal_bits`, 0: the
+   init's) and a report, then decoded whole by gab_decompress_with_attributes.
+   Everything the library returned is kept for the caller to check; free it
+   with capi_attribute_round_trip_free. */
+typedef struct capi_attribute_round_trip {
+  int compress_code, decode_code;
+  unsigned char* file;
+  size_t size;
+  gab_compress_report report; /* its order and attributes released by the free */
+  capi_mesh decoded;
+  gab_attribute* attributes;  /* what the decode returned */
+  int32_t num_attributes;
+  char message[512];          /* the last call's */
+} capi_attribute_round_trip;
+void capi_attribute_round_trip_run(const double* positions, int32_t n, const int32_t* triangles, int32_t t,
+                                   const double* normals, const double* uv, int32_t uv_count,
+                                   const int32_t* uv_corners, const unsigned char* rgba, const double* quality,
+                                   int32_t reorder, int32_t normal_bits, capi_attribute_round_trip* r);
+void capi_attribute_round_trip_free(capi_attribute_round_trip* r);
+
+/* gab_read_mesh_with_attributes of `path`. */
+int capi_read_mesh_with_attributes(const char* path, capi_mesh* mesh, gab_attribute** attributes, int32_t* count,
+                                   char* message, size_t message_size);
 
 /* Error paths from C: a NULL message buffer, a message truncated to a
    small buffer, NULL handles. 1 when each behaves as gab.h says. */

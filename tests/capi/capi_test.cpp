@@ -748,9 +748,8 @@ TEST(CapiTest, ReadMeshReadsAFileAndNamesWhatIsWrong) {
   char message[256];
   ASSERT_EQ(capi_read_mesh(path.c_str(), &mesh, message, sizeof message), GAB_OK) << message;
   // The quad's arity is what the file held beyond triangles: said, the code still GAB_OK.
-  EXPECT_EQ(std::string(message), "gab_read_mesh: " + path +
-                                      ": not carried: 1 polygons of 4 or more corners (fan-triangulated); gab keeps "
-                                      "positions and triangles only");
+  EXPECT_EQ(std::string(message),
+            "gab_read_mesh: " + path + ": not carried: 1 polygons of 4 or more corners (fan-triangulated)");
   EXPECT_EQ(mesh.n, 4);
   EXPECT_EQ(mesh.t, 3);  // the quad fan-triangulated, and the triangle
   EXPECT_EQ(mesh.positions[7], 1.0);
@@ -768,7 +767,10 @@ TEST(CapiTest, ReadMeshReadsAFileAndNamesWhatIsWrong) {
 }
 
 // What a file held beyond positions and triangles is named in the message of
-// a successful read (the CLI's warning), and nothing is said of a plain one.
+// a successful read: what gab does not carry (the CLI's warning) and the
+// attributes gab reads that gab_read_mesh does not return (the readers keep
+// them: gab_read_mesh_with_attributes returns them, its message naming
+// neither); nothing is said of a plain file.
 TEST(CapiTest, ReadMeshNamesWhatIsNotCarried) {
   const std::string obj = gab_test::write_scratch_file(
       "normals.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1/1 2/2/1 3/3/1\n");
@@ -776,11 +778,34 @@ TEST(CapiTest, ReadMeshNamesWhatIsNotCarried) {
   char message[512];
   ASSERT_EQ(capi_read_mesh(obj.c_str(), &mesh, message, sizeof message), GAB_OK) << message;
   EXPECT_EQ(std::string(message), "gab_read_mesh: " + obj +
-                                      ": not carried: 1 normals (vn), 3 texture coordinates (vt), 1 faces with vt "
-                                      "indices (f v/vt), 1 faces with vn indices (f v//vn); gab keeps positions and "
-                                      "triangles only");
+                                      ": not returned: 1 normals (per corner), 3 texture_coordinates (per corner); "
+                                      "gab_read_mesh_with_attributes returns them");
   EXPECT_EQ(mesh.n, 3);
   EXPECT_EQ(mesh.t, 1);
+  capi_free_mesh(&mesh);
+  gab_attribute* attributes = nullptr;
+  int32_t count = 0;
+  ASSERT_EQ(capi_read_mesh_with_attributes(obj.c_str(), &mesh, &attributes, &count, message, sizeof message), GAB_OK)
+      << message;
+  EXPECT_STREQ(message, "");  // everything the file held is returned
+  EXPECT_EQ(count, 2);
+  gab_free(attributes);
+  capi_free_mesh(&mesh);
+  // Data gab does not carry, beside attributes it does: each named as what it is.
+  const std::string grouped = gab_test::write_scratch_file(
+      "grouped.obj", "mtllib a.mtl\ng part\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nl 1 2\n");
+  ASSERT_EQ(capi_read_mesh(grouped.c_str(), &mesh, message, sizeof message), GAB_OK) << message;
+  const std::string read = message;
+  capi_free_mesh(&mesh);
+  ASSERT_EQ(capi_read_mesh_with_attributes(grouped.c_str(), &mesh, &attributes, &count, message, sizeof message),
+            GAB_OK);
+  const std::string carried = std::string(message).substr(std::strlen("gab_read_mesh_with_attributes: "));
+  EXPECT_EQ(carried.rfind(grouped + ": not carried: ", 0), 0u) << carried;
+  EXPECT_NE(carried.find("groups (g)"), std::string::npos) << carried;
+  EXPECT_EQ(carried.find("normals"), std::string::npos) << carried;  // returned: not named
+  EXPECT_EQ(read, "gab_read_mesh: " + carried +
+                      "; not returned: 1 normals (per corner); gab_read_mesh_with_attributes returns them");
+  gab_free(attributes);
   capi_free_mesh(&mesh);
   const std::string plain = gab_test::write_scratch_file("plain.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   std::strcpy(message, "stale");

@@ -12,8 +12,14 @@
      pointers, negative counts, indices out of range) are reported, and so is
      memory that cannot be had.
    - Memory the library returns (*out, *positions, *triangles, a report's
-     order) is malloc'd and released with gab_free; on failure the out
+     order and attributes, an attribute array) is malloc'd and released with
+     gab_free, one call per pointer returned (an attribute array is one
+     block: its values, corners and names inside it); on failure the out
      pointers are set to NULL / 0.
+   - Nothing is dropped silently: a call that succeeds without returning
+     something the input held (a file's materials, attributes a function
+     without attribute outputs does not return, sections a level of detail
+     cannot decode) says what in its message, the code staying GAB_OK.
    - Calls on different handles and different buffers may run in several
      threads at once; one handle is used by one thread at a time.
    - Indices are 0-based int32 (counts below 2^31); coordinates are doubles,
@@ -66,15 +72,85 @@ void gab_free(void* p);
 
 /* ---- Meshes ---------------------------------------------------------------- */
 
+/* What an attribute describes (gab_attribute.kind): each kind is predicted
+   and quantized its own way. */
+#define GAB_ATTRIBUTE_NORMAL 0   /* 3 components, any length (the codec codes the direction) */
+#define GAB_ATTRIBUTE_TEXCOORD 1 /* 2 components (u v) or 3 (u v w) */
+#define GAB_ATTRIBUTE_COLOR 2    /* 3 (r g b) or 4 (r g b a): 0..255 when integer-typed, else as given (0..1) */
+#define GAB_ATTRIBUTE_GENERIC 3  /* 1 to 4 components under a name (a PLY property: "quality") */
+
+/* How the source stored the values (gab_attribute.value_type): a PLY
+   property's type; OBJ and OFF text is GAB_VALUE_FLOAT32. Integer-typed
+   values are coded exactly (each must be an integer of its type's range),
+   the others quantized (gab_compress_options' *_bits). */
+#define GAB_VALUE_INT8 0
+#define GAB_VALUE_UINT8 1
+#define GAB_VALUE_INT16 2
+#define GAB_VALUE_UINT16 3
+#define GAB_VALUE_INT32 4
+#define GAB_VALUE_UINT32 5
+#define GAB_VALUE_FLOAT32 6
+#define GAB_VALUE_FLOAT64 7
+
+/* The most attributes a mesh carries. */
+#define GAB_MAX_ATTRIBUTES 64
+
+/* One attribute of a mesh of n vertices and t triangles: `elements` values
+   of `components` doubles each (element e's are values[components * e ...]),
+   per vertex (corners NULL: elements == n, in vertex order) or per corner
+   (corners: 3 t element indices, corner k of triangle f at corners[3 f + k],
+   following the triangles: where a vertex has several texture coordinates
+   or normals, a seam). Its layout is fixed (an array of them crosses the
+   ABI); what a later version needs beyond it comes as another struct.
+   Given to gab_compress_with_attributes, the caller's memory, read during
+   the call only. Returned (gab_read_mesh_with_attributes,
+   gab_decompress_with_attributes), an array in one malloc'd block holding
+   its values, corners and names: release it with one gab_free. */
+typedef struct gab_attribute {
+  int32_t kind;           /* GAB_ATTRIBUTE_* */
+  int32_t value_type;     /* GAB_VALUE_* */
+  int32_t components;     /* per element: as the kind says */
+  int32_t elements;       /* values / components */
+  const char* name;       /* a generic's: 1 to 255 letters, digits, '_', '-' or '.'; the other kinds: NULL or ""
+                             given, "" returned */
+  const double* values;   /* components * elements, finite */
+  const int32_t* corners; /* NULL: per vertex; else 3 t indices in [0, elements) */
+} gab_attribute;
+
 /* Reads an .obj, .off or .ply file (format by extension, content checked):
    *positions gets 3 n doubles, *triangles 3 t int32 (polygons fan-triangulated).
-   On success the message is "" unless the file held data gab does not carry
-   (normals, texture coordinates, colours, materials, polygons' arity, ...):
-   then it names them, as the CLI's warning does, e.g. "gab_read_mesh: a.obj:
-   not carried: 6 normals (vn), 4 texture coordinates (vt); gab keeps
-   positions and triangles only", and the code stays GAB_OK. O(file size). */
+   Positions and triangles only: on success the message is "" unless the
+   file held more; then it names it and the code stays GAB_OK: what gab
+   does not carry (materials, groups, polygons' arity, ...: "not carried",
+   as the CLI's warning), and the attributes gab reads that this function
+   does not return ("not returned"), e.g. "gab_read_mesh: a.obj: not
+   returned: 6 normals (per corner), 4 texture_coordinates (per corner);
+   gab_read_mesh_with_attributes returns them". O(file size). */
 int gab_read_mesh(const char* path, double** positions, int32_t* n, int32_t** triangles, int32_t* t,
                   char* message, size_t message_size);
+
+/* gab_read_mesh with the file's attributes (OBJ vn/vt per corner and v
+   colours, PLY normals, texture coordinates, colours and every other vertex
+   property as a named generic, OFF's N/C/ST forms; docs/cli.md): *attributes
+   gets *num_attributes of them in the file's order, one block (gab_free;
+   NULL when there are none). On success the message names only what gab
+   does not carry ("gab_read_mesh_with_attributes: a.obj: not carried: 19
+   groups (g)"), the code staying GAB_OK. O(file size). */
+int gab_read_mesh_with_attributes(const char* path, double** positions, int32_t* n, int32_t** triangles,
+                                  int32_t* t, gab_attribute** attributes, int32_t* num_attributes, char* message,
+                                  size_t message_size);
+
+/* Writes a mesh atomically (a temporary file, then a rename) in the format
+   of the path's extension (.obj, .off or .ply: binary little-endian,
+   double coordinates), with its attributes (NULL / 0: none) in the
+   format's spelling and the values' types. PLY and OFF hold one value per
+   vertex: vertices where per-corner attributes have seams are split. On
+   success the message names what the format could not hold (generic
+   attributes in OBJ and OFF, ...) and the vertices split, the code staying
+   GAB_OK. Arguments are checked as gab_compress_with_attributes checks them.
+   O(n + t + attribute values). */
+int gab_write_mesh(const char* path, const double* positions, int32_t n, const int32_t* triangles, int32_t t,
+                   const gab_attribute* attributes, int32_t num_attributes, char* message, size_t message_size);
 
 /* ---- Compression ------------------------------------------------------------ */
 
@@ -122,7 +198,10 @@ int gab_solver_from_name(const char* name);
    sets reorder = 0, read the same way by every version. This default is a
    contract change (the init used to set 0; gab_compress still keeps the
    numbering): the layout is unchanged, so a program built against an older
-   gab.h gets the new default from the init unless it sets reorder = 0. */
+   gab.h gets the new default from the init unless it sets reorder = 0.
+   The attributes' quantization (normal_bits ... generic_bits) was appended
+   under the same rule: a program built against a gab.h without them gets
+   their defaults. */
 typedef struct gab_compress_options {
   size_t size;            /* sizeof(gab_compress_options) as the caller compiled it */
   double target_rms_rel;  /* relative vertex RMS over the bounding-box diagonal (CLI --error); 0: none */
@@ -138,6 +217,13 @@ typedef struct gab_compress_options {
   int32_t refine;         /* nonzero: append the least-squares refinement chunk (--refine) */
   int32_t ordering;       /* GAB_ORDERING_AUTO (default), GAB_ORDERING_AMD or GAB_ORDERING_ND (--ordering) */
   int32_t solver;         /* GAB_SOLVER_AUTO (default), GAB_SOLVER_GLOBAL or GAB_SOLVER_ITERATIVE (--solver) */
+  /* The attributes' quantization (gab_compress_with_attributes; each attribute in its own section after the
+     geometry). Integer-typed values are coded exactly whatever these say. */
+  int32_t normal_bits;    /* normals: directions on a lattice of about 4^bits points, 2..16 (default 8: 0.45
+                             degrees at most) */
+  int32_t texcoord_bits;  /* texture coordinates: a grid of 2^bits steps over their span, 1..31 (default 10) */
+  int32_t color_bits;     /* float colours, the same grid, 1..31 (default 8) */
+  int32_t generic_bits;   /* float generic attributes, the same grid, 1..31 (default 16) */
 } gab_compress_options;
 
 /* Sets the defaults: options->size = min(size, sizeof(gab_compress_options)),
@@ -170,7 +256,25 @@ int gab_compress_ex(const double* positions, int32_t n, const int32_t* triangles
    wrote, so a caller compiled against a newer gab.h reads a newer field only
    when its offset is below `size`. Errors are relative to the input's
    bounding-box diagonal; byte counts include each part's framing, and
-   bytes = geometry_bytes + connectivity_bytes + order_bytes. */
+   bytes = geometry_bytes + connectivity_bytes + order_bytes +
+   attribute_bytes. The fields from merged_vertices on were appended under
+   that rule. */
+
+/* One attribute as coded (gab_compress_report.attributes). Its layout is
+   fixed, as gab_attribute's; a later version's further figures come in a
+   field appended to the report. */
+typedef struct gab_attribute_stats {
+  const char* label;    /* "normals", "texture_coordinates", "vertex_colors" or "generic:NAME" (the CLI's names) */
+  int32_t kind;         /* GAB_ATTRIBUTE_* */
+  int32_t bits;         /* its quantization's (integer-typed: the span's, exact) */
+  int32_t per_corner;   /* nonzero: coded per corner, with seams; 0: one value per vertex */
+  int32_t from_surface; /* nonzero: normals predicted from the decoded surface (a level of detail, or a decode
+                           of a file whose detail or refinement chunk is cut off, skips them) */
+  int64_t elements;     /* values coded: vertices, or per corner the wedges of corners sharing one */
+  size_t bytes;         /* its section with its framing */
+  double max_error;     /* the largest error of a decoded value: degrees for normals, value units otherwise */
+} gab_attribute_stats;
+
 typedef struct gab_compress_report {
   size_t size;                /* sizeof(gab_compress_report) as the caller compiled it; after a call: bytes written */
   int32_t n;                  /* vertices */
@@ -199,9 +303,16 @@ typedef struct gab_compress_report {
   double bpv_geometry;        /* geometry bits per vertex: 8 geometry_bytes / n */
   double weight;              /* the anchor weight w used */
   double encode_s;            /* the compress's time, seconds */
-  int32_t* order;             /* reordered: n entries, order[i] the decoded mesh's index of input vertex i (what
-                                 `gab compress --order-out` writes, line i), malloc'd: release with gab_free;
-                                 otherwise NULL */
+  int32_t* order;             /* reordered: n + merged_vertices entries (the input's vertices), order[i] the
+                                 decoded mesh's index of input vertex i (what `gab compress --order-out`
+                                 writes, line i), malloc'd: release with gab_free; otherwise NULL */
+  int32_t merged_vertices;    /* reordered: input vertices merged into a copy at the same position (a mesh split
+                                 along seams, a triangle soup), their attributes kept per corner: the input had
+                                 n + merged_vertices vertices, the decoded mesh has n */
+  int32_t num_attributes;     /* entries of attributes: the attributes given, in their order */
+  size_t attribute_bytes;     /* the attribute sections with their framing */
+  gab_attribute_stats* attributes; /* num_attributes entries, one malloc'd block (their labels inside it): release
+                                      with gab_free; NULL when there are none */
 } gab_compress_report;
 
 /* Sets report->size = min(size, sizeof(gab_compress_report)) and the rest of
@@ -215,11 +326,30 @@ int gab_compress_with_report(const double* positions, int32_t n, const int32_t* 
                              const gab_compress_options* options, unsigned char** out, size_t* out_size,
                              gab_compress_report* report, char* message, size_t message_size);
 
+/* gab_compress_with_report with the mesh's attributes (NULL / 0: none, the
+   same file as gab_compress_with_report): each coded in its own section
+   after the geometry, at the options' *_bits, so a decode of any prefix
+   still has the shape. Per-corner attributes follow the triangles into the
+   coder's order; with reorder (the default) the decoded mesh carries them
+   in its numbering, and copies of a vertex at the same position are merged
+   into one (report->merged_vertices), their values kept per corner.
+   Arguments are checked before any work, with messages naming the field
+   ("attributes[1].corners[7] is 12: out of range [0, 4)"). Cost: the
+   compress's, plus O(attribute values + t) a section (normals: one decode
+   of the geometry, to predict from the surface the decoder will have). */
+int gab_compress_with_attributes(const double* positions, int32_t n, const int32_t* triangles, int32_t t,
+                                 const gab_attribute* attributes, int32_t num_attributes,
+                                 const gab_compress_options* options, unsigned char** out, size_t* out_size,
+                                 gab_compress_report* report, char* message, size_t message_size);
+
 /* max_anchors < 0: the whole file, else the first max_anchors anchors (a
    coarser level). A file cut short decodes to its complete chunks and
    returns GAB_W_TRUNCATED with the mesh set (unless max_anchors ends within
    them: then the cut is not reached and the code is GAB_OK). The decode's
-   memory is bounded as gab_decompress_options' default says. */
+   memory is bounded as gab_decompress_options' default says. Positions and
+   triangles only: the message of a success names the attributes the file
+   holds ("not returned: 762 normals (per corner);
+   gab_decompress_with_attributes returns them"), the code staying GAB_OK. */
 int gab_decompress(const unsigned char* data, size_t size, int32_t max_anchors,
                    double** positions, int32_t* n, int32_t** triangles, int32_t* t,
                    char* message, size_t message_size);
@@ -247,6 +377,22 @@ void gab_decompress_options_init(gab_decompress_options* options, size_t size);
 int gab_decompress_ex(const unsigned char* data, size_t size, const gab_decompress_options* options,
                       double** positions, int32_t* n, int32_t** triangles, int32_t* t,
                       char* message, size_t message_size);
+
+/* gab_decompress_ex with the file's attributes: *attributes gets
+   *num_attributes of them, in the order they were given to the compress,
+   numbered as the decoded mesh (per-corner ones following *triangles), one
+   block (gab_free; NULL when there are none). Any level of detail decodes
+   them whole, except normals predicted from the decoded surface
+   (gab_attribute_stats.from_surface), which need the whole shape: a decode
+   of fewer anchors, or of a file cut short, leaves them out and its message
+   says so ("not decoded: normals: predicted from the whole shape, which
+   this decode does not have (every anchor of a complete file)"), as it
+   names sections of a newer format, the code staying GAB_OK (or
+   GAB_W_TRUNCATED, the message then saying both). */
+int gab_decompress_with_attributes(const unsigned char* data, size_t size, const gab_decompress_options* options,
+                                   double** positions, int32_t* n, int32_t** triangles, int32_t* t,
+                                   gab_attribute** attributes, int32_t* num_attributes, char* message,
+                                   size_t message_size);
 
 /* ---- Sparse Cholesky -------------------------------------------------------- */
 
