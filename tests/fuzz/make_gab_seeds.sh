@@ -39,7 +39,39 @@ with open(sys.argv[1], "w") as f:
             f.write("3 %d %d %d\n3 %d %d %d\n" % (a, b, c, a, c, d))
 PY
 }
+# The 10 x 6 torus with an attribute of each kind (gab_fuzz_mesh.h's
+# attributed_seed_torus): binary PLY, float32 normals, uchar colours, a float
+# "quality", per-corner texture coordinates as MeshLab's face texcoord list.
+attributed() {
+python3 - "$@" <<'PY'
+import math, struct, sys
+n, m = 10, 6
+with open(sys.argv[1], "wb") as out:
+    out.write(("ply\nformat binary_little_endian 1.0\nelement vertex %d\n"
+               "property double x\nproperty double y\nproperty double z\n"
+               "property float nx\nproperty float ny\nproperty float nz\n"
+               "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty float quality\n"
+               "element face %d\nproperty list uchar int vertex_indices\nproperty list uchar float texcoord\n"
+               "end_header\n" % (n * m, 2 * n * m)).encode())
+    for i in range(n):
+        for j in range(m):
+            u, v = 2 * math.pi * i / n, 2 * math.pi * j / m
+            out.write(struct.pack("<3d", (1 + 0.3 * math.cos(v)) * math.cos(u), (1 + 0.3 * math.cos(v)) * math.sin(u),
+                                  0.3 * math.sin(v)))
+            out.write(struct.pack("<3f", math.cos(v) * math.cos(u), math.cos(v) * math.sin(u), math.sin(v)))
+            out.write(struct.pack("<3Bf", 25 * i, 40 * j, 128, i + j / 4.0))
+    for i in range(n):
+        for j in range(m):
+            a, b = i * m + j, ((i + 1) % n) * m + j
+            c, d = ((i + 1) % n) * m + (j + 1) % m, i * m + (j + 1) % m
+            ua, ub, uc, ud = (i / 10, j / 6), ((i + 1) / 10, j / 6), ((i + 1) / 10, (j + 1) / 6), (i / 10, (j + 1) / 6)
+            for tri, uv in (((a, b, c), (ua, ub, uc)), ((a, c, d), (ua, uc, ud))):
+                out.write(struct.pack("<B3i", 3, *tri))
+                out.write(struct.pack("<B6f", 6, *[x for p in uv for x in p]))
+PY
+}
 torus "$tmp/torus.off" 10 6
+attributed "$tmp/attributed.ply"
 torus "$tmp/large.off" 192 180
 c() { "$gab" compress -i "$tmp/torus.off" "$@" 2>/dev/null; }
 c -o "$tmp/full.gab" --anchors 20 --chunk-growth 1.5 --layout selection --solver global --keep-order
@@ -57,6 +89,8 @@ c -o "$tmp/iterative.gab" --anchors 20 --chunk-growth 1.5 --solver iterative --k
 c -o "$tmp/iterative-selection.gab" --anchors 20 --chunk-growth 1.5 --layout selection --solver iterative --keep-order
 c -o "$tmp/iterative-detail.gab" --error 1e-4 --detail on --solver iterative --keep-order
 "$gab" compress -i "$tmp/large.off" -o "$tmp/iterative-large.gab" --anchors 300 --solver iterative --keep-order 2>/dev/null
+"$gab" compress -i "$tmp/attributed.ply" -o "$tmp/attributes.gab" --anchors 20 --chunk-growth 1.5 2>/dev/null
+"$gab" compress -i "$tmp/attributed.ply" -o "$tmp/attributes-detail.gab" --error 1e-4 --detail on 2>/dev/null
 mkdir -p "$out"
 find "$out" -name 'torus-*' ! -name 'torus-operator[12]*' -delete
 { printf '\x00'; cat "$tmp/full.gab"; } > "$out/torus-full"
@@ -77,3 +111,6 @@ find "$out" -name 'torus-*' ! -name 'torus-operator[12]*' -delete
 { printf '\x00'; cat "$tmp/iterative-selection.gab"; } > "$out/torus-iterative-selection"
 { printf '\x00'; cat "$tmp/iterative-detail.gab"; } > "$out/torus-iterative-detail"
 { printf '\x00'; cat "$tmp/iterative-large.gab"; } > "$out/torus-iterative-large"
+{ printf '\x00'; cat "$tmp/attributes.gab"; } > "$out/torus-attributes"
+{ printf '\x2a'; cat "$tmp/attributes.gab"; } > "$out/torus-attributes-prefix-10"
+{ printf '\x00'; cat "$tmp/attributes-detail.gab"; } > "$out/torus-attributes-detail"

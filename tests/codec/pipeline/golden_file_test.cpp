@@ -3,7 +3,7 @@
 // tests/fuzz/make_gab_seeds.sh made with `gab compress` from
 // gab_fuzz::seed_torus), one per variant the format has (each flag, both
 // layouts, both orderings, every reconstruction operator, geometry only, the
-// detail chunk, prefixes).
+// detail chunk, attribute sections of every kind, prefixes).
 // Each seed must keep its bytes, keep decoding to its pinned shape, and be
 // what the encoder writes today for its options (but operators 1 and 2's,
 // which it no longer writes: earlier encoders', decoded as they are). A
@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "codec/attributes/attribute_checks.h"
 #include "common/gab_files.h"
 #include "connectivity/valence_section.h"
 #include "fuzz/gab_fuzz_mesh.h"
@@ -95,6 +96,7 @@ struct Golden {
   double rms_rel;       // of the decoded shape against seed_torus, in its numbering
   const char* options;  // make_gab_seeds.sh's for the file; null: an earlier operator's, not written today
   bool large = false;   // made from large_seed_torus, not seed_torus
+  bool attributes = false;  // made from attributed_seed_torus (one attribute of each kind)
 };
 
 // Every variant, as make_gab_seeds.sh writes it. rms_rel: a shape the global
@@ -134,6 +136,13 @@ const std::vector<Golden>& goldens() {
        "--error 1e-4 --detail on --solver iterative --keep-order"},
       {"torus-iterative-large", 0x76bca00e9404d250ull, kLevels, 12, 300, 3, 0.006329242,
        "--anchors 300 --solver iterative --keep-order", true},
+      // Attribute sections: normals from the decoded surface, byte colours, a
+      // float property, per-corner texture coordinates with seams.
+      {"torus-attributes", 0xcc731e3cd9c95842ull, kLevels | kGabFlagReordered, 12, 20, 4, 0.022186366,
+       "--anchors 20 --chunk-growth 1.5",
+       false, true},
+      {"torus-attributes-detail", 0xd09cde046903172full, kGabFlagDetail | kGabFlagReordered, 6, 15, 4, 0.000095796,
+       "--error 1e-4 --detail on", false, true},
       // Operator 2, made by an earlier encoder with torus-iterative*'s options
       // (and another greedy loop: other anchors than torus-iterative*'s).
       {"torus-operator2", 0xc1212b18592d3d6cull, kLevels, 12, 20, 4, 0.020931225, nullptr},
@@ -150,7 +159,9 @@ const std::vector<Golden>& goldens() {
 
 // The torus as a file's decoder numbers it.
 Mesh expected_mesh(const Golden& g) {
-  const Mesh torus = g.large ? gab_fuzz::large_seed_torus() : gab_fuzz::seed_torus();
+  const Mesh torus = g.large        ? gab_fuzz::large_seed_torus()
+                     : g.attributes ? gab_fuzz::attributed_seed_torus()
+                                    : gab_fuzz::seed_torus();
   if ((g.flags & kGabFlagReordered) == 0) return torus;
   return renumber_vertices(torus, encode_valence_section(torus.num_vertices(), torus.triangles).new_index);
 }
@@ -183,15 +194,24 @@ TEST(GoldenFiles, EverySeedDecodesToItsPinnedShape) {
     EXPECT_EQ(ds.anchors, g.anchors) << g.name;
     EXPECT_EQ(ds.chunks, g.chunks) << g.name;
     EXPECT_NEAR(testing_util::relative_rms(expected, out), g.rms_rel, 1e-7) << g.name;
+    // Every attribute within its quantization: normals within the 8-bit
+    // lattice's reach, colours exact, the rest within half a step.
+    ASSERT_EQ(out.attributes.size(), expected.attributes.size()) << g.name;
+    const double bounds[4] = {0.6, 0.0, 0.5 * 11.25 / 65535 * (1 + 1e-9), 0.5 / 1023 * (1 + 1e-9)};
+    for (size_t i = 0; i < out.attributes.size(); ++i) {
+      EXPECT_LE(testing_util::largest_attribute_error(expected, out, {}, i), bounds[i]) << g.name << " " << i;
+    }
   }
 }
 
 TEST(GoldenFiles, TheEncoderWritesEverySeed) {
   const Mesh torus = gab_fuzz::seed_torus(), large = gab_fuzz::large_seed_torus();
+  const Mesh attributed = gab_fuzz::attributed_seed_torus();
   for (const Golden& g : goldens()) {
     if (!g.options) continue;
     EncodeStats es;
-    EXPECT_EQ(testing_util::encode_or_die(g.large ? large : torus, options_of(g.options), &es), seed(g.name))
+    EXPECT_EQ(testing_util::encode_or_die(g.large ? large : g.attributes ? attributed : torus, options_of(g.options), &es),
+              seed(g.name))
         << g.name;
   }
 }
@@ -337,7 +357,7 @@ TEST(GoldenFiles, SeedsPassTheFuzzersChecks) {
     for (double x : out.positions) ASSERT_TRUE(std::isfinite(x)) << e->d_name;
   }
   closedir(d);
-  EXPECT_EQ(seen, static_cast<int>(goldens().size()) + 5);  // and the five prefixes
+  EXPECT_EQ(seen, static_cast<int>(goldens().size()) + 6);  // and the six prefixes
 }
 
 }  // namespace
