@@ -10,15 +10,22 @@ arrays in and out).
     data = gab.compress(V, F, reorder=False) # the input's numbering kept (priced: stats.order_bytes)
     V2, F2 = gab.decompress(data)            # V2 lines up with V, within the target
 
+    V, F, attrs = gab.read_mesh("spider.obj", return_attributes=True)  # [gab.Attribute('normal', ...), ...]
+    data = gab.compress(V, F, attributes=attrs, normal_bits=10)          # each coded in its own section
+    W, G, decoded = gab.decompress(data, return_attributes=True)        # in the decoded numbering
+    gab.write_mesh("out.ply", W, G, attributes=decoded)
+
     chol = gab.Cholesky(A)                   # A: scipy.sparse (any format), dense, or (indptr, indices, data);
     x = chol.solve(b)                        #    symmetric or its lower triangle
     chol = gab.Cholesky(A, ordering="nd", threads=0)  # another ordering, every core
     chol.add_anchor(j, w)                    # now the factor of A + w^2 e_j e_j^T
 
 Every failure of the library raises GabError with its message; a file cut
-short decodes to its complete chunks with a TruncatedWarning, a mesh file's
-data gab does not carry is named by a DroppedDataWarning; a bad argument
-raises TypeError or ValueError naming the call and the argument.
+short decodes to its complete chunks with a TruncatedWarning; what a call
+does not give back (a mesh file's data gab does not carry, attributes
+without return_attributes=True, sections a level of detail cannot decode)
+is named by a DroppedDataWarning; a bad argument raises TypeError or
+ValueError naming the call and the argument.
 """
 
 import ctypes
@@ -55,6 +62,7 @@ except ImportError as _error:
 from ._capi import (  # noqa: E402 (after numpy's check, so its message comes first)
     GAB_W_TRUNCATED,
     LIB,
+    Attribute as _CAttribute,
     CholeskyOptions,
     CompressOptions,
     CompressReport,
@@ -66,8 +74,8 @@ from ._capi import (  # noqa: E402 (after numpy's check, so its message comes fi
     message_buffer,
 )
 
-__all__ = ["Cholesky", "CompressStats", "DroppedDataWarning", "GabError", "TruncatedWarning", "compress", "decompress",
-           "read_mesh", "version"]
+__all__ = ["Attribute", "AttributeStats", "Cholesky", "CompressStats", "DroppedDataWarning", "GabError",
+           "TruncatedWarning", "compress", "decompress", "read_mesh", "version", "write_mesh"]
 
 _DETAIL = {"auto": 0, "on": 1, "off": 2}
 _SOLVER_NAMES = {1: "global", 2: "iterative"}  # GAB_SOLVER_*
@@ -164,23 +172,240 @@ def _mesh_outputs():
     return ctypes.POINTER(ctypes.c_double)(), ctypes.c_int32(), ctypes.POINTER(ctypes.c_int32)(), ctypes.c_int32()
 
 
-def read_mesh(path):
-    """Reads an .obj, .off or .ply file: (V, F), V (n, 3) float64, F (t, 3) int32
-    (polygons fan-triangulated). When the file held more than positions and
-    triangles (normals, texture coordinates, colours, ...), a
-    DroppedDataWarning names it."""
+# Attributes: gab.h's gab_attribute as numpy arrays.
+
+_KINDS = ["normal", "texcoord", "color", "generic"]  # GAB_ATTRIBUTE_*, by code
+_COMPONENTS = {"normal": (3,), "texcoord": (2, 3), "color": (3, 4), "generic": (1, 2, 3, 4)}
+_VALUE_TYPES = ["int8", "uint8", "int16", "uint16", "int32", "uint32", "float32", "float64"]  # GAB_VALUE_*
+_LABELS = {"normal": "normals", "texcoord": "texture_coordinates", "color": "vertex_colors"}
+_MAX_ATTRIBUTES = 64  # GAB_MAX_ATTRIBUTES
+_MAX_NORMAL_BITS = 16
+_MAX_GRID_BITS = 31
+
+
+@dataclasses.dataclass(eq=False)
+class Attribute:
+    """One attribute of a mesh of n vertices and t triangles, as compress,
+    write_mesh take it and read_mesh, decompress return it
+    (return_attributes=True).
+
+    kind: 'normal' (3 components, any length: the codec codes the
+    direction), 'texcoord' (2 or 3), 'color' (3 or 4: 0..255 when
+    integer-typed, else as given, 0..1) or 'generic' (1 to 4, named).
+    values: (k, components) real numbers, one row an element (a 1-D array is
+    one component); per vertex (corners None) k = n, in vertex order.
+    corners: None, or (t, 3) integers in 0..k-1, row f the elements of
+    triangle F[f]'s corners (per corner: where a vertex has several texture
+    coordinates or normals, a seam). name: a generic's (1 to 255 letters,
+    digits, '_', '-' or '.'), None for the other kinds. value_type: how the
+    source stored the values, one of 'int8', 'uint8', 'int16', 'uint16',
+    'int32', 'uint32', 'float32', 'float64'; integer-typed values are coded
+    exactly (each must be an integer of the type's range), the others
+    quantized (compress's *_bits). None: the values' numpy dtype when it is
+    one of those (a uint8 array: 'uint8'; a list of floats: 'float64'), an
+    integer of another width as 'int32' or 'uint32' (a list of ints: the
+    library then checks each fits), else 'float32' (what OBJ and OFF text
+    is).
+
+    Returned ones hold float64 values (integers exact whatever the type),
+    int32 corners, a str name for a generic (None otherwise) and their
+    value_type."""
+
+    kind: str
+    values: object
+    corners: object = None
+    name: object = None
+    value_type: object = None
+
+    @property
+    def label(self):
+        """'normals', 'texture_coordinates', 'vertex_colors' or 'generic:NAME': the CLI's and the stats' name."""
+        return _LABELS.get(self.kind, f"generic:{self.name}")
+
+    @property
+    def per_corner(self):
+        return self.corners is not None
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class AttributeStats:
+    """One attribute as compress coded it (CompressStats.attributes, in the
+    order given)."""
+
+    label: str  # 'normals', 'texture_coordinates', 'vertex_colors' or 'generic:NAME'
+    kind: str  # 'normal', 'texcoord', 'color' or 'generic'
+    bits: int  # its quantization's (integer-typed: the span's; exact)
+    per_corner: bool  # coded per corner, with seams; False: one value per vertex
+    from_surface: bool  # normals predicted from the decoded surface (a level of detail then skips them)
+    elements: int  # values coded: vertices, or per corner the wedges of corners sharing one
+    bytes: int  # its section with its framing
+    max_error: float  # the largest error of a decoded value: degrees for normals, value units otherwise
+
+
+def _value_type_of(dtype):
+    """An Attribute's value type when not given: the values' dtype when it
+    is one of gab's, an integer of another width as int32 or uint32, else
+    float32."""
+    if dtype.name in _VALUE_TYPES:
+        return dtype.name
+    if dtype.kind in "iu":
+        return "int32" if dtype.kind == "i" else "uint32"
+    return "float32"
+
+
+def _attributes_arg(call, attributes, n, t):
+    """The attributes argument as a ctypes array of gab_attribute (None: no
+    attributes) and the numpy arrays it points into (kept alive by the
+    caller for the call). Each field is checked here, naming it; the library
+    checks the values (finite, integers of their type) and a name's
+    spelling."""
+    if attributes is None:
+        return None, []
+    if not isinstance(attributes, (list, tuple)):
+        raise TypeError(f"{call}: attributes must be a list of gab.Attribute, got {type(attributes).__name__}")
+    if len(attributes) > _MAX_ATTRIBUTES:
+        raise ValueError(f"{call}: attributes holds {len(attributes)}: at most {_MAX_ATTRIBUTES}")
+    structs = (_CAttribute * max(1, len(attributes)))()
+    kept = []
+    for i, a in enumerate(attributes):
+        where = f"attributes[{i}]"
+        if not isinstance(a, Attribute):
+            raise TypeError(f"{call}: {where} must be a gab.Attribute, got {type(a).__name__}")
+        kind = _name_arg(call, a.kind, f"{where}.kind", _KINDS)
+        given = np.asarray(a.values)
+        if given.size and given.dtype.kind not in "iuf":
+            raise TypeError(f"{call}: {where}.values must hold real numbers, got dtype {given.dtype}")
+        if a.value_type is None:
+            value_type = _value_type_of(given.dtype)
+        else:
+            value_type = _name_arg(call, a.value_type, f"{where}.value_type", _VALUE_TYPES)
+        values = np.ascontiguousarray(given, dtype=np.float64)
+        if values.ndim == 1:
+            values = values.reshape(-1, 1)
+        if values.ndim != 2 or values.shape[1] not in _COMPONENTS[kind]:
+            spelled = " or ".join(str(c) for c in _COMPONENTS[kind])
+            raise ValueError(f"{call}: {where}.values must have shape (k, {spelled}) for a {kind!r} attribute, got "
+                             f"{given.shape}")
+        elements = values.shape[0]
+        corners = None
+        if a.corners is None:
+            if elements != n:
+                raise ValueError(f"{call}: {where}.values has {elements} rows: per vertex (corners=None) one a "
+                                 f"vertex, n = {n}")
+        else:
+            corners = _int32(call, a.corners, f"{where}.corners", 3)
+            if corners.shape[0] != t:
+                raise ValueError(f"{call}: {where}.corners must have shape (t, 3) = ({t}, 3), got {corners.shape}")
+            outside = np.flatnonzero((corners < 0) | (corners >= elements))
+            if outside.size:
+                row, column = divmod(int(outside[0]), 3)
+                raise ValueError(f"{call}: {where}.corners[{row}, {column}] is {corners[row, column]}: out of range "
+                                 f"[0, {elements})")
+        if a.name is not None and not isinstance(a.name, str):
+            raise TypeError(f"{call}: {where}.name must be a str or None, got {type(a.name).__name__}")
+        if kind == "generic" and not a.name:
+            raise ValueError(f"{call}: {where}.name must name a 'generic' attribute, got {a.name!r}")
+        if kind != "generic" and a.name:
+            raise ValueError(f"{call}: {where}.name is {a.name!r}: only a 'generic' attribute has a name")
+        name = a.name.encode() if kind == "generic" else None
+        s = structs[i]
+        s.kind = _KINDS.index(kind)
+        s.value_type = _VALUE_TYPES.index(value_type)
+        s.components = values.shape[1]
+        s.elements = elements
+        s.name = name
+        s.values = values.ctypes.data_as(ctypes.POINTER(ctypes.c_double))
+        s.corners = None if corners is None else corners.ctypes.data_as(ctypes.POINTER(ctypes.c_int32))
+        kept += [values, corners, name]
+    return structs, kept
+
+
+def _take_attributes(pointer, count, t):
+    """Copies the library's attribute block into a list of Attribute and frees it."""
+    try:
+        taken = []
+        for i in range(count.value):
+            a = pointer[i]
+            values = np.ctypeslib.as_array(a.values, shape=(a.elements, a.components)).copy()
+            corners = np.ctypeslib.as_array(a.corners, shape=(t, 3)).copy() if a.corners else None
+            kind = _KINDS[a.kind]
+            taken.append(Attribute(kind=kind, values=values, corners=corners,
+                                   name=a.name.decode() if kind == "generic" else None,
+                                   value_type=_VALUE_TYPES[a.value_type]))
+    finally:
+        LIB.gab_free(pointer)
+    return taken
+
+
+def _attribute_outputs():
+    return ctypes.POINTER(_CAttribute)(), ctypes.c_int32()
+
+
+def _describe(attributes):
+    """'762 normals (per corner), 12 generic:quality (per vertex)': what a call read and does not return."""
+    return ", ".join(f"{len(a.values)} {a.label} ({'per corner' if a.per_corner else 'per vertex'})"
+                     for a in attributes)
+
+
+def _library_text(message):
+    """The library's message without its C function's name."""
+    return message.value.decode(errors="replace").partition(": ")[2]
+
+
+def read_mesh(path, return_attributes=False):
+    """Reads an .obj, .off or .ply file: (V, F), V (n, 3) float64, F (t, 3)
+    int32 (polygons fan-triangulated); with return_attributes=True (V, F,
+    attributes), a list of gab.Attribute in the file's order: OBJ vn and vt
+    per corner and v colours, PLY normals, texture coordinates, colours and
+    every other vertex property as a named generic, OFF's N, C and ST forms
+    (docs/cli.md). When the file held more than what is returned, a
+    DroppedDataWarning names it: data gab does not carry (materials, groups,
+    polygons' arity, ...: "not carried") and, without return_attributes,
+    the attributes read ("not returned")."""
+    call = "gab.read_mesh"
     if not isinstance(path, (str, bytes, os.PathLike)):
-        raise TypeError(f"gab.read_mesh: path must be a str, bytes or os.PathLike, got {type(path).__name__}")
+        raise TypeError(f"{call}: path must be a str, bytes or os.PathLike, got {type(path).__name__}")
+    return_attributes = _bool_arg(call, return_attributes, "return_attributes")
     positions, n, triangles, t = _mesh_outputs()
+    attributes, count = _attribute_outputs()
     message = message_buffer()
-    code = LIB.gab_read_mesh(os.fsencode(path), ctypes.byref(positions), ctypes.byref(n), ctypes.byref(triangles),
-                             ctypes.byref(t), message, len(message))
+    code = LIB.gab_read_mesh_with_attributes(os.fsencode(path), ctypes.byref(positions), ctypes.byref(n),
+                                             ctypes.byref(triangles), ctypes.byref(t), ctypes.byref(attributes),
+                                             ctypes.byref(count), message, len(message))
     check(code, message)
-    mesh = _take_mesh(positions, n, triangles, t)
-    if message.value:
-        text = message.value.decode(errors="replace").partition(": ")[2]
+    read = _take_attributes(attributes, count, t.value)
+    V, F = _take_mesh(positions, n, triangles, t)
+    text = _library_text(message)  # "PATH: not carried: ..." or ""
+    if read and not return_attributes:
+        text = (text + ";" if text else os.fsdecode(path) + ":") + \
+            f" not returned: {_describe(read)}; read_mesh(..., return_attributes=True) returns them"
+    if text:
         warnings.warn(DroppedDataWarning(text), stacklevel=2)
-    return mesh
+    return (V, F, read) if return_attributes else (V, F)
+
+
+def write_mesh(path, V, F, attributes=None):
+    """Writes a mesh atomically in the format of the path's extension (.obj,
+    .off or .ply: binary, double coordinates) with its attributes (a list
+    of gab.Attribute, as compress takes them) in the format's spelling and
+    their value types. PLY and OFF hold one value per vertex: vertices where
+    per-corner attributes have seams are split. What the format cannot hold
+    (generic attributes in OBJ and OFF, ...) and the vertices split are
+    named by a DroppedDataWarning."""
+    call = "gab.write_mesh"
+    if not isinstance(path, (str, bytes, os.PathLike)):
+        raise TypeError(f"{call}: path must be a str, bytes or os.PathLike, got {type(path).__name__}")
+    V = _reals(call, V, "V", 3)
+    F = _int32(call, F, "F", 3)
+    structs, kept = _attributes_arg(call, attributes, V.shape[0], F.shape[0])
+    message = message_buffer()
+    code = LIB.gab_write_mesh(os.fsencode(path), V.ctypes.data_as(ctypes.POINTER(ctypes.c_double)), V.shape[0],
+                              F.ctypes.data_as(ctypes.POINTER(ctypes.c_int32)), F.shape[0], structs,
+                              len(attributes or ()), message, len(message))
+    del kept
+    check(code, message)
+    if message.value:
+        warnings.warn(DroppedDataWarning(_library_text(message)), stacklevel=2)
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -190,15 +415,21 @@ class CompressStats:
     dataclasses.asdict(stats) gives them as a dict), and the map of a
     renumbered decode. Errors are relative to the input's bounding-box
     diagonal; byte counts include each part's framing, and bytes =
-    geometry_bytes + connectivity_bytes + order_bytes.
+    geometry_bytes + connectivity_bytes + order_bytes + attribute_bytes.
 
     order: with reorder=True (the default), an (n,) int32 array, order[i]
     the decoded mesh's index of input vertex i (what `gab compress
     --order-out` writes): W[order] lines up with V, and per-vertex data moves
     onto the decoded mesh by data_decoded[order] = data. None when the
-    numbering is kept (reorder=False)."""
+    numbering is kept (reorder=False). Its n + merged_vertices entries are
+    the input's vertices: copies of a vertex at the same position (a mesh
+    split along seams, a triangle soup) map onto one.
 
-    n: int  # vertices
+    attributes: a tuple of gab.AttributeStats, one per attribute given, in
+    their order (labels, bits, bytes, largest errors); attribute_bytes their
+    sections' sum."""
+
+    n: int  # vertices (of the decoded mesh: the input's less merged_vertices)
     faces: int  # triangles
     anchors: int  # anchors in the file
     chunks: int  # chunks, a refinement or detail chunk included
@@ -224,7 +455,10 @@ class CompressStats:
     detail: bool  # ends with a detail chunk
     refined: bool  # ends with a refinement chunk
     levels: bool  # in the level layout
-    order: object  # numpy int32 (n,) with reorder, else None
+    order: object  # numpy int32 (n + merged_vertices,) with reorder, else None
+    merged_vertices: int  # with reorder: input vertices merged into a copy at the same position
+    attribute_bytes: int  # the attribute sections
+    attributes: tuple  # of AttributeStats, one per attribute given
 
 
 def _stats_of(report):
@@ -232,19 +466,27 @@ def _stats_of(report):
     try:
         order = None
         if report.order:
-            order = np.ctypeslib.as_array(report.order, shape=(report.n,)).copy()
+            order = np.ctypeslib.as_array(report.order, shape=(report.n + report.merged_vertices,)).copy()
+        attributes = tuple(
+            AttributeStats(label=a.label.decode(), kind=_KINDS[a.kind], bits=a.bits, per_corner=bool(a.per_corner),
+                           from_surface=bool(a.from_surface), elements=a.elements, bytes=a.bytes,
+                           max_error=a.max_error)
+            for a in (report.attributes[i] for i in range(report.num_attributes)))
     finally:
         LIB.gab_free(report.order)
+        LIB.gab_free(report.attributes)
     fields = {f.name: getattr(report, f.name) for f in dataclasses.fields(CompressStats)
-              if f.name not in ("solver", "ordering", "order")}
+              if f.name not in ("solver", "ordering", "order", "attributes")}
     for name in ("target_met", "reordered", "detail", "refined", "levels"):
         fields[name] = bool(fields[name])
     return CompressStats(solver=_SOLVER_NAMES.get(report.solver, str(report.solver)),
-                         ordering=_ORDERING_NAMES.get(report.ordering, str(report.ordering)), order=order, **fields)
+                         ordering=_ORDERING_NAMES.get(report.ordering, str(report.ordering)), order=order,
+                         attributes=attributes, **fields)
 
 
 def compress(V, F, error=None, anchors=None, linf=None, bits=None, weight=None, reorder=True, threads=1,
-             detail="auto", refine=False, ordering="auto", solver="auto", return_stats=False):
+             detail="auto", refine=False, ordering="auto", solver="auto", return_stats=False, attributes=None,
+             normal_bits=None, texcoord_bits=None, color_bits=None, generic_bits=None):
     """Compresses a mesh to a .gab file, returned as bytes; with
     return_stats=True, as (bytes, CompressStats): sizes, anchors, bits, the
     achieved errors and the map onto the decoded mesh's numbering
@@ -267,10 +509,20 @@ def compress(V, F, error=None, anchors=None, linf=None, bits=None, weight=None, 
     in time linear in n, global makes files about 10% smaller at 1e-3 and
     decodes an order of magnitude slower; auto is iterative, or global with
     refine). The triangles come back as a set of oriented triangles, on the
-    decoded numbering."""
+    decoded numbering.
+
+    attributes: a list of gab.Attribute (normals, texture coordinates,
+    colours, named generics; per vertex or per corner), each coded in its
+    own section after the geometry; decompress(..., return_attributes=True)
+    gives them back on the decoded numbering. Their quantization:
+    normal_bits (a lattice of about 4^bits directions, 2..16; None: 8),
+    texcoord_bits, color_bits, generic_bits (a grid of 2^bits - 1 steps over
+    each attribute's span, 1..31; None: 10, 8, 16); integer-typed values are
+    coded exactly."""
     call = "gab.compress"
     V = _reals(call, V, "V", 3)
     F = _int32(call, F, "F", 3)
+    structs, kept = _attributes_arg(call, attributes, V.shape[0], F.shape[0])
     options = CompressOptions()
     LIB.gab_compress_options_init(ctypes.byref(options), ctypes.sizeof(options))
     if error is None and anchors is None and linf is None:
@@ -288,6 +540,12 @@ def compress(V, F, error=None, anchors=None, linf=None, bits=None, weight=None, 
     options.ordering = _ordering_code(call, ordering, _CODEC_ORDERINGS)
     options.solver = LIB.gab_solver_from_name(
         _name_arg(call, solver, "solver", ["auto", "global", "iterative"]).encode())
+    for name, value, most in (("normal_bits", normal_bits, _MAX_NORMAL_BITS),
+                              ("texcoord_bits", texcoord_bits, _MAX_GRID_BITS),
+                              ("color_bits", color_bits, _MAX_GRID_BITS),
+                              ("generic_bits", generic_bits, _MAX_GRID_BITS)):
+        if value is not None:
+            setattr(options, name, _int_arg(call, value, name, 2 if name == "normal_bits" else 1, most))
     report = None
     if _bool_arg(call, return_stats, "return_stats"):
         report = CompressReport()
@@ -295,10 +553,12 @@ def compress(V, F, error=None, anchors=None, linf=None, bits=None, weight=None, 
     out = ctypes.POINTER(ctypes.c_ubyte)()
     size = ctypes.c_size_t()
     message = message_buffer()
-    code = LIB.gab_compress_with_report(V.ctypes.data_as(ctypes.POINTER(ctypes.c_double)), V.shape[0],
-                                        F.ctypes.data_as(ctypes.POINTER(ctypes.c_int32)), F.shape[0],
-                                        ctypes.byref(options), ctypes.byref(out), ctypes.byref(size),
-                                        None if report is None else ctypes.byref(report), message, len(message))
+    code = LIB.gab_compress_with_attributes(V.ctypes.data_as(ctypes.POINTER(ctypes.c_double)), V.shape[0],
+                                            F.ctypes.data_as(ctypes.POINTER(ctypes.c_int32)), F.shape[0], structs,
+                                            len(attributes or ()), ctypes.byref(options), ctypes.byref(out),
+                                            ctypes.byref(size), None if report is None else ctypes.byref(report),
+                                            message, len(message))
+    del kept
     check(code, message)
     try:
         data = ctypes.string_at(out, size.value)
@@ -321,20 +581,28 @@ def _bytes_arg(call, data, name):
                         f"got {type(data).__name__}") from None
 
 
-def decompress(data, anchors=None, max_memory=None, threads=1, ordering="auto"):
-    """Decodes a .gab file (bytes-like) into (V, F); anchors=K decodes only the
-    first K anchors (a coarser level). max_memory: the bytes the decode may
-    take (None: 32 KiB per byte of the file, at least 64 MiB; -1: no limit;
-    over it GabError GAB_E_RESOURCE_EXHAUSTED says how much it needs).
-    threads: for the factorizations (0: every core; same shape for any
-    count). ordering: a global-solver file's factorizations' ('auto': the
-    one the file records, 'amd' or 'nd', as the CLI's decompress
-    --ordering): speed and memory only, the same anchors and a shape the
-    same up to rounding. A file cut short decodes to its complete chunks and
-    warns (TruncatedWarning, saying how many of how many); damaged or forged
-    bytes raise GabError."""
+def decompress(data, anchors=None, max_memory=None, threads=1, ordering="auto", return_attributes=False):
+    """Decodes a .gab file (bytes-like) into (V, F); with
+    return_attributes=True into (V, F, attributes), a list of gab.Attribute
+    in the order compress was given them, on the decoded numbering
+    (per-corner ones following F). anchors=K decodes only the first K
+    anchors (a coarser level; attributes decode whole at any level, except
+    normals predicted from the decoded surface, which need every anchor).
+    max_memory: the bytes the decode may take (None: 32 KiB per byte of the
+    file, at least 64 MiB; -1: no limit; over it GabError
+    GAB_E_RESOURCE_EXHAUSTED says how much it needs). threads: for the
+    factorizations (0: every core; same shape for any count). ordering: a
+    global-solver file's factorizations' ('auto': the one the file records,
+    'amd' or 'nd', as the CLI's decompress --ordering): speed and memory
+    only, the same anchors and a shape the same up to rounding. A file cut
+    short decodes to its complete chunks and warns (TruncatedWarning, saying
+    how many of how many); damaged or forged bytes raise GabError. What the
+    file holds and the call does not give back (the attributes without
+    return_attributes, sections a level of detail cannot decode) is named
+    by a DroppedDataWarning."""
     call = "gab.decompress"
     data = _bytes_arg(call, data, "data")
+    return_attributes = _bool_arg(call, return_attributes, "return_attributes")
     options = DecompressOptions()
     LIB.gab_decompress_options_init(ctypes.byref(options), ctypes.sizeof(options))
     if anchors is not None:
@@ -344,16 +612,25 @@ def decompress(data, anchors=None, max_memory=None, threads=1, ordering="auto"):
     options.threads = _int_arg(call, threads, "threads", 0, _MAX_THREADS)
     options.ordering = _ordering_code(call, ordering, _CODEC_ORDERINGS)
     positions, n, triangles, t = _mesh_outputs()
+    attributes, count = _attribute_outputs()
     message = message_buffer()
-    code = LIB.gab_decompress_ex(data, len(data), ctypes.byref(options), ctypes.byref(positions),
-                                 ctypes.byref(n), ctypes.byref(triangles), ctypes.byref(t), message, len(message))
+    code = LIB.gab_decompress_with_attributes(data, len(data), ctypes.byref(options), ctypes.byref(positions),
+                                              ctypes.byref(n), ctypes.byref(triangles), ctypes.byref(t),
+                                              ctypes.byref(attributes), ctypes.byref(count), message, len(message))
+    if code != GAB_W_TRUNCATED:
+        check(code, message)
+    decoded = _take_attributes(attributes, count, t.value)
+    V, F = _take_mesh(positions, n, triangles, t)
+    text = _library_text(message)  # the cut, and sections not decoded; or ""
     if code == GAB_W_TRUNCATED:
-        mesh = _take_mesh(positions, n, triangles, t)
-        text = message.value.decode(errors="replace").partition(": ")[2]
         warnings.warn(TruncatedWarning(text), stacklevel=2)
-        return mesh
-    check(code, message)
-    return _take_mesh(positions, n, triangles, t)
+        text = ""
+    if decoded and not return_attributes:
+        text = (text + "; " if text else "") + \
+            f"not returned: {_describe(decoded)}; decompress(..., return_attributes=True) returns them"
+    if text:
+        warnings.warn(DroppedDataWarning(text), stacklevel=2)
+    return (V, F, decoded) if return_attributes else (V, F)
 
 
 # Matrices for Cholesky: any form in, the lower triangle in CSC out.

@@ -27,11 +27,14 @@ class TruncatedWarning(UserWarning):
 
 
 class DroppedDataWarning(UserWarning):
-    """read_mesh: the file held data gab does not carry (normals, texture
-    coordinates, colours, materials, polygons' arity, ...); the mesh returned
-    is its positions and triangles, the message names what was left out.
-    warnings.simplefilter("error", gab.DroppedDataWarning) makes it an
-    exception (as `gab compress --strict`)."""
+    """A call succeeded without giving back all the input held; the message
+    names what: read_mesh, data gab does not carry (materials, groups,
+    polygons' arity, ...: "not carried") and, without return_attributes,
+    the attributes it read ("not returned"); decompress, the attributes
+    without return_attributes and sections a level of detail cannot decode
+    ("not decoded"); write_mesh, what the format cannot hold ("not
+    written"). warnings.simplefilter("error", gab.DroppedDataWarning) makes
+    it an exception (as `gab compress --strict`)."""
 
 
 GAB_W_TRUNCATED = 100
@@ -167,6 +170,15 @@ def _declare(lib):
         "gab_error_name": (c_char_p, [c_int]),
         "gab_free": (None, [c_void_p]),
         "gab_read_mesh": (c_int, [c_char_p, P(P(c_double)), P(c_int32), P(P(c_int32)), P(c_int32), c_char_p, c_size_t]),
+        "gab_read_mesh_with_attributes": (
+            c_int,
+            [c_char_p, P(P(c_double)), P(c_int32), P(P(c_int32)), P(c_int32), P(P(Attribute)), P(c_int32), c_char_p,
+             c_size_t],
+        ),
+        "gab_write_mesh": (
+            c_int,
+            [c_char_p, P(c_double), c_int32, P(c_int32), c_int32, P(Attribute), c_int32, c_char_p, c_size_t],
+        ),
         "gab_compress_options_init": (None, [P(CompressOptions), c_size_t]),
         "gab_ordering_from_name": (c_int, [c_char_p]),
         "gab_solver_from_name": (c_int, [c_char_p]),
@@ -181,11 +193,21 @@ def _declare(lib):
             [P(c_double), c_int32, P(c_int32), c_int32, P(CompressOptions), P(P(c_ubyte)), P(c_size_t),
              P(CompressReport), c_char_p, c_size_t],
         ),
+        "gab_compress_with_attributes": (
+            c_int,
+            [P(c_double), c_int32, P(c_int32), c_int32, P(Attribute), c_int32, P(CompressOptions), P(P(c_ubyte)),
+             P(c_size_t), P(CompressReport), c_char_p, c_size_t],
+        ),
         "gab_decompress_options_init": (None, [P(DecompressOptions), c_size_t]),
         "gab_decompress_ex": (
             c_int,
             [c_char_p, c_size_t, P(DecompressOptions), P(P(c_double)), P(c_int32), P(P(c_int32)), P(c_int32),
              c_char_p, c_size_t],
+        ),
+        "gab_decompress_with_attributes": (
+            c_int,
+            [c_char_p, c_size_t, P(DecompressOptions), P(P(c_double)), P(c_int32), P(P(c_int32)), P(c_int32),
+             P(P(Attribute)), P(c_int32), c_char_p, c_size_t],
         ),
         "gab_cholesky_create": (
             c_int,
@@ -220,9 +242,13 @@ PYTHON_NAMES = {
     "gab_compress": "gab.compress",
     "gab_compress_ex": "gab.compress",
     "gab_compress_with_report": "gab.compress",
+    "gab_compress_with_attributes": "gab.compress",
     "gab_decompress": "gab.decompress",
     "gab_decompress_ex": "gab.decompress",
+    "gab_decompress_with_attributes": "gab.decompress",
     "gab_read_mesh": "gab.read_mesh",
+    "gab_read_mesh_with_attributes": "gab.read_mesh",
+    "gab_write_mesh": "gab.write_mesh",
     "gab_cholesky_create": "Cholesky.analyze",
     "gab_cholesky_create_ex": "Cholesky.analyze",
     "gab_cholesky_factorize": "Cholesky.factorize",

@@ -330,6 +330,10 @@ class CodecTest(unittest.TestCase):
                 self.assertEqual(ctypes.c_size_t.from_buffer(buffer).value, ctypes.sizeof(struct))
 
     def test_read_mesh(self):
+        """What a file held beyond what read_mesh returns is named by one
+        DroppedDataWarning: data gab does not carry ("not carried") and,
+        without return_attributes, the attributes it read ("not returned");
+        a plain file, or one whose attributes are returned, warns of nothing."""
         with tempfile.TemporaryDirectory() as folder:
             path = os.path.join(folder, "quad.off")
             with open(path, "w") as f:
@@ -337,25 +341,46 @@ class CodecTest(unittest.TestCase):
             with self.assertWarns(gab.DroppedDataWarning) as w:
                 V, F = gab.read_mesh(path)
             self.assertEqual(str(w.warning), path + ": not carried: 1 polygons of 4 or more corners "
-                             "(fan-triangulated); gab keeps positions and triangles only")
+                             "(fan-triangulated)")
             self.assertEqual(V.shape, (4, 3))
             self.assertEqual(F.tolist(), [[0, 1, 2], [0, 2, 3]])
             obj = os.path.join(folder, "normals.obj")
             with open(obj, "w") as f:
                 f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n")
-            with self.assertWarnsRegex(gab.DroppedDataWarning, r"not carried: 1 normals \(vn\), 1 faces with vn"):
+            with self.assertWarns(gab.DroppedDataWarning) as w:
                 gab.read_mesh(obj)
+            self.assertEqual(str(w.warning), obj + ": not returned: 1 normals (per corner); "
+                             "read_mesh(..., return_attributes=True) returns them")
+            with warnings.catch_warnings():
+                warnings.simplefilter("error")  # every attribute returned: nothing to name
+                V, F, attributes = gab.read_mesh(obj, return_attributes=True)
+            self.assertEqual(len(attributes), 1)
+            self.assertEqual((attributes[0].kind, attributes[0].label), ("normal", "normals"))
+            self.assertEqual(attributes[0].values.tolist(), [[0, 0, 1]])
+            self.assertEqual(attributes[0].corners.tolist(), [[0, 0, 0]])
+            grouped = os.path.join(folder, "grouped.obj")
+            with open(grouped, "w") as f:
+                f.write("g part\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n")
+            with self.assertWarns(gab.DroppedDataWarning) as w:
+                gab.read_mesh(grouped, return_attributes=True)
+            self.assertEqual(str(w.warning), grouped + ": not carried: 1 groups (g)")
+            with self.assertWarns(gab.DroppedDataWarning) as w:
+                gab.read_mesh(grouped)
+            self.assertEqual(str(w.warning), grouped + ": not carried: 1 groups (g); not returned: 1 normals (per "
+                             "corner); read_mesh(..., return_attributes=True) returns them")
             plain = os.path.join(folder, "plain.off")
             with open(plain, "w") as f:
                 f.write("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
             with warnings.catch_warnings():
                 warnings.simplefilter("error")
                 V, F = gab.read_mesh(plain)
+                self.assertEqual(gab.read_mesh(plain, return_attributes=True)[2], [])
             self.assertEqual(F.tolist(), [[0, 1, 2]])
             with self.assertRaises(gab.GabError) as e:
                 gab.read_mesh(os.path.join(folder, "missing.off"))
             self.assertEqual(e.exception.name, "GAB_E_IO")
             self.assertIn("missing.off", str(e.exception))
+            self.assertTrue(str(e.exception).startswith("gab.read_mesh: "))
 
     def test_version(self):
         self.assertRegex(gab.version(), r"^\d+\.\d+\.\d+$")
