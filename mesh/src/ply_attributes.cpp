@@ -108,9 +108,12 @@ PlyAttributes plan_ply_attributes(const PlyHeader& h, int vertex, const int xyz[
   const PlyElement& v = h.elements[vertex];
   out.vertex.assign(v.properties.size(), PlySlot());
   for (int c = 0; c < 3; ++c) out.vertex[xyz[c]].plan = -2;  // positions: taken, not an attribute
+  if (face >= 0) out.face.assign(h.elements[face].properties.size(), PlySlot());
   const size_t limit = static_cast<size_t>(kMaxMeshAttributes);
 
-  // The common kinds: the first set present of each.
+  // The common kinds: the first set present of each, in the order normals,
+  // texture coordinates (with MeshLab's per-corner ones), colours, as the
+  // writer writes them.
   for (AttributeKind kind : {AttributeKind::kNormal, AttributeKind::kTexCoord, AttributeKind::kColor}) {
     for (const NameSet& set : name_sets()) {
       if (set.kind != kind) continue;
@@ -125,6 +128,18 @@ PlyAttributes plan_ply_attributes(const PlyHeader& h, int vertex, const int xyz[
       for (size_t c = 0; c < found.size(); ++c) plan.label += (c > 0 ? " " : "") + printable(v.properties[found[c]].name);
       add_plan(&out, std::move(plan), found, &out.vertex);
       break;
+    }
+    // MeshLab's per-corner texture coordinates: a float list on the faces.
+    const int p = face >= 0 ? h.elements[face].find("texcoord") : -1;
+    if (kind == AttributeKind::kTexCoord && p >= 0 && !strips && h.elements[face].properties[p].is_list &&
+        !ply_type_is_integral(h.elements[face].properties[p].type)) {
+      PlyAttributePlan plan;
+      plan.attribute.kind = AttributeKind::kTexCoord;
+      plan.attribute.type = value_type(h.elements[face].properties[p].type);
+      plan.attribute.components = 2;
+      plan.key = "face.texcoord";
+      plan.label = "face property 'texcoord' (";
+      add_plan(&out, std::move(plan), {p}, &out.face);
     }
   }
   // Every other vertex property: a generic under its own name.
@@ -142,23 +157,6 @@ PlyAttributes plan_ply_attributes(const PlyHeader& h, int vertex, const int xyz[
     add_plan(&out, std::move(plan), {static_cast<int>(p)}, &out.vertex);
   }
   for (PlySlot& s : out.vertex) s.plan = s.plan == -2 ? -1 : s.plan;
-
-  // MeshLab's per-corner texture coordinates: a float list on the faces.
-  if (face >= 0) {
-    const PlyElement& f = h.elements[face];
-    out.face.assign(f.properties.size(), PlySlot());
-    const int p = f.find("texcoord");
-    if (p >= 0 && !strips && out.plans.size() < limit && f.properties[p].is_list &&
-        !ply_type_is_integral(f.properties[p].type)) {
-      PlyAttributePlan plan;
-      plan.attribute.kind = AttributeKind::kTexCoord;
-      plan.attribute.type = value_type(f.properties[p].type);
-      plan.attribute.components = 2;
-      plan.key = "face.texcoord";
-      plan.label = "face property 'texcoord' (";
-      add_plan(&out, std::move(plan), {p}, &out.face);
-    }
-  }
   return out;
 }
 

@@ -40,11 +40,12 @@ struct PlyAttributes {
 // - colours: red green blue [alpha], r g b [a], diffuse_red diffuse_green
 //   diffuse_blue [diffuse_alpha] (the first set present);
 // each of one type throughout (else its properties count as others);
-// - every other vertex property: a generic named as it (a list property:
-//   a generic of its items, 1 to 4);
 // - a face list `texcoord` (u v per corner, MeshLab's): per-corner texture
-//   coordinates.
-// At most kMaxMeshAttributes in all, in that order; a property left
+//   coordinates, after the per-vertex ones;
+// - every other vertex property: a generic named as it (a list property:
+//   a generic of its items, 1 to 4).
+// At most kMaxMeshAttributes in all, in the order normals, texture
+// coordinates, colours, generics (the writer's); a property left
 // without a slot (past the limit, a name an attribute cannot have) is the
 // caller's to note. O(properties).
 PlyAttributes plan_ply_attributes(const PlyHeader& header, int vertex, const int xyz[3], int face, bool strips);

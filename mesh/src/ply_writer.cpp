@@ -100,10 +100,9 @@ std::vector<std::vector<std::string>> kind_names(const MeshAttribute& a) {
   return {{a.name}};
 }
 
-// The attributes written, in the mesh's order: every generic under its
-// name (once), and the first of each common kind under the first of its
-// spellings that no generic has (the reader then finds the same); the
-// others noted.
+// The attributes written: the first of each common kind under the first
+// of its spellings that no generic has (the reader then finds the same),
+// then every generic under its name (once); the others noted.
 std::vector<Column> choose(const Mesh& mesh, MeshWriteNotes* notes) {
   std::set<std::string> taken = {"x", "y", "z"};
   std::vector<bool> written(mesh.attributes.size(), false);
@@ -135,9 +134,18 @@ std::vector<Column> choose(const Mesh& mesh, MeshWriteNotes* notes) {
       if (!written[a]) mesh_detail::note_not_written(attribute, "generic attributes have its property names", notes);
     }
   }
-  std::vector<Column> columns;
+  // Columns in the order the reader gives attributes back: the kinds
+  // (normals, texture coordinates, colours), then the generics.
+  std::vector<size_t> order;
+  for (AttributeKind kind : {AttributeKind::kNormal, AttributeKind::kTexCoord, AttributeKind::kColor}) {
+    const int a = mesh_detail::first_attribute(mesh, kind);
+    if (a >= 0 && written[a]) order.push_back(static_cast<size_t>(a));
+  }
   for (size_t a = 0; a < mesh.attributes.size(); ++a) {
-    if (!written[a]) continue;
+    if (written[a] && mesh.attributes[a].kind == AttributeKind::kGeneric) order.push_back(a);
+  }
+  std::vector<Column> columns;
+  for (size_t a : order) {
     const MeshAttribute& attribute = mesh.attributes[a];
     Column c;
     c.attribute = &attribute;

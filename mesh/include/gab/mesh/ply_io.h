@@ -31,7 +31,8 @@ struct PlyWriteOptions {
 // a generic attribute of 1 component under its name, a list property of 1
 // to 4 items per vertex a generic of as many. A face list `texcoord` (u v
 // per corner, as MeshLab writes) becomes per-corner texture coordinates,
-// equal pairs sharing an element. Text (ASCII) values of a float property
+// equal pairs sharing an element. The mesh gets them in the order normals,
+// texture coordinates, colours, generics. Text (ASCII) values of a float property
 // are rounded to float. An attribute with a value it cannot keep (not
 // finite, beyond its type, a list of varying length) is dropped, and so are
 // properties past kMaxMeshAttributes attributes and names an attribute
@@ -50,7 +51,7 @@ Status read_ply(const std::string& path, Mesh* mesh, MeshReadNotes* notes = null
 Status parse_ply(std::string_view bytes, const std::string& name, Mesh* mesh, MeshReadNotes* notes = nullptr);
 
 // The PLY bytes of a mesh: element vertex (x y z as double or float, then
-// the attributes as properties in their own types: normals `nx ny nz`,
+// the attributes as properties in their own types, in this order: normals `nx ny nz`,
 // texture coordinates `s t` (3 components: `texture_u texture_v
 // texture_w`), colours `red green blue [alpha]`, generics by name, one of 2
 // to 4 components as a `list uchar TYPE NAME` of that many), element face
