@@ -124,6 +124,24 @@ TEST(PlyAttributesTest, FaceTexcoordListsArePerCornerWithSharedElements) {
   EXPECT_EQ(notes.dropped_summary(), "1 face property 'texcoord' (face 0: 4 values for 3 corners)");
 }
 
+// Per-corner texture coordinates beside generics: written per vertex, they
+// come back in the same place among the attributes (kinds, then generics).
+TEST(PlyAttributesTest, FaceTexcoordsAndGenericsRoundTripInOrder) {
+  const std::string text =
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+      "property ushort id\nelement face 2\nproperty list uchar float texcoord\n"
+      "property list uchar int vertex_indices\nend_header\n0 0 0 1\n1 0 0 2\n1 1 0 3\n0 1 0 4\n"
+      "6 0 0 1 0 1 1 3 0 1 2\n6 0.5 0 1 1 0 1 3 0 2 3\n";
+  Mesh m;
+  ASSERT_TRUE(parse_ply(text, "o.ply", &m).ok());
+  EXPECT_EQ(labels(m), "texture_coordinates generic:id");
+  const Mesh split = split_attribute_seams(m);
+  Mesh back;
+  ASSERT_TRUE(parse_ply(format_ply(m), "back.ply", &back).ok());
+  EXPECT_EQ(back.num_vertices(), 5);  // vertex 0 has two UVs
+  EXPECT_TRUE(testing_util::same_attributes(back, split));
+}
+
 TEST(PlyAttributesTest, ValuesAnAttributeCannotKeepDropItWithANote) {
   const struct {
     std::string properties;
