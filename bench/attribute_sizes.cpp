@@ -22,33 +22,11 @@
 #include "gab/codec/decoder.h"
 #include "gab/codec/encoder.h"
 #include "gab/mesh/mesh_io.h"
+#include "gab/mesh/vertex_normals.h"
 
 namespace {
 
 using gab::Mesh;
-using gab::MeshAttribute;
-
-MeshAttribute area_weighted_normals(const Mesh& m) {
-  MeshAttribute a;
-  a.kind = gab::AttributeKind::kNormal;
-  a.components = 3;
-  a.values.assign(m.positions.size(), 0.0);
-  for (int32_t t = 0; t < m.num_triangles(); ++t) {
-    const double* p[3];
-    for (int k = 0; k < 3; ++k) p[k] = &m.positions[3 * static_cast<size_t>(m.triangles[3 * t + k])];
-    const double e1[3] = {p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]};
-    const double e2[3] = {p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
-    const double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
-    for (int k = 0; k < 3; ++k) {
-      for (int c = 0; c < 3; ++c) a.values[3 * static_cast<size_t>(m.triangles[3 * t + k]) + c] += n[c];
-    }
-  }
-  for (size_t v = 0; v < a.values.size(); v += 3) {
-    const double l = std::sqrt(a.values[v] * a.values[v] + a.values[v + 1] * a.values[v + 1] + a.values[v + 2] * a.values[v + 2]);
-    for (int c = 0; c < 3; ++c) a.values[v + c] = l > 0 ? a.values[v + c] / l : (c == 2 ? 1.0 : 0.0);
-  }
-  return a;
-}
 
 std::vector<int> parse_list(const std::string& s) {
   std::vector<int> out;
@@ -91,7 +69,7 @@ int main(int argc, char** argv) {
     }
     if (!own) {
       mesh.attributes.clear();
-      mesh.attributes.push_back(area_weighted_normals(mesh));
+      mesh.attributes.push_back(gab::area_weighted_normals(mesh));
     }
     const std::string name = path.substr(path.find_last_of('/') + 1);
     if (!ply_dir.empty()) {

@@ -15,6 +15,7 @@
 #include "common/test_meshes.h"
 #include "gab/codec/decoder.h"
 #include "gab/codec/encoder.h"
+#include "gab/mesh/vertex_normals.h"
 
 namespace gab {
 namespace {
@@ -23,24 +24,7 @@ using testing_util::bumpy_torus;
 using testing_util::decode_or_die;
 using testing_util::encode_or_die;
 
-// Area-weighted vertex normals of the mesh's triangles.
-MeshAttribute vertex_normals(const Mesh& m) {
-  MeshAttribute a;
-  a.kind = AttributeKind::kNormal;
-  a.components = 3;
-  a.values.assign(m.positions.size(), 0.0);
-  for (int32_t t = 0; t < m.num_triangles(); ++t) {
-    const double* p[3];
-    for (int k = 0; k < 3; ++k) p[k] = &m.positions[3 * static_cast<size_t>(m.triangles[3 * t + k])];
-    const double e1[3] = {p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]};
-    const double e2[3] = {p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
-    const double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
-    for (int k = 0; k < 3; ++k) {
-      for (int c = 0; c < 3; ++c) a.values[3 * static_cast<size_t>(m.triangles[3 * t + k]) + c] += n[c];
-    }
-  }
-  return a;
-}
+MeshAttribute vertex_normals(const Mesh& m) { return area_weighted_normals(m); }
 
 // The torus's (u, v) parameters per corner, with the seams where they wrap
 // (a corner of a triangle across the wrap takes 1, not 0): n x m quads.
