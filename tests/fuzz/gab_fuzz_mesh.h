@@ -53,7 +53,7 @@ inline gab::Mesh attributed_seed_torus() {
       }
     }
   }
-  t.attributes = {normals, colors, quality, uvs};
+  t.attributes = {normals, uvs, colors, quality};  // the PLY reader's order
   return t;
 }
 
