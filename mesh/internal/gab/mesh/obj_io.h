@@ -48,9 +48,11 @@ Status parse_obj(std::string_view text, const std::string& name, Mesh* mesh, Mes
 // largest value: uchar 255 -> 1); per-corner colours are split at their
 // seams first (split_attribute_seams). What OBJ cannot hold (generic
 // attributes, a second attribute of a kind, colour alpha) is not written
-// and named in `notes` (when given), with the vertices split. Values read
-// back as written (9 significant digits for float32). O(V + T + attribute
-// values).
+// and named in `notes` (when given), with the vertices split. Float32
+// values are written with 9 significant digits and read back exactly;
+// float64 ones are written in full, and read back as floats (the reader's
+// type for OBJ text) unless one is beyond float's range. O(V + T +
+// attribute values).
 std::string format_obj(const Mesh& mesh, MeshWriteNotes* notes = nullptr);
 
 // Validates the mesh, then writes format_obj(mesh) atomically; `notes` as

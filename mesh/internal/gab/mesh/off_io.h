@@ -41,7 +41,9 @@ Status parse_off(std::string_view text, const std::string& name, Mesh* mesh, Mes
 // coordinate attributes: float32 values with 9 significant digits, uchar
 // colours as integers 0..255 when one is above 1, other colours as
 // fractions with a decimal point), "3 i j k" faces: reading it back gives
-// the same mesh. Per-corner attributes are split at their seams first
+// the same mesh (float64 attribute values come back as floats, the reader's
+// type for OFF text, unless one is beyond float's range). Per-corner
+// attributes are split at their seams first
 // (split_attribute_seams); what OFF cannot hold (generic attributes, a
 // second attribute of a kind, texture coordinates' w) is not written, and
 // named in `notes` (when given) with the vertices split. O(V + T +
