@@ -11,7 +11,7 @@ arrays in and out).
     V2, F2 = gab.decompress(data)            # V2 lines up with V, within the target
 
     V, F, attrs = gab.read_mesh("spider.obj", return_attributes=True)  # [gab.Attribute('normal', ...), ...]
-    data = gab.compress(V, F, attributes=attrs, normal_bits=10)          # each coded in its own section
+    data = gab.compress(V, F, attributes=attrs, normal_bits=10)         # each coded in its own section
     W, G, decoded = gab.decompress(data, return_attributes=True)        # in the decoded numbering
     gab.write_mesh("out.ply", W, G, attributes=decoded)
 
@@ -486,7 +486,7 @@ def _stats_of(report):
 
 def compress(V, F, error=None, anchors=None, linf=None, bits=None, weight=None, reorder=True, threads=1,
              detail="auto", refine=False, ordering="auto", solver="auto", return_stats=False, attributes=None,
-             normal_bits=None, texcoord_bits=None, color_bits=None, generic_bits=None):
+             normal_bits=None, uv_bits=None, color_bits=None, generic_bits=None):
     """Compresses a mesh to a .gab file, returned as bytes; with
     return_stats=True, as (bytes, CompressStats): sizes, anchors, bits, the
     achieved errors and the map onto the decoded mesh's numbering
@@ -516,9 +516,10 @@ def compress(V, F, error=None, anchors=None, linf=None, bits=None, weight=None, 
     own section after the geometry; decompress(..., return_attributes=True)
     gives them back on the decoded numbering. Their quantization:
     normal_bits (a lattice of about 4^bits directions, 2..16; None: 8),
-    texcoord_bits, color_bits, generic_bits (a grid of 2^bits - 1 steps over
-    each attribute's span, 1..31; None: 10, 8, 16); integer-typed values are
-    coded exactly."""
+    uv_bits (texture coordinates), color_bits, generic_bits (a grid of
+    2^bits - 1 steps over each attribute's span, 1..31; None: 10, 8, 16), as
+    the CLI's --normal-bits, --uv-bits, --color-bits and --generic-bits;
+    integer-typed values are coded exactly."""
     call = "gab.compress"
     V = _reals(call, V, "V", 3)
     F = _int32(call, F, "F", 3)
@@ -540,12 +541,12 @@ def compress(V, F, error=None, anchors=None, linf=None, bits=None, weight=None, 
     options.ordering = _ordering_code(call, ordering, _CODEC_ORDERINGS)
     options.solver = LIB.gab_solver_from_name(
         _name_arg(call, solver, "solver", ["auto", "global", "iterative"]).encode())
-    for name, value, most in (("normal_bits", normal_bits, _MAX_NORMAL_BITS),
-                              ("texcoord_bits", texcoord_bits, _MAX_GRID_BITS),
-                              ("color_bits", color_bits, _MAX_GRID_BITS),
-                              ("generic_bits", generic_bits, _MAX_GRID_BITS)):
+    for field, name, value, least, most in (("normal_bits", "normal_bits", normal_bits, 2, _MAX_NORMAL_BITS),
+                                            ("texcoord_bits", "uv_bits", uv_bits, 1, _MAX_GRID_BITS),
+                                            ("color_bits", "color_bits", color_bits, 1, _MAX_GRID_BITS),
+                                            ("generic_bits", "generic_bits", generic_bits, 1, _MAX_GRID_BITS)):
         if value is not None:
-            setattr(options, name, _int_arg(call, value, name, 2 if name == "normal_bits" else 1, most))
+            setattr(options, field, _int_arg(call, value, name, least, most))
     report = None
     if _bool_arg(call, return_stats, "return_stats"):
         report = CompressReport()

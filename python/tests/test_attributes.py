@@ -194,9 +194,9 @@ class AttributeTest(unittest.TestCase):
     def test_attribute_bits_are_keywords(self):
         V, F, attributes = with_attributes()
         base, coarse = gab.compress(V, F, attributes=attributes, return_stats=True)
-        self.assertEqual(base, gab.compress(V, F, attributes=attributes, normal_bits=8, texcoord_bits=10,
+        self.assertEqual(base, gab.compress(V, F, attributes=attributes, normal_bits=8, uv_bits=10,
                                             color_bits=8, generic_bits=16))  # the defaults
-        fine = gab.compress(V, F, attributes=attributes, normal_bits=12, texcoord_bits=14, generic_bits=20,
+        fine = gab.compress(V, F, attributes=attributes, normal_bits=12, uv_bits=14, generic_bits=20,
                             return_stats=True)[1]
         self.assertEqual([a.bits for a in fine.attributes][:2], [12, 14])
         self.assertLess(fine.attributes[0].max_error, coarse.attributes[0].max_error / 4)
@@ -204,7 +204,7 @@ class AttributeTest(unittest.TestCase):
         self.assertGreater(fine.attribute_bytes, coarse.attribute_bytes)
         self.assertEqual(fine.attributes[2].bytes, coarse.attributes[2].bytes)  # uint8: exact at any bits
         cases = [(ValueError, r"^gab\.compress: normal_bits must be in 2\.\.16, got 17$", dict(normal_bits=17)),
-                 (ValueError, r"^gab\.compress: texcoord_bits must be in 1\.\.31, got 0$", dict(texcoord_bits=0)),
+                 (ValueError, r"^gab\.compress: uv_bits must be in 1\.\.31, got 0$", dict(uv_bits=0)),
                  (TypeError, r"^gab\.compress: color_bits must be an integer, got float$", dict(color_bits=8.0)),
                  (ValueError, r"^gab\.compress: generic_bits must be in 1\.\.31, got 32$", dict(generic_bits=32))]
         for error, pattern, keywords in cases:

@@ -197,7 +197,9 @@ TEST(CapiAttributesTest, EveryKindRoundTripsFromCWithinItsQuantization) {
       ASSERT_NE(a[i].name, nullptr);
       EXPECT_STREQ(a[i].name, names[i]);
       EXPECT_EQ(a[i].corners != nullptr, i == 1) << i;  // per corner as given, per vertex as given
-      if (a[i].corners == nullptr) EXPECT_EQ(a[i].elements, n) << i;
+      if (a[i].corners == nullptr) {
+        EXPECT_EQ(a[i].elements, n) << i;
+      }
     }
     for (int32_t c = 0; c < 3 * t; ++c) ASSERT_TRUE(a[1].corners[c] >= 0 && a[1].corners[c] < a[1].elements);
     // The values, corner by corner, within each kind's quantization.

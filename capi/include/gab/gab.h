@@ -6,7 +6,8 @@
      says so a GAB_W_* warning: done, its outputs set, with something the
      caller must know; the codes keep their values across versions.
      Functions taking `message, message_size` write a one-line message there
-     on failure or warning ("" on success), truncated to fit and always
+     on failure or warning, and on a success what it did not give back (the
+     next rule; "" when nothing), truncated to fit and always
      NUL-terminated; message may be NULL (then message_size is ignored).
    - Nothing is thrown across it and nothing aborts: bad arguments (NULL
      pointers, negative counts, indices out of range) are reported, and so is
@@ -219,11 +220,12 @@ typedef struct gab_compress_options {
   int32_t solver;         /* GAB_SOLVER_AUTO (default), GAB_SOLVER_GLOBAL or GAB_SOLVER_ITERATIVE (--solver) */
   /* The attributes' quantization (gab_compress_with_attributes; each attribute in its own section after the
      geometry). Integer-typed values are coded exactly whatever these say. */
-  int32_t normal_bits;    /* normals: directions on a lattice of about 4^bits points, 2..16 (default 8: 0.45
-                             degrees at most) */
-  int32_t texcoord_bits;  /* texture coordinates: a grid of 2^bits steps over their span, 1..31 (default 10) */
-  int32_t color_bits;     /* float colours, the same grid, 1..31 (default 8) */
-  int32_t generic_bits;   /* float generic attributes, the same grid, 1..31 (default 16) */
+  int32_t normal_bits;    /* normals: directions on a lattice of about 4^bits points, 2..16 (default 8: at most
+                             0.6 degrees off; --normal-bits) */
+  int32_t texcoord_bits;  /* texture coordinates: a grid of 2^bits - 1 steps over their span, 1..31 (default 10;
+                             --uv-bits) */
+  int32_t color_bits;     /* float colours, the same grid, 1..31 (default 8; --color-bits) */
+  int32_t generic_bits;   /* float generic attributes, the same grid, 1..31 (default 16; --generic-bits) */
 } gab_compress_options;
 
 /* Sets the defaults: options->size = min(size, sizeof(gab_compress_options)),
