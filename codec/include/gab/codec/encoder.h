@@ -108,7 +108,7 @@ struct EncodeOptions {
   int32_t final_steps16 = -1;
   int32_t final_most_steps = -1;
   // The attributes' quantization (each coded in its own section after the geometry; docs/format.md 6).
-  // Normals: directions on a lattice of about 4^bits points (8: 0.45 degrees at most, Draco's -qn 8
+  // Normals: directions on a lattice of about 4^bits points (8: about 0.6 degrees at most, as Draco's -qn 8
   // grid), 2..16. Texture coordinates, float colours and float generic attributes: a grid of 2^bits
   // steps over the attribute's span, 1..31. Integer-typed values (PLY uchar colours, int properties)
   // are coded exactly whatever these say.
