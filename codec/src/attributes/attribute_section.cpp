@@ -141,36 +141,14 @@ class Walk {
       for (int i = 0; i < k_; ++i) sum[i] += int64_t{value(ea)[i]} + value(eb)[i] - value(ed)[i];
       ++count;
     }
-    if (count == 0) {
-      for (int32_t c : wedge) {
-        for (int32_t x : {CornerTable::next(c), CornerTable::prev(c)}) {
-          if (element_[x] < 0) continue;
-          for (int i = 0; i < k_; ++i) sum[i] += value(element_[x])[i];
-          ++count;
-        }
-      }
-    }
-    if (q_.lattice()) {
-      if (count > 0 && (sum[0] != 0 || sum[1] != 0 || sum[2] != 0)) {
-        project_to_lattice(sum, q_.radius(), out);
-      } else if (last_ >= 0) {
-        std::copy(value(last_), value(last_) + 3, out);
-      } else {
-        out[0] = out[1] = 0;
-        out[2] = q_.radius();
-      }
-      return;
-    }
+    if (count == 0) count = neighbour_sum(wedge, sum);
+    if (place(sum, count, out)) return;
     for (int i = 0; i < k_; ++i) {
-      int64_t p = 0;
-      if (count > 0) {
-        p = round_div(sum[i], count);
-      } else if (last_ >= 0) {
-        p = value(last_)[i];
+      if (last_ >= 0) {
+        out[i] = value(last_)[i];
       } else {
-        p = (q_.max_index() + 1) / 2;
+        out[i] = q_.lattice() ? (i == 2 ? q_.radius() : 0) : static_cast<int32_t>((q_.max_index() + 1) / 2);
       }
-      out[i] = static_cast<int32_t>(std::min<int64_t>(std::max<int64_t>(p, 0), q_.max_index()));
     }
   }
 
@@ -178,24 +156,7 @@ class Walk {
   // and 6); false when none is decoded (or, for normals, they cancel).
   bool mean(const Wedge& wedge, int32_t* out) const {
     int64_t sum[4] = {0, 0, 0, 0};
-    int64_t count = 0;
-    for (int32_t c : wedge) {
-      for (int32_t x : {CornerTable::next(c), CornerTable::prev(c)}) {
-        if (element_[x] < 0) continue;
-        for (int i = 0; i < k_; ++i) sum[i] += value(element_[x])[i];
-        ++count;
-      }
-    }
-    if (count == 0) return false;
-    if (q_.lattice()) {
-      if (sum[0] == 0 && sum[1] == 0 && sum[2] == 0) return false;
-      project_to_lattice(sum, q_.radius(), out);
-      return true;
-    }
-    for (int i = 0; i < k_; ++i) {
-      out[i] = static_cast<int32_t>(std::min<int64_t>(std::max<int64_t>(round_div(sum[i], count), 0), q_.max_index()));
-    }
-    return true;
+    return place(sum, neighbour_sum(wedge, sum), out);
   }
 
   // The decoded surface's normal at the wedge: the sum of its triangles'
@@ -228,7 +189,6 @@ class Walk {
     }
   }
 
-  // The wedge's element is `value`: its corners take it.
   // The wedge's element is `value`, coded with residuals of largest
   // magnitude `activity`: its corners take it.
   void add(const Wedge& wedge, int32_t vertex, const int32_t* value, int32_t activity) {
@@ -261,6 +221,36 @@ class Walk {
   }
 
  private:
+  // Adds to `sum` the values of the decoded elements in the wedge's
+  // triangles (each corner's two others); returns how many.
+  int64_t neighbour_sum(const Wedge& wedge, int64_t* sum) const {
+    int64_t count = 0;
+    for (int32_t c : wedge) {
+      for (int32_t x : {CornerTable::next(c), CornerTable::prev(c)}) {
+        if (element_[x] < 0) continue;
+        for (int i = 0; i < k_; ++i) sum[i] += value(element_[x])[i];
+        ++count;
+      }
+    }
+    return count;
+  }
+
+  // `count` values summing to `sum` as one element: on the lattice (their
+  // direction) or the grid (their mean, rounded half up, clamped); false
+  // when there are none, or normals that cancel.
+  bool place(const int64_t* sum, int64_t count, int32_t* out) const {
+    if (count == 0) return false;
+    if (q_.lattice()) {
+      if (sum[0] == 0 && sum[1] == 0 && sum[2] == 0) return false;
+      project_to_lattice(sum, q_.radius(), out);
+      return true;
+    }
+    for (int i = 0; i < k_; ++i) {
+      out[i] = static_cast<int32_t>(std::min<int64_t>(std::max<int64_t>(round_div(sum[i], count), 0), q_.max_index()));
+    }
+    return true;
+  }
+
   const CornerTable& t_;
   const AttributeQuantizer& q_;
   const int k_;
@@ -392,6 +382,25 @@ void blend(const Walk& walk, const Wedge& wedge, const AttributeQuantizer& q, in
   if (sum[0] != 0 || sum[1] != 0 || sum[2] != 0) project_to_lattice(sum, q.radius(), pred);
 }
 
+// The prediction `predictor` makes for the wedge, in its order of steps
+// (PredictorSteps); `flags(x)` rounds a surface normal's scaled component
+// through the guard band: the encoder codes the flags, the decoder reads
+// them, so both sides make the same prediction through one function.
+template <typename Flags>
+void predict_wedge(uint8_t predictor, const Walk& walk, const CornerTable& t, const Wedge& wedge,
+                   const std::vector<double>* positions, const AttributeQuantizer& q, Flags flags, int32_t* pred) {
+  const PredictorSteps use = steps_of(predictor);
+  if (use.mean_first && walk.mean(wedge, pred)) return;
+  double n[3] = {0, 0, 0};
+  if (use.surface) Walk::surface_normal(t, wedge, *positions, predictor, n);
+  if (n[0] != 0 || n[1] != 0 || n[2] != 0) {
+    surface_prediction(n, q, flags, pred);
+    if (use.blend) blend(walk, wedge, q, pred);
+    return;
+  }
+  walk.predict(wedge, pred);
+}
+
 void write_description(const MeshAttribute& a, const AttributeQuantizer& q, bool per_corner, uint8_t predictor,
                        int64_t elements, ByteWriter* out) {
   out->u8(kGabSectionAttribute);
@@ -453,23 +462,14 @@ Coded encode_stream(const MeshAttribute& a, const CornerTable& t, const Attribut
       }
     }
     for (const Wedge& wedge : per_corner ? splitter.split(t, v, joined) : splitter.whole(t, v)) {
-      const PredictorSteps use = steps_of(predictor);
-      bool predicted = use.mean_first && walk.mean(wedge, pred);
-      double n[3] = {0, 0, 0};
-      if (!predicted && use.surface) Walk::surface_normal(t, wedge, *positions, predictor, n);
-      if (!predicted && (n[0] != 0 || n[1] != 0 || n[2] != 0)) {
-        surface_prediction(n, q, [&](double x) {
-          bool up = false;
-          const int64_t rounded = round_prediction(x, &up);
-          const bool near = prediction_is_near_tie(x);
-          enc.encode(&models.near_tie, near ? 1 : 0);
-          if (near) enc.encode(&models.round_up, up ? 1 : 0);
-          return rounded;
-        }, pred);
-        if (use.blend) blend(walk, wedge, q, pred);
-        predicted = true;
-      }
-      if (!predicted) walk.predict(wedge, pred);
+      predict_wedge(predictor, walk, t, wedge, positions, q, [&](double x) {
+        bool up = false;
+        const int64_t rounded = round_prediction(x, &up);
+        const bool near = prediction_is_near_tie(x);
+        enc.encode(&models.near_tie, near ? 1 : 0);
+        if (near) enc.encode(&models.round_up, up ? 1 : 0);
+        return rounded;
+      }, pred);
       if (!wedge.empty()) {
         std::copy(corner_value(*wedge.first), corner_value(*wedge.first) + k, actual);
       } else if (!a.per_corner()) {
@@ -671,20 +671,11 @@ Status decode_attribute_section(const uint8_t* payload, size_t size, const Corne
       if (walk.elements() >= static_cast<int64_t>(declared) && per_corner) {
         return corrupt("attribute section: more elements than its declared " + std::to_string(declared));
       }
-      const PredictorSteps use = steps_of(d.predictor);
-      bool predicted = use.mean_first && walk.mean(wedge, pred);
-      double n[3] = {0, 0, 0};
-      if (!predicted && use.surface) Walk::surface_normal(t, wedge, *positions, d.predictor, n);
-      if (!predicted && (n[0] != 0 || n[1] != 0 || n[2] != 0)) {
-        surface_prediction(n, q, [&](double x) {
-          const bool near = dec.decode(&models.near_tie) != 0;
-          const bool up = near && dec.decode(&models.round_up) != 0;
-          return resolve_prediction(x, near, up);
-        }, pred);
-        if (use.blend) blend(walk, wedge, q, pred);
-        predicted = true;
-      }
-      if (!predicted) walk.predict(wedge, pred);
+      predict_wedge(d.predictor, walk, t, wedge, positions, q, [&](double x) {
+        const bool near = dec.decode(&models.near_tie) != 0;
+        const bool up = near && dec.decode(&models.round_up) != 0;
+        return resolve_prediction(x, near, up);
+      }, pred);
       const int32_t around = walk.activity(wedge, models.previous_max);
       if (q.lattice()) {
         const NormalFrame frame(pred);
