@@ -6,7 +6,8 @@
 // "gab_decompress: " and NULL / 0 outputs; a success is a mesh with finite
 // coordinates and triangles inside it, its message empty or naming the
 // attributes it does not return, and so is a file cut short
-// (GAB_W_TRUNCATED), its message saying so. The default decode limit (64 MiB for
+// (GAB_W_TRUNCATED), its message saying so; gab_decompress_with_attributes
+// ends the same way, every attribute it returns inside its mesh. The default decode limit (64 MiB for
 // a file this small) bounds what a forged file can ask for.
 #include <cmath>
 #include <cstdint>
@@ -47,6 +48,35 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   for (int64_t i = 0; i < 3 * int64_t{t}; ++i) {
     gab_fuzz::require(triangles[i] >= 0 && triangles[i] < n, "triangle index out of range");
   }
+  gab_free(positions);
+  gab_free(triangles);
+  // The attribute door on the same bytes: the same outcome, and every
+  // attribute it returns inside its mesh (its one block freed).
+  gab_decompress_options options;
+  gab_decompress_options_init(&options, sizeof options);
+  options.max_anchors = max_anchors;
+  gab_attribute* attributes = nullptr;
+  int32_t count = -1;
+  const int with = gab_decompress_with_attributes(file, file_size, &options, &positions, &n, &triangles, &t,
+                                                  &attributes, &count, message, sizeof message);
+  gab_fuzz::require(with == code, "the attribute door ends otherwise");
+  gab_fuzz::require(count >= 0 && count <= GAB_MAX_ATTRIBUTES && (count == 0) == (attributes == nullptr),
+                    "attribute count and array disagree");
+  for (int32_t a = 0; a < count; ++a) {
+    const gab_attribute& at = attributes[a];
+    gab_fuzz::require(at.components >= 1 && at.components <= 4 && at.elements >= 0, "attribute shape");
+    for (int64_t i = 0; i < int64_t{at.components} * at.elements; ++i) {
+      gab_fuzz::require(std::isfinite(at.values[i]), "non-finite attribute value");
+    }
+    if (at.corners == nullptr) {
+      gab_fuzz::require(at.elements == n, "per-vertex attribute of another size");
+    } else {
+      for (int64_t i = 0; i < 3 * int64_t{t}; ++i) {
+        gab_fuzz::require(at.corners[i] >= 0 && at.corners[i] < at.elements, "corner index out of range");
+      }
+    }
+  }
+  gab_free(attributes);
   gab_free(positions);
   gab_free(triangles);
   return 0;
